@@ -1,0 +1,36 @@
+!> parasol-bench command line: one subcommand per benchmark (doc/performance.md).
+module cli_bench
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use strings, only: string_t
+    use cli_args, only: get_arguments
+    implicit none
+    private
+    public :: run_parasol_bench
+contains
+    !> Runs the benchmark named by the first argument; returns 0, or 1 on bad usage.
+    subroutine run_parasol_bench(exit_status)
+        integer, intent(out) :: exit_status
+        type(string_t), allocatable :: args(:)
+        call get_arguments(args)
+        exit_status = 1
+        if (size(args) == 0) then
+            call print_bench_usage(error_unit)
+            return
+        end if
+        select case (args(1)%s)
+        case ('--help', '-h')
+            call print_bench_usage(output_unit)
+            exit_status = 0
+        case default
+            write (error_unit, '(a)') 'parasol-bench: error: unknown benchmark "' // &
+                args(1)%s // '"'
+            call print_bench_usage(error_unit)
+        end select
+    end subroutine run_parasol_bench
+
+    subroutine print_bench_usage(unit)
+        integer, intent(in) :: unit
+        write (unit, '(a)') 'usage: parasol-bench KIND [options]', &
+            '  (benchmarks are added with the layers they measure)'
+    end subroutine print_bench_usage
+end module cli_bench
