@@ -1,0 +1,175 @@
+!> IMPR_RESU(FORMAT='GMSH'): a Gmsh `.msh` file, format 2.2 ASCII, from plain arrays
+!> (result_data): $MeshFormat, $Nodes, $Elements (Gmsh types 15 = point, 1 = 2-node line,
+!> 2 = 3-node triangle, 3 = 4-node quadrangle; two tags: physical 0, elementary 1) and one
+!> $NodeData block per field array per instant (string tag: the name; real tag: the time;
+!> integer tags: time step, number of components (1 or 3), number of nodes).
+!> Format: Gmsh reference manual, "MSH file format version 2 (legacy)". Written atomically.
+module result_gmsh
+    use kinds, only: dp
+    use status, only: status_t, set_error, STATUS_INTERNAL
+    use atomic_file, only: atomic_file_t, open_atomic
+    use result_data, only: node_field_t, point_array_t, check_result_mesh, check_node_field, &
+                           expand_node_field, RESULT_CELL_POI1, RESULT_CELL_SEG2, &
+                           RESULT_CELL_TRIA3, RESULT_CELL_QUAD4
+    implicit none
+    private
+
+    !> 17 significant digits: values read back are bit-identical.
+    character(len=*), parameter :: REAL_FORMAT = 'es24.16e3'
+
+    public :: write_gmsh_file, gmsh_element_type
+
+contains
+
+    !> Gmsh element type of a RESULT_CELL_* code (0 if unknown).
+    elemental integer function gmsh_element_type(cell_type)
+        integer, intent(in) :: cell_type
+        select case (cell_type)
+        case (RESULT_CELL_POI1)
+            gmsh_element_type = 15
+        case (RESULT_CELL_SEG2)
+            gmsh_element_type = 1
+        case (RESULT_CELL_TRIA3)
+            gmsh_element_type = 2
+        case (RESULT_CELL_QUAD4)
+            gmsh_element_type = 3
+        case default
+            gmsh_element_type = 0
+        end select
+    end function gmsh_element_type
+
+    !> Writes the mesh and every field of every instant to one `.msh` file.
+    !>  path       : in, the file to write
+    !>  coords, cell_types, cell_ptr, cell_nodes : in, the mesh (result_data conventions)
+    !>  times      : in, (n_instants) INST of each instant
+    !>  steps      : in, (n_instants) the time-step tag of each instant (e.g. NUME_ORDRE)
+    !>  fields     : in, (n_fields, n_instants) the node fields (n_instants may be 0)
+    !>  st         : out, STATUS_INTERNAL for inconsistent arrays, STATUS_IO_ERROR when the
+    !>               file cannot be written (then no file is left behind)
+    subroutine write_gmsh_file(path, coords, cell_types, cell_ptr, cell_nodes, times, steps, &
+                               fields, st)
+        character(len=*), intent(in) :: path
+        real(dp), intent(in) :: coords(:, :)
+        integer, intent(in) :: cell_types(:), cell_ptr(:), cell_nodes(:)
+        real(dp), intent(in) :: times(:)
+        integer, intent(in) :: steps(:)
+        type(node_field_t), intent(in) :: fields(:, :)
+        type(status_t), intent(out) :: st
+        type(atomic_file_t) :: file
+        type(point_array_t), allocatable :: arrays(:)
+        integer :: f, k, a
+        call check_result_mesh(coords, cell_types, cell_ptr, cell_nodes, st)
+        if (st%failed()) return
+        if (size(fields, 2) /= size(times) .or. size(steps) /= size(times)) then
+            call set_error(st, STATUS_INTERNAL, 'Gmsh output: fields must be (n_fields, ' // &
+                           'n_instants) with one time and one step per instant')
+            return
+        end if
+        do k = 1, size(fields, 2)
+            do f = 1, size(fields, 1)
+                call check_node_field(fields(f, k), size(coords, 2), st)
+                if (st%failed()) return
+            end do
+        end do
+        call open_atomic(file, path, st)
+        if (st%failed()) return
+        call file%write_line('$MeshFormat')
+        call file%write_line('2.2 0 8')
+        call file%write_line('$EndMeshFormat')
+        call write_nodes(file, coords)
+        call write_elements(file, cell_types, cell_ptr, cell_nodes)
+        do k = 1, size(fields, 2)
+            do f = 1, size(fields, 1)
+                call expand_node_field(fields(f, k), arrays)
+                do a = 1, size(arrays)
+                    call write_node_data(file, arrays(a), times(k), steps(k))
+                end do
+            end do
+        end do
+        call file%commit(st)
+        if (st%failed()) call file%discard()
+    end subroutine write_gmsh_file
+
+    !> $Nodes: count, then `number x y z` per node.
+    subroutine write_nodes(file, coords)
+        type(atomic_file_t), intent(in) :: file
+        real(dp), intent(in) :: coords(:, :)
+        character(len=128) :: buf
+        integer :: i
+        call file%write_line('$Nodes')
+        call file%write_line(itext(size(coords, 2)))
+        do i = 1, size(coords, 2)
+            write (buf, '(i0, 3(" ", ' // REAL_FORMAT // '))') i, coords(:, i)
+            call file%write_line(squeeze(buf))
+        end do
+        call file%write_line('$EndNodes')
+    end subroutine write_nodes
+
+    !> $Elements: count, then `number type 2 0 1 nodes...` per cell.
+    subroutine write_elements(file, cell_types, cell_ptr, cell_nodes)
+        type(atomic_file_t), intent(in) :: file
+        integer, intent(in) :: cell_types(:), cell_ptr(:), cell_nodes(:)
+        character(len=128) :: buf
+        integer :: c
+        call file%write_line('$Elements')
+        call file%write_line(itext(size(cell_types)))
+        do c = 1, size(cell_types)
+            write (buf, '(*(i0, :, " "))') c, gmsh_element_type(cell_types(c)), 2, 0, 1, &
+                cell_nodes(cell_ptr(c):cell_ptr(c + 1) - 1)
+            call file%write_line(trim(buf))
+        end do
+        call file%write_line('$EndElements')
+    end subroutine write_elements
+
+    !> One $NodeData block.
+    subroutine write_node_data(file, array, time, step)
+        type(atomic_file_t), intent(in) :: file
+        type(point_array_t), intent(in) :: array
+        real(dp), intent(in) :: time
+        integer, intent(in) :: step
+        character(len=128) :: buf
+        integer :: i
+        call file%write_line('$NodeData')
+        call file%write_line('1')
+        call file%write_line('"' // array%name // '"')
+        call file%write_line('1')
+        write (buf, '(' // REAL_FORMAT // ')') time
+        call file%write_line(trim(adjustl(buf)))
+        call file%write_line('3')
+        call file%write_line(itext(step))
+        call file%write_line(itext(size(array%values, 1)))
+        call file%write_line(itext(size(array%values, 2)))
+        do i = 1, size(array%values, 2)
+            write (buf, '(i0, *(" ", ' // REAL_FORMAT // '))') i, array%values(:, i)
+            call file%write_line(squeeze(buf))
+        end do
+        call file%write_line('$EndNodeData')
+    end subroutine write_node_data
+
+    !> `text` with runs of blanks reduced to one and no leading or trailing blanks.
+    pure function squeeze(text) result(out)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: out
+        character(len=len(text)) :: buf
+        integer :: i, n
+        n = 0
+        do i = 1, len_trim(text)
+            if (text(i:i) == ' ') then
+                if (n == 0) cycle
+                if (buf(n:n) == ' ') cycle
+            end if
+            n = n + 1
+            buf(n:n) = text(i:i)
+        end do
+        out = buf(1:n)
+    end function squeeze
+
+    pure function itext(value) result(text)
+        integer, intent(in) :: value
+        character(len=:), allocatable :: text
+        character(len=12) :: buf
+        write (buf, '(i0)') value
+        text = trim(buf)
+    end function itext
+
+end module result_gmsh
