@@ -108,7 +108,8 @@ contains
             return
         end if
         if (size(cell_ptr) /= size(cell_types) + 1) then
-            call set_error(st, STATUS_INTERNAL, 'result mesh: cell_ptr must have n_cells + 1 entries')
+            call set_error(st, STATUS_INTERNAL, &
+                           'result mesh: cell_ptr must have n_cells + 1 entries')
             return
         end if
         if (cell_ptr(1) /= 1 .or. cell_ptr(size(cell_ptr)) - 1 > size(cell_nodes)) then

@@ -124,7 +124,8 @@ contains
         end if
     end function test_resu_passes
 
-    !> One check line: ` OK   NON_REGRESSION   XXXX   -3.5...E-03   -3.5...E-03   3.31E-09%  1.00E-04%`.
+    !> One check line, e.g.
+    !> ` OK   NON_REGRESSION   XXXX   -3.5...E-03   -3.5...E-03   3.31E-09%   1.00E-04%`.
     !>  reference_kind : in, NON_REGRESSION, ANALYTIQUE, AUTRE_ASTER or SOURCE_EXTERNE
     !>  legend         : in, LEGENDE; blank gives XXXX
     !>  reference, computed, tolerance, criterion : in, as in test_resu_passes
