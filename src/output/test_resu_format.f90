@@ -24,9 +24,14 @@ module test_resu_format
     !> Printed as the error of a RELATIF check whose reference is 0 and value is not, or
     !> whose error is not a finite number.
     character(len=*), parameter :: INFINITE_ERROR = '+Inf'
+    !> Default tolerance of the NON_REGRESSION check (Code_Aster TEST_RESU TOLE_MACHINE).
+    real(dp), parameter, public :: TEST_RESU_DEFAULT_TOLE_MACHINE = 1.0e-6_dp
+    !> Default tolerance of the reference check (Code_Aster TEST_RESU PRECISION).
+    real(dp), parameter, public :: TEST_RESU_DEFAULT_PRECISION = 1.0e-3_dp
 
     public :: test_resu_id_lines, test_resu_header_line, test_resu_passes
     public :: test_resu_check_line, test_resu_summary_line, is_test_resu_criterion
+    public :: test_resu_block_lines
 
 contains
 
@@ -158,6 +163,60 @@ contains
                field(VALUE_WIDTH, real_e13(computed)) // field(ERROR_WIDTH, error_text) // &
                tolerance_text
     end subroutine test_resu_check_line
+
+    !> A whole TEST_RESU block for one tested value: identification lines, header, the
+    !> NON_REGRESSION line against VALE_CALC and, when `reference_kind` is present, a second
+    !> line against VALE_REFE (listings.md).
+    !>  result_name, field_name, component, location_kind, location_name : in, as in
+    !>                   test_resu_id_lines
+    !>  vale_calc      : in, the non-regression value of the deck
+    !>  computed       : in, the value parasol computed
+    !>  tole_machine   : in, tolerance of the NON_REGRESSION check (fraction, not %)
+    !>  criterion      : in, 'RELATIF' or 'ABSOLU' (both checks)
+    !>  lines          : out, the 4 or 5 lines
+    !>  n_ok, n_nook   : inout, incremented by the verdicts of the block
+    !>  nume_ordre, inst : in, optional, as in test_resu_id_lines
+    !>  reference_kind : in, optional, ANALYTIQUE, AUTRE_ASTER or SOURCE_EXTERNE
+    !>  vale_refe, precision, legend : in, optional, the reference check (precision defaults to
+    !>                   TEST_RESU_DEFAULT_PRECISION; vale_refe is needed with reference_kind)
+    pure subroutine test_resu_block_lines(result_name, field_name, component, location_kind, &
+                                          location_name, vale_calc, computed, tole_machine, &
+                                          criterion, lines, n_ok, n_nook, nume_ordre, inst, &
+                                          reference_kind, vale_refe, precision, legend)
+        character(len=*), intent(in) :: result_name, field_name, component, location_kind, &
+                                        location_name, criterion
+        real(dp), intent(in) :: vale_calc, computed, tole_machine
+        type(string_t), allocatable, intent(out) :: lines(:)
+        integer, intent(inout) :: n_ok, n_nook
+        integer, intent(in), optional :: nume_ordre
+        real(dp), intent(in), optional :: inst, vale_refe, precision
+        character(len=*), intent(in), optional :: reference_kind, legend
+        type(string_t) :: id_lines(2)
+        logical :: with_reference, ok
+        real(dp) :: tolerance
+        with_reference = present(reference_kind) .and. present(vale_refe)
+        allocate (lines(merge(5, 4, with_reference)))
+        call test_resu_id_lines(result_name, field_name, component, location_kind, &
+                                location_name, id_lines, nume_ordre, inst)
+        lines(1:2) = id_lines
+        lines(3)%s = test_resu_header_line()
+        call test_resu_check_line('NON_REGRESSION', '', vale_calc, computed, tole_machine, &
+                                  criterion, lines(4)%s, ok)
+        if (ok) n_ok = n_ok + 1
+        if (.not. ok) n_nook = n_nook + 1
+        if (.not. with_reference) return
+        tolerance = TEST_RESU_DEFAULT_PRECISION
+        if (present(precision)) tolerance = precision
+        if (present(legend)) then
+            call test_resu_check_line(reference_kind, legend, vale_refe, computed, tolerance, &
+                                      criterion, lines(5)%s, ok)
+        else
+            call test_resu_check_line(reference_kind, '', vale_refe, computed, tolerance, &
+                                      criterion, lines(5)%s, ok)
+        end if
+        if (ok) n_ok = n_ok + 1
+        if (.not. ok) n_nook = n_nook + 1
+    end subroutine test_resu_block_lines
 
     !> The one-line verdict ending the .mess: `TEST_RESU: 3 OK, 1 NOOK` .
     pure function test_resu_summary_line(n_ok, n_nook) result(line)
