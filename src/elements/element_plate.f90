@@ -7,7 +7,7 @@
 !> diagonal term (local DRX/DRY) of the element (Code_Aster R3.07.03, default 1e-5).
 !> Isotropic plane-stress material (E, NU), constant thickness h.
 !>
-!> Local frame (element_plate_frame-style convention, see doc/elements.md):
+!> Local frame (plate_local_frame, see doc/elements.md):
 !>   normal n: TRIA3 (x2 - x1) x (x3 - x1); QUAD4 (x3 - x1) x (x4 - x2) (the mean plane of
 !>   a warped cell), i.e. the right-hand rule on the node order; local x: side 1 -> 2
 !>   projected on the plane; local y = n x local x. Node coordinates are projected on the
