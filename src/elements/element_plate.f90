@@ -4,7 +4,8 @@
 !> Local element = membrane (bilinear Q4, 2x2 Gauss / constant-strain triangle) + discrete
 !> Kirchhoff bending (element_kirchhoff_bending) + a fictitious drilling stiffness on the
 !> local rotation about the normal: COEF_RIGI_DRZ times the smallest bending-rotation
-!> diagonal term (local DRX/DRY) of the element (Code_Aster R3.07.03, default 1e-5).
+!> diagonal term (local DRX/DRY) of the element (AFFE_CARA_ELEM/COQUE COEF_RIGI_DRZ,
+!> Code_Aster default 1e-5).
 !> Isotropic plane-stress material (E, NU), constant thickness h.
 !>
 !> Local frame (plate_local_frame, see doc/elements.md):
