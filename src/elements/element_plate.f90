@@ -1,0 +1,279 @@
+!> Flat shell elements of MODELISATION 'DKT': DKQ on QUAD4 (24x24) and DKT on TRIA3 (18x18).
+!>
+!> 6 DOF per node in the GLOBAL frame, node by node: (DX, DY, DZ, DRX, DRY, DRZ).
+!> Local element = membrane (bilinear Q4, 2x2 Gauss / constant-strain triangle) + discrete
+!> Kirchhoff bending (element_kirchhoff_bending) + a fictitious drilling stiffness on the
+!> local rotation about the normal: COEF_RIGI_DRZ times the smallest bending-rotation
+!> diagonal term (local DRX/DRY) of the element (AFFE_CARA_ELEM/COQUE COEF_RIGI_DRZ,
+!> Code_Aster default 1e-5).
+!> Isotropic plane-stress material (E, NU), constant thickness h.
+!>
+!> Local frame (plate_local_frame, see doc/elements.md):
+!>   normal n: TRIA3 (x2 - x1) x (x3 - x1); QUAD4 (x3 - x1) x (x4 - x2) (the mean plane of
+!>   a warped cell), i.e. the right-hand rule on the node order; local x: side 1 -> 2
+!>   projected on the plane; local y = n x local x. Node coordinates are projected on the
+!>   plane through the centroid (a warped QUAD4 is treated as its projection; no warping
+!>   correction).
+module element_plate
+    use kinds, only: dp, i4
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use element_plane_quad4, only: plane_elasticity_matrix, membrane_quad4_stiffness
+    use element_kirchhoff_bending, only: kirchhoff_bending_stiffness
+    implicit none
+    private
+
+    !> Code_Aster's default COEF_RIGI_DRZ (AFFE_CARA_ELEM/COQUE).
+    real(dp), parameter, public :: PLATE_COEF_RIGI_DRZ = 1.0e-5_dp
+
+    public :: plate_local_frame, plate_local_stiffness, plate_stiffness
+    public :: plate_internal_forces, rotate_to_global
+    public :: dkq_stiffness, dkt_stiffness
+
+contains
+
+    !> Local frame and in-plane coordinates of a TRIA3 (nn = 3) or QUAD4 (nn = 4) cell.
+    !>  coords : in, coords(1:3, nn) global node coordinates
+    !>  nn     : in, 3 or 4
+    !>  rot    : out, rot(3,3), rows = local x, y, normal in global components
+    !>  xy     : out, xy(1:2, nn) node coordinates in the local plane (origin = centroid)
+    !>  st     : out, STATUS_MODEL_ERROR if the cell has (nearly) zero area
+    subroutine plate_local_frame(coords, nn, rot, xy, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn)
+        real(dp), intent(out) :: rot(3, 3), xy(2, nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: n(3), ex(3), c(3), size2
+        integer(i4) :: i
+        rot = 0.0_dp
+        xy = 0.0_dp
+        if (nn == 3) then
+            n = cross(coords(:, 2) - coords(:, 1), coords(:, 3) - coords(:, 1))
+        else
+            n = cross(coords(:, 3) - coords(:, 1), coords(:, 4) - coords(:, 2))
+        end if
+        size2 = sum((coords(:, 2) - coords(:, 1))**2) + sum((coords(:, nn) - coords(:, 1))**2)
+        if (.not. norm2(n) > 1.0e3_dp * epsilon(1.0_dp) * size2) then
+            call set_error(st, STATUS_MODEL_ERROR, 'plate cell has zero area ' // &
+                '(coincident or aligned nodes): no normal')
+            return
+        end if
+        n = n / norm2(n)
+        ex = coords(:, 2) - coords(:, 1)
+        ex = ex - dot_product(ex, n) * n
+        if (.not. norm2(ex) > 0.0_dp) then
+            call set_error(st, STATUS_MODEL_ERROR, 'plate cell: side 1-2 is normal ' // &
+                'to the mean plane, no local x axis')
+            return
+        end if
+        ex = ex / norm2(ex)
+        rot(1, :) = ex
+        rot(2, :) = cross(n, ex)
+        rot(3, :) = n
+        c = sum(coords, dim=2) / real(nn, dp)
+        do i = 1, nn
+            xy(:, i) = matmul(rot(1:2, :), coords(:, i) - c)
+        end do
+    end subroutine plate_local_frame
+
+    !> Stiffness in the local frame, DOF order (u, v, w, thx, thy, thz) per node.
+    !>  xy : in, local coordinates; nn : in, 3 or 4; young, nu, thickness : in, material
+    !>  coef_drz : in, COEF_RIGI_DRZ (PLATE_COEF_RIGI_DRZ by default)
+    !>  kl : out, kl(6nn, 6nn); st : out, material, thickness or geometry error
+    subroutine plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn), young, nu, thickness, coef_drz
+        real(dp), intent(out) :: kl(6 * nn, 6 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: dmat(3, 3), km(2 * nn, 2 * nn), kb(3 * nn, 3 * nn), kdrz
+        integer(i4) :: im(2 * nn), ib(3 * nn), i
+        kl = 0.0_dp
+        if (.not. thickness > 0.0_dp) then
+            call set_error(st, STATUS_MODEL_ERROR, 'COQUE/EPAIS must be > 0')
+            return
+        end if
+        call plane_elasticity_matrix(young, nu, .false., dmat, st)
+        if (st%failed()) return
+        if (nn == 4) then
+            call membrane_quad4_stiffness(xy, thickness * dmat, km, st)
+        else
+            call membrane_tria3_stiffness(xy, thickness * dmat, km, st)
+        end if
+        if (st%failed()) return
+        call kirchhoff_bending_stiffness(xy, nn, (thickness**3 / 12.0_dp) * dmat, kb, st)
+        if (st%failed()) return
+        do i = 1, nn
+            im(2 * i - 1:2 * i) = [6 * i - 5, 6 * i - 4]
+            ib(3 * i - 2:3 * i) = [6 * i - 3, 6 * i - 2, 6 * i - 1]
+        end do
+        kl(im, im) = km
+        kl(ib, ib) = kb
+        kdrz = huge(1.0_dp)
+        do i = 1, nn
+            kdrz = min(kdrz, kb(3 * i - 1, 3 * i - 1), kb(3 * i, 3 * i))
+        end do
+        do i = 1, nn
+            kl(6 * i, 6 * i) = coef_drz * kdrz
+        end do
+    end subroutine plate_local_stiffness
+
+    !> Global stiffness of a DKT (nn = 3) or DKQ (nn = 4) element.
+    !>  coords : in, coords(1:3, nn) global coordinates; nn : in, 3 or 4
+    !>  young, nu, thickness, coef_drz : in, material, EPAIS, COEF_RIGI_DRZ
+    !>  ke : out, ke(6nn, 6nn) in the global frame (DX, DY, DZ, DRX, DRY, DRZ per node)
+    !>  st : out, geometry/material error
+    subroutine plate_stiffness(coords, nn, young, nu, thickness, coef_drz, ke, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn), young, nu, thickness, coef_drz
+        real(dp), intent(out) :: ke(6 * nn, 6 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn)
+        ke = 0.0_dp
+        if (nn /= 3 .and. nn /= 4) then
+            call set_error(st, STATUS_MODEL_ERROR, 'DKT plates need TRIA3 or QUAD4 cells')
+            return
+        end if
+        call plate_local_frame(coords, nn, rot, xy, st)
+        if (st%failed()) return
+        call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
+        if (st%failed()) return
+        call rotate_to_global(rot, 2 * nn, kl, ke)
+    end subroutine plate_stiffness
+
+    !> DKQ (QUAD4) global stiffness, 24x24; arguments as plate_stiffness.
+    subroutine dkq_stiffness(coords, young, nu, thickness, coef_drz, ke, st)
+        real(dp), intent(in) :: coords(3, 4), young, nu, thickness, coef_drz
+        real(dp), intent(out) :: ke(24, 24)
+        type(status_t), intent(out) :: st
+        call plate_stiffness(coords, 4_i4, young, nu, thickness, coef_drz, ke, st)
+    end subroutine dkq_stiffness
+
+    !> DKT (TRIA3) global stiffness, 18x18; arguments as plate_stiffness.
+    subroutine dkt_stiffness(coords, young, nu, thickness, coef_drz, ke, st)
+        real(dp), intent(in) :: coords(3, 3), young, nu, thickness, coef_drz
+        real(dp), intent(out) :: ke(18, 18)
+        type(status_t), intent(out) :: st
+        call plate_stiffness(coords, 3_i4, young, nu, thickness, coef_drz, ke, st)
+    end subroutine dkt_stiffness
+
+    !> Internal forces f = K u of a DKT/DKQ element (linear elasticity, global frame).
+    !> Computed as f = T^T K_l (T u - u_0), where u_0 is a zero-energy mode of the local
+    !> matrix fitted to the element (mean translations, mean local rotations thx, thy and the
+    !> matching w, mean in-plane membrane rotation with thz untouched): K_l u_0 = 0, so the
+    !> result equals K u, but the large rigid part of a nearly rigid plate no longer goes
+    !> through K (entries ~1e11 for SSNL130): the residual's round-off floor drops from
+    !> ~1e-6 to round-off of the deformation itself.
+    !>  coords, nn, young, nu, thickness, coef_drz : in, as plate_stiffness
+    !>  ue : in, ue(6nn) global displacements; fe : out, fe(6nn); st : out, as above
+    subroutine plate_internal_forces(coords, nn, young, nu, thickness, coef_drz, ue, fe, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn), young, nu, thickness, coef_drz, ue(6 * nn)
+        real(dp), intent(out) :: fe(6 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn), ul(6 * nn), fl(6 * nn)
+        integer(i4) :: i
+        fe = 0.0_dp
+        if (nn /= 3 .and. nn /= 4) then
+            call set_error(st, STATUS_MODEL_ERROR, 'DKT plates need TRIA3 or QUAD4 cells')
+            return
+        end if
+        call plate_local_frame(coords, nn, rot, xy, st)
+        if (st%failed()) return
+        call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
+        if (st%failed()) return
+        do i = 1, 2 * nn
+            ul(3 * i - 2:3 * i) = matmul(rot, ue(3 * i - 2:3 * i))
+        end do
+        call remove_zero_energy_mode(xy, nn, ul)
+        fl = matmul(kl, ul)
+        do i = 1, 2 * nn
+            fe(3 * i - 2:3 * i) = matmul(transpose(rot), fl(3 * i - 2:3 * i))
+        end do
+    end subroutine plate_internal_forces
+
+    !> Subtracts from local displacements ul (u, v, w, thx, thy, thz per node) a motion that
+    !> the local matrix maps to zero: translations t, bending rotation (ox, oy) with
+    !> w = ox y - oy x, thx = ox, thy = oy (thx = w,y and thy = -w,x), and an in-plane
+    !> rotation oz (u = -oz y, v = oz x, thz unchanged, since the drilling spring is not
+    !> rotation invariant). xy are centred on the centroid.
+    pure subroutine remove_zero_energy_mode(xy, nn, ul)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn)
+        real(dp), intent(inout) :: ul(6 * nn)
+        real(dp) :: t(3), ox, oy, oz, r2
+        integer(i4) :: i
+        t = 0.0_dp
+        ox = 0.0_dp
+        oy = 0.0_dp
+        oz = 0.0_dp
+        r2 = 0.0_dp
+        do i = 1, nn
+            t = t + ul(6 * i - 5:6 * i - 3)
+            ox = ox + ul(6 * i - 2)
+            oy = oy + ul(6 * i - 1)
+            oz = oz + xy(1, i) * ul(6 * i - 4) - xy(2, i) * ul(6 * i - 5)
+            r2 = r2 + xy(1, i)**2 + xy(2, i)**2
+        end do
+        t = t / real(nn, dp)
+        ox = ox / real(nn, dp)
+        oy = oy / real(nn, dp)
+        if (r2 > 0.0_dp) oz = oz / r2
+        do i = 1, nn
+            ul(6 * i - 5) = ul(6 * i - 5) - (t(1) - oz * xy(2, i))
+            ul(6 * i - 4) = ul(6 * i - 4) - (t(2) + oz * xy(1, i))
+            ul(6 * i - 3) = ul(6 * i - 3) - (t(3) + ox * xy(2, i) - oy * xy(1, i))
+            ul(6 * i - 2) = ul(6 * i - 2) - ox
+            ul(6 * i - 1) = ul(6 * i - 1) - oy
+        end do
+    end subroutine remove_zero_energy_mode
+
+    !> K_global = T^T K_local T with T = blockdiag(rot) over nb 3x3 blocks.
+    !>  rot : in, rows = local axes; nb : in, number of 3-vectors (2 per node)
+    !>  kl  : in, local matrix; kg : out, global matrix
+    pure subroutine rotate_to_global(rot, nb, kl, kg)
+        integer(i4), intent(in) :: nb
+        real(dp), intent(in) :: rot(3, 3), kl(3 * nb, 3 * nb)
+        real(dp), intent(out) :: kg(3 * nb, 3 * nb)
+        integer(i4) :: a, b
+        do b = 1, nb
+            do a = 1, nb
+                kg(3 * a - 2:3 * a, 3 * b - 2:3 * b) = matmul(transpose(rot), &
+                    matmul(kl(3 * a - 2:3 * a, 3 * b - 2:3 * b), rot))
+            end do
+        end do
+    end subroutine rotate_to_global
+
+    !> Constant-strain triangle membrane: K = A B^T D B (D already times the thickness).
+    subroutine membrane_tria3_stiffness(xy, dmat, km, st)
+        real(dp), intent(in) :: xy(2, 3), dmat(3, 3)
+        real(dp), intent(out) :: km(6, 6)
+        type(status_t), intent(out) :: st
+        real(dp) :: b(3, 6), area2, bi, ci
+        integer(i4) :: i, j, k
+        km = 0.0_dp
+        area2 = (xy(1, 2) - xy(1, 1)) * (xy(2, 3) - xy(2, 1)) - &
+                (xy(1, 3) - xy(1, 1)) * (xy(2, 2) - xy(2, 1))
+        if (.not. area2 > 0.0_dp) then
+            call set_error(st, STATUS_MODEL_ERROR, 'TRIA3 cell has zero area')
+            return
+        end if
+        b = 0.0_dp
+        do i = 1, 3
+            j = mod(i, 3_i4) + 1
+            k = mod(j, 3_i4) + 1
+            bi = (xy(2, j) - xy(2, k)) / area2
+            ci = (xy(1, k) - xy(1, j)) / area2
+            b(1, 2 * i - 1) = bi
+            b(2, 2 * i) = ci
+            b(3, 2 * i - 1) = ci
+            b(3, 2 * i) = bi
+        end do
+        km = matmul(transpose(b), matmul(dmat, b)) * (0.5_dp * area2)
+    end subroutine membrane_tria3_stiffness
+
+    pure function cross(a, b) result(c)
+        real(dp), intent(in) :: a(3), b(3)
+        real(dp) :: c(3)
+        c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
+    end function cross
+
+end module element_plate
