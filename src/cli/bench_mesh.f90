@@ -1,0 +1,35 @@
+!> parasol-bench mesh FILE: times reading a mesh (.mail or Gmsh .msh, by extension).
+module bench_mesh
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use kinds, only: dp, i4
+    use status, only: status_t, format_status
+    use strings, only: to_text, ends_with, to_lower
+    use mesh_types, only: mesh_t
+    use mesh_reader, only: read_mesh
+    implicit none
+    private
+    public :: run_bench_mesh
+contains
+    !> Reads `path` once and prints `RESULT mesh nodes=N cells=C seconds=S`; exit_status 0,
+    !> or 1 (with the error on stderr) if the mesh cannot be read.
+    subroutine run_bench_mesh(path, exit_status)
+        character(len=*), intent(in) :: path
+        integer, intent(out) :: exit_status
+        type(mesh_t) :: mesh
+        type(status_t) :: st
+        integer(int64) :: t0, t1, rate
+        real(dp) :: seconds
+        call system_clock(t0, rate)
+        call read_mesh(path, mesh, st)
+        call system_clock(t1)
+        if (st%failed()) then
+            write (error_unit, '(a)') format_status(st)
+            exit_status = 1
+            return
+        end if
+        seconds = real(t1 - t0, dp) / real(rate, dp)
+        write (output_unit, '(a,f0.4)') 'RESULT mesh file=' // path // ' nodes=' // &
+            to_text(mesh%n_nodes) // ' cells=' // to_text(mesh%n_cells) // ' seconds=', seconds
+        exit_status = 0
+    end subroutine run_bench_mesh
+end module bench_mesh
