@@ -32,6 +32,7 @@ module mesh_gmsh_reader
         integer(i4), allocatable :: tag_to_node(:), tag_to_cell(:)
         integer(i4) :: n_ent = 0                        !< 4.1 entities
         integer(i4), allocatable :: ent_dim(:), ent_tag(:), ent_phys(:, :)  !< (4, n) tags
+        integer(i4), allocatable :: ent_lookup(:, :)    !< (0:3, tag) -> entity, 0 if none
         integer(i4) :: n_member = 0                     !< (physical index, cell) pairs
         integer(i4), allocatable :: member_phys(:), member_cell(:)
     end type gmsh_state_t
@@ -260,6 +261,10 @@ contains
                 if (st%failed()) return
             end do
         end do
+        allocate (gs%ent_lookup(0:3, max(1_i4, maxval([1_i4, gs%ent_tag]))), source=0_i4)
+        do e = 1, gs%n_ent
+            if (gs%ent_tag(e) >= 1) gs%ent_lookup(gs%ent_dim(e), gs%ent_tag(e)) = e
+        end do
         call expect(lex, '$EndEntities', st)
     end subroutine read_entities
 
@@ -362,10 +367,11 @@ contains
                 if (st%ok()) call get_int(lex, n_in, 'elements in block', st)
                 if (st%failed()) return
                 physicals = 0
-                do e = 1, gs%n_ent
-                    if (gs%ent_dim(e) == dim .and. gs%ent_tag(e) == ent) &
-                        physicals = gs%ent_phys(:, e)
-                end do
+                e = 0
+                if (allocated(gs%ent_lookup) .and. dim >= 0 .and. dim <= 3 .and. ent >= 1) then
+                    if (ent <= size(gs%ent_lookup, 2)) e = gs%ent_lookup(dim, ent)
+                end if
+                if (e > 0) physicals = gs%ent_phys(:, e)
                 call next_line(lex)
                 do k = 1, n_in
                     call get_int(lex, tag, 'element tag', st)

@@ -53,7 +53,8 @@ module mesh_types
         mesh_add_cell_group, mesh_finish
     public :: find_node, find_cell, find_node_group, find_cell_group, node_name, cell_name, &
         node_group_name, cell_group_name, cells_of_group, nodes_of_group, nodes_of_cells, &
-        cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message
+        cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message, &
+        cell_label
     public :: n_node_groups, n_cell_groups
 
 contains
@@ -300,6 +301,30 @@ contains
         hint = closest_name(names, name)
         if (len(hint) > 0) text = text // ' (did you mean ' // hint // '?)'
     end function not_found_message
+
+    !> "cell M12 (GROUP_MA DALLE)" for messages: the cell's name and the first GROUP_MA
+    !> holding it (`group` when given, else searched; omitted when the cell is in none).
+    function cell_label(mesh, c, group) result(text)
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: c
+        character(len=*), intent(in), optional :: group
+        character(len=:), allocatable :: text
+        integer(i4) :: g
+        text = 'cell ' // cell_name(mesh, c)
+        if (present(group)) then
+            if (len(group) > 0) then
+                text = text // ' (GROUP_MA ' // group // ')'
+                return
+            end if
+        end if
+        do g = 1, n_cell_groups(mesh)
+            if (any(mesh%cell_group_items(mesh%cell_group_ptr(g):mesh%cell_group_ptr(g + 1) &
+                                          - 1) == c)) then
+                text = text // ' (GROUP_MA ' // cell_group_name(mesh, g) // ')'
+                return
+            end if
+        end do
+    end function cell_label
 
     !> Names of node / cell / group number `i`.
     function node_name(mesh, i) result(name)
