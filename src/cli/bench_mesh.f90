@@ -1,9 +1,9 @@
 !> parasol-bench mesh FILE: times reading a mesh (.mail or Gmsh .msh, by extension).
 module bench_mesh
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-    use kinds, only: dp, i4
+    use kinds, only: dp
     use status, only: status_t, format_status
-    use strings, only: to_text, ends_with, to_lower
+    use strings, only: to_text
     use mesh_types, only: mesh_t
     use mesh_reader, only: read_mesh
     implicit none
@@ -19,6 +19,7 @@ contains
         type(status_t) :: st
         integer(int64) :: t0, t1, rate
         real(dp) :: seconds
+        character(len=12) :: buf
         call system_clock(t0, rate)
         call read_mesh(path, mesh, st)
         call system_clock(t1)
@@ -28,8 +29,10 @@ contains
             return
         end if
         seconds = real(t1 - t0, dp) / real(rate, dp)
-        write (output_unit, '(a,f0.4)') 'RESULT mesh file=' // path // ' nodes=' // &
-            to_text(mesh%n_nodes) // ' cells=' // to_text(mesh%n_cells) // ' seconds=', seconds
+        write (buf, '(f12.4)') seconds
+        write (output_unit, '(a)') 'RESULT mesh file=' // path // ' nodes=' // &
+            to_text(mesh%n_nodes) // ' cells=' // to_text(mesh%n_cells) // ' seconds=' // &
+            trim(adjustl(buf))
         exit_status = 0
     end subroutine run_bench_mesh
 end module bench_mesh

@@ -331,11 +331,30 @@ contains
                            ' must be positive', line=line)
             return
         end if
-        call mesh_add_node(mesh, 'N' // to_text(tag), xyz, line, st)
+        call mesh_add_node(mesh, tag_name('N', tag), xyz, line, st)
         if (st%failed()) return
         call grow_map(gs%tag_to_node, tag)
         gs%tag_to_node(tag) = mesh%n_nodes
     end subroutine add_node
+
+    ! prefix // decimal tag (tag >= 1), without an internal write (the reader names every
+    ! node and cell: a formatted write per name would double the reading time).
+    pure function tag_name(prefix, tag) result(name)
+        character, intent(in) :: prefix
+        integer(i4), intent(in) :: tag
+        character(len=:), allocatable :: name
+        character(len=11) :: digits
+        integer(i4) :: value, k
+        value = tag
+        k = len(digits) + 1
+        do
+            k = k - 1
+            digits(k:k) = achar(48 + mod(value, 10))
+            value = value / 10
+            if (value == 0) exit
+        end do
+        name = prefix // digits(k:)
+    end function tag_name
 
     subroutine grow_map(map, tag)
         integer(i4), allocatable, intent(inout) :: map(:)
@@ -447,7 +466,7 @@ contains
                     to_text(CELL_TYPE_NODES(ctype)), line=line)
                 return
             end if
-            call mesh_add_cell(mesh, 'M' // to_text(tag), ctype, nodes(1:n), line, st)
+            call mesh_add_cell(mesh, tag_name('M', tag), ctype, nodes(1:n), line, st)
             if (st%failed()) return
             gs%tag_to_cell(tag) = mesh%n_cells
         end if
