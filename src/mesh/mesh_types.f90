@@ -355,19 +355,28 @@ contains
         name = name_of(mesh%cell_group_names, i)
     end function cell_group_name
 
-    !> Cells of GROUP_MA number `g` (in group order).
+    !> Cells of GROUP_MA number `g` (in group order); empty if g is not a group number (so
+    !> `cells_of_group(mesh, find_cell_group(mesh, name, st))` is safe; check st).
     function cells_of_group(mesh, g) result(cells)
         type(mesh_t), intent(in) :: mesh
         integer(i4), intent(in) :: g
         integer(i4), allocatable :: cells(:)
+        if (g < 1 .or. g > n_cell_groups(mesh)) then
+            allocate (cells(0))
+            return
+        end if
         cells = mesh%cell_group_items(mesh%cell_group_ptr(g):mesh%cell_group_ptr(g + 1) - 1)
     end function cells_of_group
 
-    !> Nodes of GROUP_NO number `g` (in group order).
+    !> Nodes of GROUP_NO number `g` (in group order); empty if g is not a group number.
     function nodes_of_group(mesh, g) result(nodes)
         type(mesh_t), intent(in) :: mesh
         integer(i4), intent(in) :: g
         integer(i4), allocatable :: nodes(:)
+        if (g < 1 .or. g > n_node_groups(mesh)) then
+            allocate (nodes(0))
+            return
+        end if
         nodes = mesh%node_group_items(mesh%node_group_ptr(g):mesh%node_group_ptr(g + 1) - 1)
     end function nodes_of_group
 
@@ -416,8 +425,10 @@ contains
                 do i = -1, 1, 2
                     xi = i * g
                     eta = j * g
-                    dxi = 0.25_dp * ((1 - eta) * (x(:, 2) - x(:, 1)) + (1 + eta) * (x(:, 3) - x(:, 4)))
-                    deta = 0.25_dp * ((1 - xi) * (x(:, 4) - x(:, 1)) + (1 + xi) * (x(:, 3) - x(:, 2)))
+                    dxi = 0.25_dp * ((1.0_dp - eta) * (x(:, 2) - x(:, 1)) &
+                                     + (1.0_dp + eta) * (x(:, 3) - x(:, 4)))
+                    deta = 0.25_dp * ((1.0_dp - xi) * (x(:, 4) - x(:, 1)) &
+                                      + (1.0_dp + xi) * (x(:, 3) - x(:, 2)))
                     measure = measure + norm2(cross(dxi, deta))   ! weight 1 per point
                 end do
             end do

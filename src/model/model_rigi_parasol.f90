@@ -10,9 +10,10 @@
 module model_rigi_parasol
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use strings, only: to_text, real_e13
+    use strings, only: to_text, real_e13, string_t
     use mesh_types, only: mesh_t, cell_measure, cell_centre, cell_name, node_name, &
-        cell_label, CELL_POI1, CELL_SEG2
+        cell_label, find_cell_group, find_node_group, find_node, cells_of_group, &
+        nodes_of_group, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_discrete_2d
     use model_cara_elem, only: cara_elem_t, parse_cara, parse_repere, discrete_misfit, &
         CARA_NONE, CARA_K_T_D_N, CARA_K_T_D_L, CARA_NAMES
@@ -30,7 +31,7 @@ module model_rigi_parasol
     end type rigi_parasol_table_t
 
     public :: compute_rigi_parasol, apply_rigi_parasol, rigi_parasol_lines, &
-        cell_centre_distances
+        cell_centre_distances, raft_from_groups, parasol_centre
 
 contains
 
@@ -46,6 +47,73 @@ contains
             distance(i) = norm2(cell_centre(mesh, cells(i)) - centre)
         end do
     end function cell_centre_distances
+
+    !> Raft cells and their coefficients from GROUP_MA names and COEF_GROUP values (one
+    !> per group, or one for all groups).
+    !>  st : out, STATUS_MESH_ERROR for an unknown group; STATUS_MODEL_ERROR when the number
+    !>       of COEF_GROUP values is neither 1 nor the number of groups
+    subroutine raft_from_groups(mesh, groups, coef_group, cells, coefficients, st)
+        type(mesh_t), intent(in) :: mesh
+        type(string_t), intent(in) :: groups(:)
+        real(dp), intent(in) :: coef_group(:)
+        integer(i4), allocatable, intent(out) :: cells(:)
+        real(dp), allocatable, intent(out) :: coefficients(:)
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: members(:)
+        integer(i4) :: g
+        allocate (cells(0), coefficients(0))
+        if (size(coef_group) /= 1 .and. size(coef_group) /= size(groups)) then
+            call set_error(st, STATUS_MODEL_ERROR, 'COEF_GROUP needs 1 value or one per ' // &
+                'group (' // to_text(size(groups, kind=i4)) // '), got ' // &
+                to_text(size(coef_group, kind=i4)), keyword='RIGI_PARASOL/COEF_GROUP')
+            return
+        end if
+        do g = 1, size(groups)
+            members = cells_of_group(mesh, find_cell_group(mesh, groups(g)%s, st))
+            if (st%failed()) return
+            cells = [cells, members]
+            coefficients = [coefficients, spread(coef_group(min(g, size(coef_group))), 1, &
+                                                 size(members))]
+        end do
+    end subroutine raft_from_groups
+
+    !> Centre point of FONC_GROUP: NOEUD_CENTRE (node name), GROUP_NO_CENTRE (a group of
+    !> one node) or COOR_CENTRE (coordinates, 2 or 3 values); exactly one must be given.
+    !>  st : out, STATUS_MESH_ERROR for an unknown node or group; STATUS_MODEL_ERROR for none
+    !>       or several of the three, a group of more than one node, a wrong coordinate count
+    subroutine parasol_centre(mesh, centre, st, node, group, coordinates)
+        type(mesh_t), intent(in) :: mesh
+        real(dp), intent(out) :: centre(3)
+        type(status_t), intent(out) :: st
+        character(len=*), intent(in), optional :: node, group
+        real(dp), intent(in), optional :: coordinates(:)
+        integer(i4), allocatable :: nodes(:)
+        centre = 0.0_dp
+        if (count([present(node), present(group), present(coordinates)]) /= 1) then
+            call set_error(st, STATUS_MODEL_ERROR, 'give exactly one of NOEUD_CENTRE, ' // &
+                'GROUP_NO_CENTRE, COOR_CENTRE', keyword='RIGI_PARASOL')
+        else if (present(node)) then
+            nodes = [find_node(mesh, node, st)]
+            if (st%ok()) centre = mesh%coords(:, nodes(1))
+        else if (present(group)) then
+            nodes = nodes_of_group(mesh, find_node_group(mesh, group, st))
+            if (st%failed()) return
+            if (size(nodes) /= 1) then
+                call set_error(st, STATUS_MODEL_ERROR, 'GROUP_NO_CENTRE ' // group // ' has ' &
+                    // to_text(size(nodes, kind=i4)) // ' nodes, it must have one', &
+                    keyword='RIGI_PARASOL/GROUP_NO_CENTRE')
+                return
+            end if
+            centre = mesh%coords(:, nodes(1))
+        else
+            if (size(coordinates) < 2 .or. size(coordinates) > 3) then
+                call set_error(st, STATUS_MODEL_ERROR, 'COOR_CENTRE needs 2 or 3 values', &
+                               keyword='RIGI_PARASOL/COOR_CENTRE')
+                return
+            end if
+            centre(1:size(coordinates)) = coordinates
+        end if
+    end subroutine parasol_centre
 
     !> Computes the RIGI_PARASOL springs.
     !>  raft_cells   : in, cells of GROUP_MA (all groups, concatenated)
