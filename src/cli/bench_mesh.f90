@@ -3,16 +3,28 @@ module bench_mesh
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
     use kinds, only: dp
     use status, only: status_t, format_status
-    use strings, only: to_text
+    use strings, only: to_text, string_t
     use mesh_types, only: mesh_t
     use mesh_reader, only: read_mesh
     implicit none
     private
     public :: run_bench_mesh
 contains
-    !> Reads `path` once and prints `RESULT mesh nodes=N cells=C seconds=S`; exit_status 0,
-    !> or 1 (with the error on stderr) if the mesh cannot be read.
-    subroutine run_bench_mesh(path, exit_status)
+    !> `parasol-bench mesh FILE`: args = [FILE]. Reads FILE once and prints
+    !> `RESULT mesh file=F nodes=N cells=C seconds=S`; exit_status 0, or 1 (with the error
+    !> or the usage on stderr) if the mesh cannot be read or FILE is missing.
+    subroutine run_bench_mesh(args, exit_status)
+        type(string_t), intent(in) :: args(:)
+        integer, intent(out) :: exit_status
+        if (size(args) /= 1) then
+            write (error_unit, '(a)') 'usage: parasol-bench mesh FILE   (.mail, or .msh for Gmsh)'
+            exit_status = 1
+            return
+        end if
+        call time_mesh_read(args(1)%s, exit_status)
+    end subroutine run_bench_mesh
+
+    subroutine time_mesh_read(path, exit_status)
         character(len=*), intent(in) :: path
         integer, intent(out) :: exit_status
         type(mesh_t) :: mesh
@@ -34,5 +46,5 @@ contains
             to_text(mesh%n_nodes) // ' cells=' // to_text(mesh%n_cells) // ' seconds=' // &
             trim(adjustl(buf))
         exit_status = 0
-    end subroutine run_bench_mesh
+    end subroutine time_mesh_read
 end module bench_mesh

@@ -22,7 +22,7 @@ contains
         case ('--help', '-h')
             call print_bench_usage(output_unit)
             exit_status = 0
-        case ('mesh'); if (size(args) >= 2) call run_bench_mesh(args(2)%s, exit_status)
+        case ('mesh'); call run_bench_mesh(args(2:), exit_status)
         case default
             write (error_unit, '(a)') 'parasol-bench: error: unknown benchmark "' // &
                 args(1)%s // '"'
