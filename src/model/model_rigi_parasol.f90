@@ -137,6 +137,8 @@ contains
         type(status_t), intent(out) :: st
         character(len=*), intent(in), optional :: spring_group
         real(dp), allocatable :: share(:)
+        real(dp) :: total
+        logical, allocatable :: on_raft(:)
         integer(i4), allocatable :: spring_of(:)
         integer(i4) :: code, i, n
         code = parse_cara(cara_name)
@@ -153,23 +155,37 @@ contains
         end if
         call node_shares(mesh, raft_cells, coefficients, share, st)
         if (st%failed()) return
-        call match_springs(model, mesh, share, spring_cells, code, spring_of, st, spring_group)
+        allocate (on_raft(mesh%n_nodes), source=.false.)
+        do i = 1, size(raft_cells)
+            on_raft(mesh%cell_nodes(mesh%cell_ptr(raft_cells(i)):mesh%cell_ptr(raft_cells(i) &
+                                                                             + 1) - 1)) = .true.
+        end do
+        call match_springs(model, mesh, on_raft, spring_cells, code, spring_of, st, &
+                           spring_group)
         if (st%failed()) return
-        n = count(share > 0.0_dp .or. spring_of > 0, kind=i4)
-        table%n = n
         table%n_values = 3
         if (size(spring_cells) > 0) then
             if (is_discrete_2d(model%element(spring_cells(1)))) table%n_values = 2
+            if (any(is_discrete_2d(model%element(spring_cells)) .neqv. &
+                    table%n_values == 2)) then
+                call set_error(st, STATUS_MODEL_ERROR, 'the discretes mix DIS_T and ' // &
+                    '2D_DIS_T cells: one RIGI_PARASOL needs springs of one modelisation', &
+                    keyword='RIGI_PARASOL')
+                return
+            end if
         end if
+        n = count(on_raft, kind=i4)
+        table%n = n
         allocate (table%raft_node(n), table%spring_cell(n), table%weight(n), &
                   table%stiffness(table%n_values, n))
+        total = sum(share)
         n = 0
         do i = 1, mesh%n_nodes
             if (spring_of(i) == 0) cycle
             n = n + 1
             table%raft_node(n) = i
             table%spring_cell(n) = spring_of(i)
-            table%weight(n) = share(i) / sum(share)
+            table%weight(n) = share(i) / total
             table%stiffness(:, n) = vale(1:table%n_values) * table%weight(n)
         end do
     end subroutine compute_rigi_parasol
@@ -208,11 +224,11 @@ contains
             keyword='RIGI_PARASOL/COEF_GROUP')
     end subroutine node_shares
 
-    ! spring_of(node) = the discrete cell of node (0 if none); raft nodes are share > 0.
-    subroutine match_springs(model, mesh, share, spring_cells, code, spring_of, st, group)
+    ! spring_of(node) = the discrete cell of node (0 if none), for the nodes of the raft.
+    subroutine match_springs(model, mesh, on_raft, spring_cells, code, spring_of, st, group)
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
-        real(dp), intent(in) :: share(:)
+        logical, intent(in) :: on_raft(:)
         integer(i4), intent(in) :: spring_cells(:), code
         integer(i4), allocatable, intent(out) :: spring_of(:)
         type(status_t), intent(inout) :: st
@@ -220,7 +236,7 @@ contains
         integer(i4) :: i, c, node, n_raft
         character(len=:), allocatable :: reason, counts
         allocate (spring_of(mesh%n_nodes), source=0_i4)
-        n_raft = count(share > 0.0_dp, kind=i4)
+        n_raft = count(on_raft, kind=i4)
         counts = ' (' // to_text(n_raft) // ' raft nodes, ' // &
             to_text(size(spring_cells, kind=i4)) // ' discretes)'
         do i = 1, size(spring_cells)
@@ -231,9 +247,9 @@ contains
                 return
             end if
             node = mesh%cell_nodes(mesh%cell_ptr(c))
-            if (share(node) <= 0.0_dp .and. mesh%cell_type(c) == CELL_SEG2) &
+            if (.not. on_raft(node) .and. mesh%cell_type(c) == CELL_SEG2) &
                 node = mesh%cell_nodes(mesh%cell_ptr(c) + 1)
-            if (share(node) <= 0.0_dp) then
+            if (.not. on_raft(node)) then
                 call set_error(st, STATUS_MODEL_ERROR, 'discrete ' // cell_label(mesh, c, &
                     group) // ' has no node on the raft' // counts, keyword='RIGI_PARASOL')
                 return
@@ -247,7 +263,7 @@ contains
             spring_of(node) = c
         end do
         do node = 1, mesh%n_nodes
-            if (share(node) > 0.0_dp .and. spring_of(node) == 0) then
+            if (on_raft(node) .and. spring_of(node) == 0) then
                 call set_error(st, STATUS_MODEL_ERROR, 'raft node ' // node_name(mesh, node) &
                     // ' has no discrete in the spring group' // counts, keyword='RIGI_PARASOL')
                 return
