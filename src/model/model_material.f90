@@ -30,6 +30,8 @@ module model_material
         logical :: has_jeu = .false.
         real(dp) :: jeu = 0.0_dp        !< gap (POI1 discretes), if has_jeu
         real(dp) :: coulomb = 0.0_dp    !< friction coefficient
+        real(dp) :: amor_nor = 0.0_dp   !< normal damping (accepted; statics ignore it)
+        real(dp) :: amor_tan = 0.0_dp   !< tangential damping (accepted; statics ignore it)
     end type dis_contact_t
 
     !> One material (a DEFI_MATERIAU result).
