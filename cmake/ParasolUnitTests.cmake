@@ -19,7 +19,8 @@ function(parasol_add_unit_suite pf_file)
   get_filename_component(stem ${pf_file} NAME_WE)
   if(PFUNIT_FOUND)
     add_pfunit_ctest(${stem} TEST_SOURCES ${pf_file} LINK_LIBRARIES parasol_lib)
-    set_tests_properties(${stem} PROPERTIES LABELS unit)
+    set_tests_properties(${stem} PROPERTIES LABELS unit
+      ENVIRONMENT PARASOL_SOURCE_DIR=${PROJECT_SOURCE_DIR})
     return()
   endif()
   set(gen ${CMAKE_CURRENT_BINARY_DIR}/pfunit_generated)
@@ -35,5 +36,7 @@ function(parasol_add_unit_suite pf_file)
   target_compile_options(${stem} PRIVATE -ffree-line-length-none)
   target_link_libraries(${stem} PRIVATE parasol_lib parasol_funit)
   add_test(NAME unit.${stem} COMMAND ${stem})
-  set_tests_properties(unit.${stem} PROPERTIES LABELS unit)
+  # Suites that read committed data (meshes, decks) find the source tree through this.
+  set_tests_properties(unit.${stem} PROPERTIES LABELS unit
+    ENVIRONMENT PARASOL_SOURCE_DIR=${PROJECT_SOURCE_DIR})
 endfunction()
