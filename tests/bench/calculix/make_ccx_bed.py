@@ -42,6 +42,8 @@ from fractions import Fraction as Fr
 GAP_FORCE_INF = 1.0e-12
 # Yield stress that is never reached: only there to make ccx run its nonlinear iterations.
 NEVER_YIELD = 1.0e30
+# ccx reads reals with the Fortran format f20.0: longer fields are an input error.
+CCX_FIELD_WIDTH = 20
 
 DEFAULTS = dict(a="1", b="2", h="0.3", E="2e11", nu="0.3", K="1e4", p="5", L="0.1")
 
@@ -95,8 +97,10 @@ def consistent_pressure_forces(nx, ny, a, b, p):
 
 
 def ffmt(x):
-    """Shortest round-tripping text of a float (ccx reads free-format reals)."""
-    return repr(float(x))
+    """Text of a float that ccx can read: ccx reads each real with format f20.0, so a field
+    must fit in 20 characters.  Shortest round-trip text when it fits, else 13 digits."""
+    text = repr(float(x))
+    return text if len(text) <= CCX_FIELD_WIDTH else f"{float(x):.12e}"
 
 
 def write_deck(out, nx, ny, a, b, h, E, nu, K, p, L):
