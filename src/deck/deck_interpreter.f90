@@ -144,7 +144,9 @@ contains
         type(frame_t), intent(inout), optional :: frame
         type(value_t) :: v
         integer :: k
-        associate (node => ctx%ast%nodes(id))
+        type(node_t) :: node
+        node = ctx%ast%nodes(id)       ! a copy: evaluation may grow the AST (FORMULE VALE)
+        block
             select case (node%kind)
             case (N_ASSIGN)
                 call eval(ctx, node%kids(1), v, st, frame, target=node%text)
@@ -180,7 +182,7 @@ contains
                 call fail(st, ctx, id, 'unexpected statement (kind ' // to_text(int(k, i4)) &
                           // ')')
             end select
-        end associate
+        end block
     end subroutine exec_statement
 
     recursive subroutine exec_block(ctx, block, st, frame)
@@ -249,7 +251,9 @@ contains
                 'about 9.2E+18; write it as a real)')
         case (N_REAL)
             v%kind = VK_REAL
-            read (ctx%ast%nodes(id)%text, *, iostat=ios) v%r
+            ios = 0
+            if (literal_out_of_range(ctx%ast%nodes(id)%text)) ios = 1
+            if (ios == 0) read (ctx%ast%nodes(id)%text, *, iostat=ios) v%r
             if (ios == 0) then
                 if (abs(v%r) > huge(v%r)) ios = 1
             end if
@@ -402,9 +406,11 @@ contains
         type(value_t) :: f
         type(value_t), allocatable :: args(:)
         type(value_t) :: kwargs
+        character(len=:), allocatable :: name
         callee = ctx%ast%kid(id, 1)
         if (ctx%ast%nodes(callee)%kind == N_NAME) then
-            associate (name => ctx%ast%nodes(callee)%text)
+            name = ctx%ast%nodes(callee)%text
+            block
                 icmd = ctx%catalog%find_command(name)
                 if (.not. shadowed(ctx, name, frame)) then
                     if (icmd > 0 .or. name == '_F') then
@@ -430,7 +436,7 @@ contains
                         return
                     end if
                 end if
-            end associate
+            end block
         end if
         call eval(ctx, callee, f, st, frame)
         if (st%failed()) return

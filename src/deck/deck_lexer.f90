@@ -288,7 +288,7 @@ contains
                         if (text(j:j) == '+' .or. text(j:j) == '-') j = j + 1
                     end if
                     if (.not. next_is_digit(j)) then
-                        call fail('malformed number "' // text(i:min(j, n)) // &
+                        call fail('malformed number "' // text(i:j - 1) // &
                             '" (an exponent needs digits, e.g. 1.0E+03)', line, col)
                         return
                     end if

@@ -27,10 +27,80 @@ module deck_math
     !> Largest argument of exp (and half-width for sinh/cosh) that does not overflow.
     real(dp), parameter :: EXP_LIMIT = 709.78_dp
 
-    public :: builtin_id, builtin_arity_of, math_message, checked_binary, checked_call, &
+    public :: literal_out_of_range, builtin_id, builtin_arity_of, math_message, checked_binary, checked_call, &
         checked_pow, same_real
 
 contains
+
+    !> True when the decimal literal `text` (e.g. 1.0E+400) is beyond the largest real.
+    !> Decided from its digits, before any conversion: converting it would raise an overflow
+    !> exception, which the Debug build traps.
+    pure logical function literal_out_of_range(text)
+        character(len=*), intent(in) :: text
+        integer :: i, e, lead, expo, ios
+        logical :: seen_point, nonzero
+        literal_out_of_range = .false.
+        e = scan(text, 'eE')
+        expo = 0
+        if (e > 0) then
+            if (len(text) - e > 6) then
+                literal_out_of_range = verify(text(e + 1:), '+-0') > 0 .and. &
+                                       index(text(e + 1:), '-') == 0
+                if (literal_out_of_range) literal_out_of_range = mantissa_nonzero(text(1:e - 1))
+                return
+            end if
+            read (text(e + 1:), *, iostat=ios) expo
+            if (ios /= 0) return
+        else
+            e = len(text) + 1
+        end if
+        ! decimal exponent of the leading nonzero digit
+        lead = 0; seen_point = .false.; nonzero = .false.
+        do i = 1, e - 1
+            if (text(i:i) == '.') then
+                seen_point = .true.
+            else if (.not. nonzero) then
+                if (text(i:i) /= '0') then
+                    nonzero = .true.
+                    if (.not. seen_point) lead = 1
+                    if (seen_point) lead = lead - 1
+                else if (seen_point) then
+                    lead = lead - 1
+                end if
+            else if (.not. seen_point) then
+                lead = lead + 1
+            end if
+        end do
+        if (.not. nonzero) return
+        literal_out_of_range = expo + lead - 1 > 308
+        if (expo + lead - 1 == 308) literal_out_of_range = leading_digits(text(1:e - 1)) > &
+            huge(1.0_dp) * 1.0e-308_dp
+    end function literal_out_of_range
+
+    !> The significant digits of a mantissa as d.ddd (a value in [1, 10)).
+    pure real(dp) function leading_digits(text)
+        character(len=*), intent(in) :: text
+        character(len=40) :: digits, number
+        integer :: i, n, ios
+        digits = ''
+        n = 0
+        do i = 1, len(text)
+            if (text(i:i) == '.') cycle
+            if (n == 0 .and. text(i:i) == '0') cycle
+            if (n >= 30) exit
+            n = n + 1
+            digits(n:n) = text(i:i)
+        end do
+        leading_digits = 0.0_dp
+        if (n == 0) return
+        number = digits(1:1) // '.' // digits(2:max(2, n)) // '0'
+        read (number, *, iostat=ios) leading_digits
+    end function leading_digits
+
+    pure logical function mantissa_nonzero(text)
+        character(len=*), intent(in) :: text
+        mantissa_nonzero = verify(text, '0.') > 0
+    end function mantissa_nonzero
 
     !> Id of a built-in name ('sqrt' or 'math.sqrt'), 0 if none.
     pure integer function builtin_id(name)

@@ -10,8 +10,9 @@ module deck_parser
     implicit none
     private
 
-    !> Deepest expression/statement nesting accepted (far below gfortran's stack limit).
-    integer, parameter, public :: MAX_DEPTH = 200
+    !> Deepest expression/statement nesting accepted, counting operator chains too (a+b+c
+    !> is a tree of depth 3): far below what gfortran's stack holds for the evaluators.
+    integer, parameter, public :: MAX_DEPTH = 500
 
     type :: parser_t
         type(token_t), allocatable :: toks(:)
@@ -68,6 +69,10 @@ contains
         p%file = file
         call tokenize(text, file, p%toks, st, line0, col0)
         if (st%failed()) return
+        ! A VALE string may span lines (triple quotes): line ends and indentation inside it
+        ! are insignificant, as inside brackets.
+        p%toks = pack(p%toks, p%toks%kind /= TOK_NEWLINE .and. p%toks%kind /= TOK_INDENT &
+                      .and. p%toks%kind /= TOK_DEDENT)
         call skip_layout(p)
         if (peek_kind(p) == TOK_EOF) then
             call fail_at(p, st, 'empty expression (give a formula, e.g. ''2.0*X'')')
@@ -479,13 +484,14 @@ contains
         integer, intent(in) :: level
         integer, intent(out) :: e
         type(status_t), intent(inout) :: st
-        integer :: right, node
+        integer :: right, node, chain
         if (level == 1) then
             call parse_binary(p, ast, 2, e, st)
         else
             call parse_unary(p, ast, e, st)
         end if
         if (st%failed()) return
+        chain = 0
         do
             if (level == 1) then
                 if (.not. (is_op(p, '+') .or. is_op(p, '-'))) exit
@@ -494,6 +500,9 @@ contains
                            is_op(p, '%'))) exit
             end if
             node = ast%add(N_BINOP, peek_text(p), p%toks(p%pos)%line, p%toks(p%pos)%col)
+            call enter(p, st)                   ! a left-deep chain is as deep as it is long
+            if (st%failed()) return
+            chain = chain + 1
             p%pos = p%pos + 1
             if (level == 1) then
                 call parse_binary(p, ast, 2, right, st)
@@ -505,6 +514,7 @@ contains
             call ast%add_kid(node, right)
             e = node
         end do
+        p%depth = p%depth - chain
         if (is_op(p, '@') .or. is_op(p, '&') .or. is_op(p, '|') .or. is_op(p, '^')) then
             call fail_at(p, st, 'operator "' // peek_text(p) // '" is not supported')
         end if
@@ -543,9 +553,12 @@ contains
         call parse_primary(p, ast, e, st)
         if (st%failed() .or. .not. is_op(p, '**')) return
         node = ast%add(N_BINOP, '**', p%toks(p%pos)%line, p%toks(p%pos)%col)
+        call enter(p, st)
+        if (st%failed()) return
         p%pos = p%pos + 1
         call parse_unary(p, ast, exponent, st)
         if (st%failed()) return
+        p%depth = p%depth - 1
         call ast%add_kid(node, e)
         call ast%add_kid(node, exponent)
         e = node
@@ -722,8 +735,8 @@ contains
         type(parser_t), intent(inout) :: p
         type(status_t), intent(inout) :: st
         p%depth = p%depth + 1
-        if (p%depth > MAX_DEPTH) call fail_at(p, st, 'expression nested deeper than 200 ' // &
-                                              'levels (simplify it)')
+        if (p%depth > MAX_DEPTH) call fail_at(p, st, 'expression nested or chained deeper ' &
+                                              // 'than 500 levels (simplify it)')
     end subroutine enter
 
     subroutine skip_newlines(p)

@@ -220,6 +220,10 @@ contains
         end if
         parent = def%kws(kw)%parent
         associate (k => def%kws(kw), v => args%items(j))
+            if (k%types == 'ANY') then         ! bookkeeping keyword: anything goes
+                call set%add(item)
+                return
+            end if
             if (v%kind == VK_FACTOR) then
                 call fail(v, 'expected ' // type_words(k%types) // ', got _F(...) (this ' // &
                           'keyword is not a factor keyword)'); return
@@ -230,10 +234,6 @@ contains
             else
                 allocate (items(1))
                 items(1) = v
-            end if
-            if (k%types == 'ANY') then
-                call set%add(item)
-                return
             end if
             if (size(items) < k%min .or. size(items) > k%max) then
                 call fail(v, 'expected ' // count_text(k%min, k%max) // ' value(s), got ' // &
@@ -391,22 +391,26 @@ contains
         character(len=*), intent(in) :: types
         character(len=:), allocatable :: text
         type(string_t), allocatable :: words(:)
+        character(len=:), allocatable :: concepts
         integer :: i
         call split_words(expand_types(types), words)
         text = ''
+        concepts = ''
         do i = 1, size(words)
-            if (i > 1) text = text // ' or '
             select case (words(i)%s)
             case ('I')
-                text = text // 'an integer'
+                text = text // ' or an integer'
             case ('R')
-                text = text // 'a real'
+                text = text // ' or a real'
             case ('TXM')
-                text = text // 'a text'
+                text = text // ' or a text'
             case default
-                text = text // 'a concept of type ' // words(i)%s
+                if (len(concepts) > 0) concepts = concepts // ' or '
+                concepts = concepts // words(i)%s
             end select
         end do
+        if (len(concepts) > 0) text = text // ' or a concept of type ' // concepts
+        text = text(5:)
     end function type_words
 
     function describe(v) result(text)

@@ -11,7 +11,7 @@ module formula_compiler
     use deck_ast
     use deck_parser, only: parse_expression
     use deck_value
-    use deck_math, only: builtin_id, builtin_arity_of, PI_VALUE, E_VALUE, same_real
+    use deck_math, only: literal_out_of_range, builtin_id, builtin_arity_of, PI_VALUE, E_VALUE, same_real
     use deck_suggest, only: did_you_mean
     use run_context, only: run_context_t
     use function_concept, only: function_concept_t
@@ -93,7 +93,9 @@ contains
         node = ctx%ast%nodes(id)
         select case (node%kind)
         case (N_INT, N_REAL)
-            read (node%text, *, iostat=ios) x
+            ios = 0
+            if (literal_out_of_range(node%text)) ios = 1
+            if (ios == 0) read (node%text, *, iostat=ios) x
             if (ios == 0) then
                 if (abs(x) > huge(x)) ios = 1
             end if
