@@ -8,7 +8,7 @@ module formula_program
     use strings, only: string_t, to_text
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use deck_math, only: checked_binary, checked_pow, checked_call, math_message, MATH_OK, &
-        same_real
+        same_real, B_MIN, B_MAX
     use function_concept, only: function_concept_t, param_binding_t
     implicit none
     private
@@ -27,6 +27,9 @@ module formula_program
 
     !> Symbols of OP_ADD .. OP_MOD for checked_binary.
     character(len=2), parameter :: SYMBOLS(6) = ['+ ', '- ', '* ', '/ ', '//', '% ']
+
+    !> Sums of operands below this size cannot overflow.
+    real(dp), parameter :: HALF_HUGE = 0.5_dp * huge(1.0_dp)
 
     !> Value stack size, locals size and call depth of the evaluator (checked at compile time).
     integer, parameter, public :: MAX_STACK = 256, MAX_LOCALS = 512, MAX_FRAMES = 32
@@ -150,7 +153,29 @@ contains
                     call fail(3, '** 2'); return
                 end if
                 stack(sp) = stack(sp) * stack(sp)
-            case (OP_ADD, OP_SUB, OP_MUL, OP_DIV, OP_FLOORDIV, OP_MOD)
+            case (OP_MUL)                     ! fast path; overflow checked before
+                if (abs(stack(sp)) > 1.0_dp) then
+                    if (abs(stack(sp - 1)) > huge(r) / abs(stack(sp))) then
+                        call fail(3, '*'); return
+                    end if
+                end if
+                sp = sp - 1
+                stack(sp) = stack(sp) * stack(sp + 1)
+            case (OP_ADD, OP_SUB)
+                if (abs(stack(sp)) > HALF_HUGE .or. abs(stack(sp - 1)) > HALF_HUGE) then
+                    call checked_binary(SYMBOLS(op - OP_ADD + 1), stack(sp - 1), stack(sp), &
+                                        r, code)
+                    if (code /= MATH_OK) then
+                        call fail(code, trim(SYMBOLS(op - OP_ADD + 1))); return
+                    end if
+                else if (op == OP_ADD) then
+                    r = stack(sp - 1) + stack(sp)
+                else
+                    r = stack(sp - 1) - stack(sp)
+                end if
+                sp = sp - 1
+                stack(sp) = r
+            case (OP_DIV, OP_FLOORDIV, OP_MOD)
                 call checked_binary(SYMBOLS(op - OP_ADD + 1), stack(sp - 1), stack(sp), r, code)
                 if (code /= MATH_OK) then
                     call fail(code, trim(SYMBOLS(op - OP_ADD + 1))); return
@@ -186,6 +211,17 @@ contains
                 sp = sp - 1
             case (OP_BUILTIN)
                 n = prog%units(u)%code(pc + 2)
+                if (n == 2 .and. (prog%units(u)%code(pc + 1) == B_MIN .or. &
+                                  prog%units(u)%code(pc + 1) == B_MAX)) then
+                    sp = sp - 1
+                    if (prog%units(u)%code(pc + 1) == B_MIN) then
+                        stack(sp) = min(stack(sp), stack(sp + 1))
+                    else
+                        stack(sp) = max(stack(sp), stack(sp + 1))
+                    end if
+                    pc = pc + 3
+                    cycle
+                end if
                 call checked_call(prog%units(u)%code(pc + 1), stack(sp - n + 1:sp), n, r, code)
                 if (code /= MATH_OK) then
                     call fail(code, 'a built-in function'); return
