@@ -281,6 +281,7 @@ contains
         type(ast_t), intent(inout) :: ast
         integer, intent(out) :: block
         type(status_t), intent(inout) :: st
+        integer :: j
         block = 0
         call expect(p, ':', st)
         if (st%failed()) return
@@ -297,14 +298,18 @@ contains
         p%pos = p%pos + 1
         do
             call skip_newlines(p)
-            if (peek_kind(p) == TOK_DEDENT) then
-                p%pos = p%pos + 1; exit
+            if (peek_kind(p) == TOK_DEDENT .or. peek_kind(p) == TOK_EOF) then
+                j = p%pos - 1                  ! the line of the last token before DEDENTs
+                do while (j > 1 .and. p%toks(j)%kind == TOK_DEDENT)
+                    j = j - 1
+                end do
+                ast%nodes(block)%end_line = p%toks(max(1, j))%line
+                if (peek_kind(p) == TOK_DEDENT) p%pos = p%pos + 1
+                exit
             end if
-            if (peek_kind(p) == TOK_EOF) exit
             call parse_statement_line(p, ast, block, st)
             if (st%failed()) return
         end do
-        ast%nodes(block)%end_line = p%toks(max(1, p%pos - 1))%line
     end subroutine parse_block
 
     !> Python keywords that start constructs outside the subset.

@@ -31,7 +31,7 @@ contains
         class(constant_function_t), intent(in) :: self
         type(string_t), allocatable :: names(:)
         allocate (names(0))
-        if (.false.) names = [string_t(self%name)]
+        if (.false.) names(1)%s = self%name
     end function constant_parameters
 
     subroutine constant_evaluate(self, binding, values, y, st)

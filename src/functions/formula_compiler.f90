@@ -337,7 +337,7 @@ contains
             end if
             call compile_args()
             if (st%failed()) return
-            call emit(c, u, OP_BUILTIN, node, b, nargs)
+            call emit(c, u, OP_BUILTIN, callee, b, nargs)
             return
         end if
         select case (v%kind)
@@ -351,13 +351,13 @@ contains
             end if
             call compile_args()
             if (st%failed()) return
-            call emit(c, u, OP_CALL_DEF, node, target, nargs)
+            call emit(c, u, OP_CALL_DEF, callee, target, nargs)
         case (VK_CONCEPT)
             call add_callee(c, ctx, v, callee, nargs, target, st)
             if (st%failed()) return
             call compile_args()
             if (st%failed()) return
-            call emit(c, u, OP_CALL_FUNC, node, target, nargs)
+            call emit(c, u, OP_CALL_FUNC, callee, target, nargs)
         case default
             call fail(st, ctx, callee, callee%text // ' is ' // kind_label(v) // &
                       ', not a function')

@@ -37,7 +37,8 @@ contains
     function tabulated_parameters(self) result(names)
         class(tabulated_function_t), intent(in) :: self
         type(string_t), allocatable :: names(:)
-        names = [string_t(self%parameter)]
+        allocate (names(1))
+        names(1)%s = self%parameter
     end function tabulated_parameters
 
     subroutine tabulated_evaluate(self, binding, values, y, st)
