@@ -714,7 +714,7 @@ contains
         call ctx%write_mess('# ---- ' // name // ' (line ' // to_text(int(line, i4)) // ')')
         do l = first, min(last, size(ctx%lines))
             write (buf, '(i6)') l
-            call ctx%write_mess(buf // ' | ' // ctx%lines(l)%s)
+            call ctx%write_mess(buf(1:6) // ' | ' // ctx%lines(l)%s)
         end do
     end subroutine echo_statement
 
