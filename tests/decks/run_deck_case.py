@@ -77,6 +77,12 @@ def main(argv):
         expect_exit = 1 if expect else 0
     os.makedirs(workdir, exist_ok=True)
     name = os.path.basename(deck)
+    stem = os.path.splitext(name)[0]
+    old_resu = os.path.join(workdir, stem + ".resu")
+    if expect and not check:
+        # a failed run must leave an older .resu untouched
+        with open(old_resu, "w") as f:
+            f.write("OLD RESULT\n")
     cmd = [os.path.abspath(parasol), "--outdir", os.path.abspath(workdir)]
     if check:
         cmd.append("--check")
@@ -100,9 +106,19 @@ def main(argv):
             problems.append("stderr lacks " + repr(prefix))
         if phrase and phrase not in err:
             problems.append("stderr lacks the phrase " + repr(phrase))
-        stem = os.path.splitext(name)[0]
-        if not check and os.path.exists(os.path.join(workdir, stem + ".resu")):
-            problems.append("a .resu was committed for a failed run")
+        if not check:
+            with open(old_resu) as f:
+                if f.read() != "OLD RESULT\n":
+                    problems.append("the older .resu was overwritten by a failed run")
+            if os.path.exists(old_resu + ".partial"):
+                problems.append("the temporary .resu.partial was left behind")
+            mess = os.path.join(workdir, stem + ".mess")
+            if not os.path.exists(mess):
+                problems.append("no .mess was committed for the failed run")
+            else:
+                with open(mess, encoding="utf-8", errors="replace") as f:
+                    if prefix not in f.read():
+                        problems.append("the .mess lacks the error message")
     elif err.strip():
         problems.append("unexpected stderr")
     if problems:
