@@ -18,6 +18,11 @@ module deck_command
     implicit none
     private
 
+    !> A reference to a concept (for lists of concepts, e.g. MATER=(A, B)).
+    type, public :: concept_ref_t
+        class(concept_t), pointer :: ptr => null()
+    end type concept_ref_t
+
     !> One keyword and its normalized value. line = 0 for a default from the catalog.
     type, public :: kw_value_t
         character(len=:), allocatable :: name
@@ -35,6 +40,8 @@ module deck_command
         integer :: n = 0
     contains
         procedure :: has => set_has
+        procedure :: given => set_given
+        procedure :: get_concepts => set_get_concepts
         procedure :: find => set_find
         procedure :: get_value => set_get_value
         procedure :: get_int => set_get_int
@@ -91,6 +98,36 @@ contains
         character(len=*), intent(in) :: key
         set_has = self%find(key) > 0
     end function set_has
+
+    !> True when `key` was written in the deck (not a catalog default).
+    pure logical function set_given(self, key)
+        class(keyword_set_t), intent(in) :: self
+        character(len=*), intent(in) :: key
+        integer :: k
+        k = self%find(key)
+        set_given = .false.
+        if (k > 0) set_given = .not. self%items(k)%is_default
+    end function set_given
+
+    !> All concepts given to `key` (one or several), aliasing objects owned by the run.
+    subroutine set_get_concepts(self, key, refs, st)
+        class(keyword_set_t), intent(in) :: self
+        character(len=*), intent(in) :: key
+        type(concept_ref_t), allocatable, intent(out) :: refs(:)
+        type(status_t), intent(out) :: st
+        type(value_t), allocatable :: items(:)
+        integer :: k
+        call items_of(self, key, items, st)
+        allocate (refs(size(items)))
+        if (st%failed()) return
+        do k = 1, size(items)
+            if (items(k)%kind /= VK_CONCEPT .or. .not. associated(items(k)%obj)) then
+                call self%error_at(key, 'expected concepts, got ' // kind_label(items(k)), st)
+                return
+            end if
+            refs(k)%ptr => items(k)%obj
+        end do
+    end subroutine set_get_concepts
 
     !> Appends a keyword value (used by validation).
     subroutine set_add(self, item)

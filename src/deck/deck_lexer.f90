@@ -120,7 +120,8 @@ contains
             case ('\')
                 if (i < n .and. text(min(i + 1, n):min(i + 1, n)) == achar(10)) then
                     i = i + 2; line = line + 1; col = 1
-                else if (i + 1 < n .and. text(min(i + 1, n):min(i + 2, n)) == achar(13) // achar(10)) then
+                else if (i + 1 < n .and. &
+                         text(min(i + 1, n):min(i + 2, n)) == achar(13) // achar(10)) then
                     i = i + 3; line = line + 1; col = 1
                 else
                     call fail('unexpected character "\"', line, col); return

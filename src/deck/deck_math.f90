@@ -27,7 +27,8 @@ module deck_math
     !> Largest argument of exp (and half-width for sinh/cosh) that does not overflow.
     real(dp), parameter :: EXP_LIMIT = 709.78_dp
 
-    public :: literal_out_of_range, builtin_id, builtin_arity_of, math_message, checked_binary, checked_call, &
+    public :: literal_out_of_range, builtin_id, builtin_arity_of, math_message, &
+        checked_binary, checked_call, &
         checked_pow, same_real
 
 contains

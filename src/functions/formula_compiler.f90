@@ -11,7 +11,8 @@ module formula_compiler
     use deck_ast
     use deck_parser, only: parse_expression
     use deck_value
-    use deck_math, only: literal_out_of_range, builtin_id, builtin_arity_of, PI_VALUE, E_VALUE, same_real
+    use deck_math, only: literal_out_of_range, builtin_id, builtin_arity_of, PI_VALUE, &
+        E_VALUE, same_real
     use deck_suggest, only: did_you_mean
     use run_context, only: run_context_t
     use function_concept, only: function_concept_t
