@@ -349,6 +349,12 @@ contains
         call c%key('RESI_RELA', 'R', noop=.true.)
         call c%key('POSTTRAITEMENTS', 'TXM', noop=.true.)
         call c%key('TYPE_RESOL', 'TXM', noop=.true.)
+        call c%key('ACCELERATION', 'TXM', noop=.true.)          ! MUMPS tuning
+        call c%key('LOW_RANK_SEUIL', 'R', noop=.true.)
+        call c%key('MATR_DISTRIBUEE', 'TXM', noop=.true.)
+        call c%key('PRETRAITEMENTS', 'TXM', noop=.true.)
+        call c%key('FILTRAGE_MATRICE', 'R', noop=.true.)
+        call c%key('MIXER_PRECISION', 'TXM', noop=.true.)
         call c%end_fact()
     end subroutine describe_solver
 
