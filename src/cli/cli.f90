@@ -22,7 +22,7 @@ module cli
     use command_registration, only: register_commands
     implicit none
     private
-    public :: run_parasol, print_usage
+    public :: run_parasol, print_usage, bundled_deck_path
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_ERROR = 1, EXIT_NOOK = 2
 
@@ -51,7 +51,7 @@ contains
         call parse_options(args, opts, exit_status, done)
         if (done) return
         if (.not. allocated(opts%deck)) then
-            ! Later: run the bundled deck (BUNDLED_DECK beside the executable).
+            ! Later (SSNL130 issue): opts%deck = bundled_deck_path(), then run it.
             write (output_unit, '(a)') 'parasol ' // parasol_version_string
             call print_usage(output_unit)
             exit_status = EXIT_OK
@@ -221,6 +221,19 @@ contains
             exit_status = EXIT_ERROR
         end if
     end subroutine finish
+
+    !> The bundled deck: BUNDLED_DECK resolved against the folder of the running executable
+    !> (argument 0), e.g. build/parasol -> build/../decks/ssnl130a.comm.
+    function bundled_deck_path() result(path)
+        character(len=:), allocatable :: path
+        character(len=:), allocatable :: exe
+        integer :: length, slash
+        call get_command_argument(0, length=length)
+        allocate (character(len=length) :: exe)
+        call get_command_argument(0, exe)
+        slash = index(exe, '/', back=.true.)
+        path = exe(1:slash) // BUNDLED_DECK
+    end function bundled_deck_path
 
     !> Writes the usage text.
     subroutine print_usage(unit)
