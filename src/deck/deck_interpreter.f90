@@ -655,8 +655,7 @@ contains
             call echo_statement(ctx, cmd%name, line)
             if (h == 0) then
                 call set_error(st, STATUS_NOT_IMPLEMENTED, cmd%name // &
-                    ' is not implemented yet', file=ctx%deck_name, line=line, column=col, &
-                    command=cmd%name)
+                    ' is not implemented yet', file=ctx%deck_name, line=line, column=col)
                 return
             end if
         end if

@@ -37,7 +37,7 @@ contains
     end function formula_parameters
 
     !> Runs the compiled VALE; every NOM_PARA must be bound by the caller.
-    subroutine formula_evaluate(self, binding, values, y, st)
+    recursive subroutine formula_evaluate(self, binding, values, y, st)
         class(formula_function_t), intent(in) :: self
         type(param_binding_t), intent(in) :: binding
         real(dp), intent(in) :: values(:)

@@ -121,7 +121,7 @@ contains
     !> Runs unit 1 of `prog` with parameter values values(slot(k)).
     !>  slot : index in values of each parameter of unit 1 (all > 0, checked by the caller)
     !>  y : out, the result;  st : out, STATUS_MODEL_ERROR located at the failing operation
-    subroutine run_program(prog, slot, values, y, st)
+    recursive subroutine run_program(prog, slot, values, y, st)
         type(program_t), intent(in) :: prog
         integer, intent(in) :: slot(:)
         real(dp), intent(in) :: values(:)
