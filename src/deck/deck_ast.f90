@@ -29,7 +29,8 @@ module deck_ast
         character(len=:), allocatable :: text
         integer(i4) :: line = 0, col = 0
         integer(i4) :: end_line = 0          !< statements: last source line
-        integer(i4), allocatable :: kids(:)
+        integer(i4), allocatable :: kids(:)  !< exactly the children once sealed
+        integer(i4) :: nk = 0                !< children while building
     end type node_t
 
     !> The node pool; node 1..n. `root` is the N_MODULE node of a parsed deck.
@@ -42,6 +43,7 @@ module deck_ast
         procedure :: add_kid => ast_add_kid
         procedure :: nkids => ast_nkids
         procedure :: kid => ast_kid
+        procedure :: seal => ast_seal
     end type ast_t
 
 contains
@@ -70,18 +72,39 @@ contains
         allocate (self%nodes(id)%kids(0))
     end function ast_add
 
-    !> Appends `child` to the children of `parent`.
+    !> Appends `child` to the children of `parent` (amortized: capacity doubles; `seal`
+    !> trims the arrays when the parse is complete).
     subroutine ast_add_kid(self, parent, child)
         class(ast_t), intent(inout) :: self
         integer, intent(in) :: parent, child
-        self%nodes(parent)%kids = [self%nodes(parent)%kids, int(child, i4)]
+        integer(i4), allocatable :: bigger(:)
+        associate (node => self%nodes(parent))
+            if (node%nk == size(node%kids)) then
+                allocate (bigger(max(4, 2 * node%nk)))
+                bigger(1:node%nk) = node%kids(1:node%nk)
+                call move_alloc(bigger, node%kids)
+            end if
+            node%nk = node%nk + 1
+            node%kids(node%nk) = int(child, i4)
+        end associate
     end subroutine ast_add_kid
+
+    !> Trims the children arrays of nodes first..n to their exact size.
+    subroutine ast_seal(self, first)
+        class(ast_t), intent(inout) :: self
+        integer, intent(in) :: first
+        integer :: id
+        do id = max(first, 1), self%n
+            if (size(self%nodes(id)%kids) /= self%nodes(id)%nk) &
+                self%nodes(id)%kids = self%nodes(id)%kids(1:self%nodes(id)%nk)
+        end do
+    end subroutine ast_seal
 
     !> Number of children of node `id`.
     pure integer function ast_nkids(self, id)
         class(ast_t), intent(in) :: self
         integer, intent(in) :: id
-        ast_nkids = size(self%nodes(id)%kids)
+        ast_nkids = self%nodes(id)%nk
     end function ast_nkids
 
     !> The k-th child of node `id`.

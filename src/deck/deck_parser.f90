@@ -35,8 +35,9 @@ contains
         type(ast_t), intent(inout) :: ast
         type(status_t), intent(out) :: st
         type(parser_t) :: p
-        integer :: root
+        integer :: root, first
         p%file = file
+        first = ast%n + 1
         call tokenize(text, file, p%toks, st)
         if (st%failed()) return
         root = ast%add(N_MODULE, file, 1, 1)
@@ -53,6 +54,7 @@ contains
         end do
         ast%root = root
         ast%nodes(root)%end_line = p%toks(size(p%toks))%line
+        call ast%seal(first)
     end subroutine parse_deck
 
     !> Parses one expression held in a string (FORMULE VALE).
@@ -65,8 +67,10 @@ contains
         integer, intent(out) :: expr
         type(status_t), intent(out) :: st
         type(parser_t) :: p
+        integer :: first
         expr = 0
         p%file = file
+        first = ast%n + 1
         call tokenize(text, file, p%toks, st, line0, col0)
         if (st%failed()) return
         ! A VALE string may span lines (triple quotes): line ends and indentation inside it
@@ -83,6 +87,7 @@ contains
         call skip_layout(p)
         if (peek_kind(p) /= TOK_EOF) call fail_at(p, st, 'unexpected "' // &
             peek_text(p) // '" after the end of the expression')
+        call ast%seal(first)
     contains
         subroutine skip_layout(q)
             type(parser_t), intent(inout) :: q
