@@ -65,8 +65,25 @@ contains
             if (k > 1) text = text // ', '
             text = text // self%params(k)%s
         end do
-        text = text // ') = ' // self%source
+        text = text // ') = ' // one_line(self%source)
         if (len(text) > 100) text = text(1:97) // '...'
     end function formula_summary
+
+    !> The text on one line: line ends and runs of blanks become one blank.
+    pure function one_line(text) result(out)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: out
+        integer :: i
+        character :: c
+        out = ''
+        do i = 1, len(text)
+            c = text(i:i)
+            if (c == achar(10) .or. c == achar(13) .or. c == achar(9)) c = ' '
+            if (c == ' ' .and. len(out) > 0) then
+                if (out(len(out):len(out)) == ' ') cycle
+            end if
+            out = out // c
+        end do
+    end function one_line
 
 end module formula_function
