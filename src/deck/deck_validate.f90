@@ -39,7 +39,7 @@ contains
             cmd%file = file; cmd%command = def%name; cmd%scope = ''
             cmd%line = line; cmd%col = col
             allocate (cmd%items(8))
-            call check_scope(def, 0, a, file, line, col, st)
+            call check_scope(def, 0, a, file, st)
             if (st%failed()) return
             do j = 1, size(a%keys)
                 k = find_keyword(def, 0, a%keys(j)%s)
@@ -55,14 +55,16 @@ contains
                 call add_simple(def, k, a, j, file, cmd, st)
                 if (st%failed()) return
             end do
+            call check_required(def, 0, a, file, line, col, st)
+            if (st%failed()) return
             call fill_defaults(def, 0, cmd)
         end associate
     end subroutine validate_command
 
-    !> Unknown and repeated keywords, mandatory keywords, rules of one scope.
-    subroutine check_scope(def, parent, args, file, line, col, st)
+    !> Unknown and repeated keywords of one scope (checked before the values).
+    subroutine check_scope(def, parent, args, file, st)
         type(cmd_def_t), intent(in) :: def
-        integer, intent(in) :: parent, line, col
+        integer, intent(in) :: parent
         type(value_list_t), intent(in) :: args
         character(len=*), intent(in) :: file
         type(status_t), intent(inout) :: st
@@ -86,6 +88,17 @@ contains
                 end if
             end do
         end do
+    end subroutine check_scope
+
+    !> Mandatory keywords and rules of one scope (checked after the values, so a wrong
+    !> value is reported at its keyword first).
+    subroutine check_required(def, parent, args, file, line, col, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent, line, col
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: file
+        type(status_t), intent(inout) :: st
+        integer :: k
         do k = 1, def%nkw
             if (def%kws(k)%parent /= parent .or. .not. def%kws(k)%mandatory) cycle
             if (.not. given(args, def%kws(k)%name)) then
@@ -96,7 +109,7 @@ contains
             end if
         end do
         call check_rules(def, parent, args, file, line, col, st)
-    end subroutine check_scope
+    end subroutine check_required
 
     subroutine check_rules(def, parent, args, file, line, col, st)
         type(cmd_def_t), intent(in) :: def
@@ -186,13 +199,15 @@ contains
                 occ%line = vline(occs(i), line); occ%col = vcol(occs(i), col)
                 allocate (occ%items(8))
                 list = unpack_value(occs(i))
-                call check_scope(def, k, list, file, occ%line, occ%col, st)
+                call check_scope(def, k, list, file, st)
                 if (st%failed()) return
                 do j = 1, size(list%keys)
                     kw = find_keyword(def, k, list%keys(j)%s)
                     call add_simple(def, kw, list, j, file, occ, st)
                     if (st%failed()) return
                 end do
+                call check_required(def, k, list, file, occ%line, occ%col, st)
+                if (st%failed()) return
                 call fill_defaults(def, k, occ)
             end associate
         end do
