@@ -4,7 +4,7 @@
 module bench_formula
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
     use kinds, only: dp
-    use strings, only: to_text
+    use strings, only: string_t, to_text
     use status, only: status_t, format_status
     use run_context, only: run_context_t, init_context
     use deck_interpreter, only: deck_from_text, evaluate_deck
@@ -30,15 +30,17 @@ module bench_formula
 
 contains
 
-    !> Runs the benchmark; `count` evaluations per formula (default DEFAULT_COUNT).
-    subroutine run_formula_bench(count, exit_status)
-        integer, intent(in) :: count
+    !> parasol-bench formula [N]: N evaluations per formula (default DEFAULT_COUNT).
+    !>  args : the command-line arguments (args(1) = 'formula');  exit_status : 0, 1 on error
+    subroutine run_formula_bench(args, exit_status)
+        type(string_t), intent(in) :: args(:)
         integer, intent(out) :: exit_status
         type(run_context_t) :: ctx
         type(status_t) :: st
-        integer :: n
+        integer :: n, ios
         exit_status = 1
-        n = count
+        n = 0
+        if (size(args) >= 2) read (args(2)%s, *, iostat=ios) n
         if (n <= 0) n = DEFAULT_COUNT
         call init_context(ctx, 'bench.comm', '')
         call register_commands(ctx)

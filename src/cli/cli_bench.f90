@@ -3,7 +3,6 @@ module cli_bench
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use strings, only: string_t
     use cli_args, only: get_arguments
-    use bench_formula, only: run_formula_bench
     implicit none
     private
     public :: run_parasol_bench
@@ -23,7 +22,10 @@ contains
             call print_bench_usage(output_unit)
             exit_status = 0
         case ('formula')
-            call run_formula_bench(bench_count(args), exit_status)
+            block
+                use bench_formula, only: run_formula_bench
+                call run_formula_bench(args, exit_status)
+            end block
         case default
             write (error_unit, '(a)') 'parasol-bench: error: unknown benchmark "' // &
                 args(1)%s // '"'
@@ -31,18 +33,9 @@ contains
         end select
     end subroutine run_parasol_bench
 
-    !> Optional evaluation count (second argument), 0 when absent or not a number.
-    integer function bench_count(args)
-        type(string_t), intent(in) :: args(:)
-        integer :: ios
-        bench_count = 0
-        if (size(args) >= 2) read (args(2)%s, *, iostat=ios) bench_count
-    end function bench_count
-
     subroutine print_bench_usage(unit)
         integer, intent(in) :: unit
         write (unit, '(a)') 'usage: parasol-bench KIND [options]', &
-            '  formula [N]   FORMULE evaluations per second (N per formula)', &
             '  (benchmarks are added with the layers they measure)'
     end subroutine print_bench_usage
 end module cli_bench
