@@ -27,7 +27,7 @@ module deck_math
     !> Largest argument of exp (and half-width for sinh/cosh) that does not overflow.
     real(dp), parameter :: EXP_LIMIT = 709.78_dp
 
-    public :: literal_out_of_range, builtin_id, builtin_arity_of, math_message, &
+    public :: builtin_name, literal_out_of_range, builtin_id, builtin_arity_of, math_message, &
         checked_binary, checked_call, &
         checked_pow, same_real
 
@@ -119,6 +119,13 @@ contains
             end if
         end do
     end function builtin_id
+
+    !> Name of built-in `id` (e.g. 'sqrt').
+    pure function builtin_name(id) result(name)
+        integer, intent(in) :: id
+        character(len=:), allocatable :: name
+        name = trim(builtin_names(id))
+    end function builtin_name
 
     pure integer function builtin_arity_of(id)
         integer, intent(in) :: id

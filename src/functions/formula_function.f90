@@ -2,7 +2,7 @@
 !> to bytecode (formula_program) and evaluated through the function_concept API.
 module formula_function
     use kinds, only: dp
-    use strings, only: string_t
+    use strings, only: string_t, to_text
     use status, only: status_t
     use deck_concept, only: concept_display_name
     use function_concept, only: function_concept_t, param_binding_t, missing_parameter
@@ -52,8 +52,15 @@ contains
             end if
         end do
         call run_program(self%prog, binding%slot, values, y, st)
-        if (st%failed()) st%message = 'FORMULE ' // concept_display_name(self) // ': ' // &
-            st%message
+        if (st%failed()) then
+            st%message = 'FORMULE ' // concept_display_name(self) // ': ' // st%message // &
+                         ' (at'
+            do k = 1, size(binding%slot)
+                st%message = st%message // ' ' // self%params(k)%s // ' = ' // &
+                             to_text(values(binding%slot(k)))
+            end do
+            st%message = st%message // ')'
+        end if
     end subroutine formula_evaluate
 
     function formula_summary(self) result(text)

@@ -8,7 +8,7 @@ module formula_program
     use strings, only: string_t, to_text
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use deck_math, only: checked_binary, checked_pow, checked_call, math_message, MATH_OK, &
-        same_real, B_MIN, B_MAX
+        same_real, B_MIN, B_MAX, builtin_name
     use function_concept, only: function_concept_t, param_binding_t
     implicit none
     private
@@ -224,7 +224,7 @@ contains
                 end if
                 call checked_call(prog%units(u)%code(pc + 1), stack(sp - n + 1:sp), n, r, code)
                 if (code /= MATH_OK) then
-                    call fail(code, 'a built-in function'); return
+                    call fail(code, builtin_name(prog%units(u)%code(pc + 1)) // '()'); return
                 end if
                 sp = sp - n + 1
                 stack(sp) = r
