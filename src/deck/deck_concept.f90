@@ -2,6 +2,8 @@
 !> function, result...). Later layers extend `concept_t`; the deck layer only needs the
 !> deck name, the catalog type name (for type checks) and a one-line summary for the .mess.
 module deck_concept
+    use kinds, only: dp
+    use status, only: status_t, set_error, STATUS_DECK_ERROR
     implicit none
     private
 
@@ -12,6 +14,7 @@ module deck_concept
     contains
         procedure(concept_type_name), deferred :: type_name
         procedure :: summary => concept_summary
+        procedure :: call_real => concept_call_real
     end type concept_t
 
     abstract interface
@@ -34,6 +37,20 @@ module deck_concept
     public :: concept_display_name
 
 contains
+
+    !> Calls the concept from the deck with real arguments, `F(1.0)`; concepts that are
+    !> functions override this (the deck layer does not know them). Default: an error.
+    !>  args : in, the arguments;  y : out, the value;  st : out, why it cannot be called
+    recursive subroutine concept_call_real(self, args, y, st)
+        class(concept_t), intent(in) :: self
+        real(dp), intent(in) :: args(:)
+        real(dp), intent(out) :: y
+        type(status_t), intent(out) :: st
+        y = 0.0_dp
+        if (size(args) < 0) return
+        call set_error(st, STATUS_DECK_ERROR, 'a concept of type ' // self%type_name() // &
+                       ' cannot be called')
+    end subroutine concept_call_real
 
     !> One-line description for the .mess; extensions override it with counts etc.
     function concept_summary(self) result(text)

@@ -451,6 +451,8 @@ contains
             call call_builtin(ctx, id, f%s, args, v, st)
         case (VK_DEF)
             call call_def_values(ctx, int(f%i), args, v, st, id, frame)
+        case (VK_CONCEPT)
+            call call_concept(ctx, callee, f, args, v, st)
         case default
             call fail(st, ctx, callee, kind_label(f) // ' cannot be called')
         end select
@@ -564,6 +566,34 @@ contains
         if (st%failed()) return
         v = local%ret
     end subroutine call_def_values
+
+    !> F(x, ...) for a concept: functions evaluate (through concept_t%call_real), others
+    !> refuse. In the check pass a placeholder cannot be evaluated: the result is 0.0.
+    subroutine call_concept(ctx, id, f, args, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: f
+        type(value_t), intent(in) :: args(:)
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(status_t) :: cst
+        real(dp) :: y
+        integer :: k
+        do k = 1, size(args)
+            if (.not. is_number(args(k))) then
+                call fail(st, ctx, id, 'a function takes numbers, got ' // kind_label(args(k)))
+                return
+            end if
+        end do
+        if (.not. associated(f%obj)) then
+            call fail(st, ctx, id, 'this concept cannot be called'); return
+        end if
+        call f%obj%call_real(as_real(args), y, cst)
+        if (cst%failed()) then
+            call fail(st, ctx, id, cst%message); return
+        end if
+        v = real_value(y)
+    end subroutine call_concept
 
     !> Built-in functions on numbers (Python semantics for ints where it matters).
     subroutine call_builtin(ctx, id, name, args, v, st)

@@ -31,6 +31,7 @@ module function_concept
         procedure(function_parameters), deferred :: parameters
         procedure(function_evaluate), deferred :: evaluate
         procedure :: bind => function_bind
+        procedure :: call_real => function_call_real
     end type function_concept_t
 
     abstract interface
@@ -79,6 +80,40 @@ contains
             end do
         end do
     end subroutine function_bind
+
+    !> F(a, b, ...) in the deck: the arguments are the function's parameters, in order.
+    recursive subroutine function_call_real(self, args, y, st)
+        class(function_concept_t), intent(in) :: self
+        real(dp), intent(in) :: args(:)
+        real(dp), intent(out) :: y
+        type(status_t), intent(out) :: st
+        type(param_binding_t) :: probe, binding
+        character(len=64), allocatable :: given(:)
+        integer :: k, n
+        y = 0.0_dp
+        call self%bind([character(len=1) :: ], probe)     ! learns the parameter names
+        n = size(probe%names)
+        if (n > 0 .and. size(args) /= n) then
+            call set_error(st, STATUS_MODEL_ERROR, 'the function takes ' // itoa(n) // &
+                           ' argument(s), got ' // itoa(size(args)))
+            return
+        end if
+        allocate (given(size(args)))
+        do k = 1, size(args)
+            given(k) = ''
+            if (k <= n) given(k) = probe%names(k)%s
+        end do
+        call self%bind(given, binding)
+        call self%evaluate(binding, args, y, st)
+    end subroutine function_call_real
+
+    pure function itoa(k) result(s)
+        integer, intent(in) :: k
+        character(len=:), allocatable :: s
+        character(len=12) :: buf
+        write (buf, '(i0)') k
+        s = trim(buf)
+    end function itoa
 
     !> Sets the "parameter not provided" error for parameter k of a binding.
     subroutine missing_parameter(fname, binding, k, st)
