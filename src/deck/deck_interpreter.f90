@@ -366,7 +366,7 @@ contains
             if (name(1:5) == 'math.') then
                 call fail(st, ctx, id, name // ' is not a known math function (known: ' // &
                     'sqrt exp log log10 sin cos tan asin acos atan atan2 sinh cosh tanh ' // &
-                    'floor ceil fabs pi e)')
+                    'floor ceil, and the constants pi e)')
                 return
             end if
         end if
