@@ -2,16 +2,42 @@
 !> Only this layer decides the exit status:
 !>   0 = ran, every TEST_RESU OK (or none); 2 = ran, some TEST_RESU NOOK;
 !>   1 = stopped on an error (deck, mesh, singular matrix, no convergence).
+!>
+!> Pipeline of a run: read and parse the deck; check pass (every expression evaluated, every
+!> command validated against the catalog, placeholder concepts); run pass (each command
+!> dispatched to its handler). <stem>.mess and <stem>.resu are written atomically in
+!> --outdir. On an error the message goes to stderr and to the .mess, the .mess is committed
+!> (it is the run's story) and the .resu is discarded (an older one is left untouched).
 module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use strings, only: string_t
+    use kinds, only: i4
+    use strings, only: string_t, to_text, starts_with
+    use status, only: status_t, format_status, set_error, STATUS_DECK_ERROR
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
+    use atomic_file, only: open_atomic
+    use run_context, only: run_context_t, init_context
+    use deck_value, only: append_string
+    use deck_interpreter, only: load_deck, evaluate_deck
+    use command_registration, only: register_commands
     implicit none
     private
-    public :: run_parasol, print_usage
+    public :: run_parasol, print_usage, bundled_deck_path
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_ERROR = 1, EXIT_NOOK = 2
+
+    !> The bundled deck run when no DECK is given, relative to the folder of the parasol
+    !> executable (<prefix>/bin/parasol -> <prefix>/decks/ssnl130a.comm). Not used yet: until
+    !> the SSNL130 issue lands, parasol without a deck prints its version and usage.
+    character(len=*), parameter, public :: BUNDLED_DECK = '../decks/ssnl130a.comm'
+
+    !> Parsed command line.
+    type :: options_t
+        character(len=:), allocatable :: deck, outdir
+        logical :: check = .false.
+        integer(i4), allocatable :: units(:)
+        type(string_t), allocatable :: unit_paths(:)
+    end type options_t
 
 contains
 
@@ -19,27 +45,195 @@ contains
     subroutine run_parasol(exit_status)
         integer, intent(out) :: exit_status
         type(string_t), allocatable :: args(:)
-        integer :: i
+        type(options_t) :: opts
+        logical :: done
         call get_arguments(args)
-        exit_status = EXIT_OK
-        do i = 1, size(args)
-            select case (args(i)%s)
+        call parse_options(args, opts, exit_status, done)
+        if (done) return
+        if (.not. allocated(opts%deck)) then
+            ! Later (SSNL130 issue): opts%deck = bundled_deck_path(), then run it.
+            write (output_unit, '(a)') 'parasol ' // parasol_version_string
+            call print_usage(output_unit)
+            exit_status = EXIT_OK
+            return
+        end if
+        call run_deck(opts, exit_status)
+    end subroutine run_parasol
+
+    !> Options: --unit N=PATH, --outdir DIR, --check, --help, --version, then DECK.
+    subroutine parse_options(args, opts, exit_status, done)
+        type(string_t), intent(in) :: args(:)
+        type(options_t), intent(out) :: opts
+        integer, intent(out) :: exit_status
+        logical, intent(out) :: done
+        integer :: i, eq, unit, ios
+        character(len=:), allocatable :: a, value
+        exit_status = EXIT_OK; done = .true.
+        opts%outdir = ''
+        allocate (opts%units(0), opts%unit_paths(0))
+        i = 1
+        do while (i <= size(args))
+            a = args(i)%s
+            select case (a)
             case ('--help', '-h')
-                call print_usage(output_unit)
-                return
+                call print_usage(output_unit); return
             case ('--version')
-                write (output_unit, '(a)') 'parasol ' // parasol_version_string
-                return
+                write (output_unit, '(a)') 'parasol ' // parasol_version_string; return
+            case ('--check')
+                opts%check = .true.
+            case ('--unit', '--outdir')
+                if (i == size(args)) then
+                    call usage_error('option ' // a // ' needs a value'); return
+                end if
+                i = i + 1
+                value = args(i)%s
+                if (a == '--outdir') then
+                    opts%outdir = value
+                else
+                    eq = index(value, '=')
+                    unit = -1
+                    if (eq > 1) read (value(1:eq - 1), *, iostat=ios) unit
+                    if (eq <= 1 .or. ios /= 0 .or. unit < 0 .or. eq == len(value)) then
+                        call usage_error('--unit expects N=PATH (e.g. --unit 20=plate.mail), ' &
+                                         // 'got "' // value // '"'); return
+                    end if
+                    opts%units = [opts%units, int(unit, i4)]
+                    call append_string(opts%unit_paths, value(eq + 1:))
+                end if
+            case default
+                if (starts_with(a, '-') .and. len(a) > 1) then
+                    call usage_error('unknown option ' // a); return
+                end if
+                if (allocated(opts%deck)) then
+                    call usage_error('only one deck can be given (got ' // opts%deck // &
+                                     ' and ' // a // ')'); return
+                end if
+                opts%deck = a
             end select
+            i = i + 1
         end do
-        ! Until decks exist (issue on SSNL130) parasol with no deck prints version and usage.
-        write (output_unit, '(a)') 'parasol ' // parasol_version_string
-        call print_usage(output_unit)
-        if (size(args) > 0) then
-            write (error_unit, '(a)') 'parasol: error: running decks is not implemented yet'
+        done = .false.
+    contains
+        subroutine usage_error(message)
+            character(len=*), intent(in) :: message
+            write (error_unit, '(a)') 'parasol: error: ' // message
+            call print_usage(error_unit)
+            exit_status = EXIT_ERROR
+        end subroutine usage_error
+    end subroutine parse_options
+
+    !> Reads, checks and (unless --check) runs one deck.
+    subroutine run_deck(opts, exit_status)
+        type(options_t), intent(in) :: opts
+        integer, intent(out) :: exit_status
+        type(run_context_t) :: ctx
+        type(status_t) :: st, io
+        integer :: k
+        call init_context(ctx, opts%deck, opts%outdir)
+        do k = 1, size(opts%units)
+            call ctx%bind_unit(opts%units(k), opts%unit_paths(k)%s)
+        end do
+        call register_commands(ctx)
+        if (.not. opts%check) then
+            call open_atomic(ctx%mess, ctx%output_path('.mess'), io)
+            if (io%ok()) call open_atomic(ctx%resu, ctx%output_path('.resu'), io)
+            if (io%failed()) then
+                call ctx%mess%discard()
+                write (error_unit, '(a)') 'parasol: ' // format_status(io)
+                exit_status = EXIT_ERROR
+                return
+            end if
+            call ctx%write_mess('parasol ' // parasol_version_string // ' -- deck ' // &
+                                ctx%deck_path)
+        end if
+        call load_deck(ctx, st)
+        if (st%ok()) call check_pass(ctx, st)
+        if (st%ok() .and. opts%check) then
+            write (output_unit, '(a)') ctx%deck_name // ': deck is valid (' // &
+                to_text(int(ctx%ncommand, i4)) // ' commands checked)'
+            exit_status = EXIT_OK
+            call ctx%reset_symbols()
+            return
+        end if
+        if (st%ok()) call run_pass(ctx, st)
+        call finish(ctx, st, exit_status)
+        call ctx%reset_symbols()
+    end subroutine run_deck
+
+    subroutine check_pass(ctx, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(status_t), intent(inout) :: st
+        ctx%checking = .true.
+        call evaluate_deck(ctx, st)
+        ctx%checking = .false.
+        if (st%failed()) return
+        call ctx%write_mess('check pass: the deck is valid (' // &
+                            to_text(int(ctx%ncommand, i4)) // ' commands)')
+    end subroutine check_pass
+
+    subroutine run_pass(ctx, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(status_t), intent(inout) :: st
+        call ctx%reset_symbols()
+        ctx%ncommand = 0
+        ctx%echoed = 0
+        call evaluate_deck(ctx, st)
+        if (st%ok() .and. .not. ctx%finished) call ctx%write_mess('warning: the deck ' // &
+            'has no FIN(); the listings are closed at its end')
+    end subroutine run_pass
+
+    !> Reports an error (stderr and .mess), writes the verdict, commits or discards files.
+    subroutine finish(ctx, st, exit_status)
+        type(run_context_t), intent(inout) :: ctx
+        type(status_t), intent(in) :: st
+        integer, intent(out) :: exit_status
+        type(status_t) :: io
+        character(len=:), allocatable :: verdict
+        if (st%failed()) then
+            write (error_unit, '(a)') format_status(st)
+            call ctx%write_mess('')
+            call ctx%write_mess(format_status(st))
+            call ctx%write_mess('verdict: STOPPED ON AN ERROR after ' // &
+                to_text(int(ctx%ncommand, i4)) // ' commands; TEST_RESU: ' // &
+                to_text(int(ctx%n_ok, i4)) // ' OK, ' // to_text(int(ctx%n_nook, i4)) // ' NOOK')
+            call ctx%resu%discard()
+            call ctx%mess%commit(io)
+            exit_status = EXIT_ERROR
+            return
+        end if
+        verdict = 'verdict: ' // to_text(int(ctx%n_ok, i4)) // ' OK, ' // &
+            to_text(int(ctx%n_nook, i4)) // ' NOOK'
+        exit_status = EXIT_OK
+        if (ctx%n_nook > 0) then
+            verdict = verdict // ' -- SOME TESTS FAILED'
+            exit_status = EXIT_NOOK
+        end if
+        call ctx%write_mess('')
+        call ctx%write_mess(verdict)
+        call ctx%resu%commit(io)
+        if (io%failed()) then
+            write (error_unit, '(a)') 'parasol: ' // format_status(io)
             exit_status = EXIT_ERROR
         end if
-    end subroutine run_parasol
+        call ctx%mess%commit(io)
+        if (io%failed()) then
+            write (error_unit, '(a)') 'parasol: ' // format_status(io)
+            exit_status = EXIT_ERROR
+        end if
+    end subroutine finish
+
+    !> The bundled deck: BUNDLED_DECK resolved against the folder of the running executable
+    !> (argument 0), e.g. build/parasol -> build/../decks/ssnl130a.comm.
+    function bundled_deck_path() result(path)
+        character(len=:), allocatable :: path
+        character(len=:), allocatable :: exe
+        integer :: length, slash
+        call get_command_argument(0, length=length)
+        allocate (character(len=length) :: exe)
+        call get_command_argument(0, exe)
+        slash = index(exe, '/', back=.true.)
+        path = exe(1:slash) // BUNDLED_DECK
+    end function bundled_deck_path
 
     !> Writes the usage text.
     subroutine print_usage(unit)

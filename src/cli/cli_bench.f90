@@ -23,6 +23,11 @@ contains
             call print_bench_usage(output_unit)
             exit_status = 0
         case ('mesh'); call run_bench_mesh(args(2:), exit_status)
+        case ('formula')
+            block
+                use bench_formula, only: run_formula_bench
+                call run_formula_bench(args, exit_status)
+            end block
         case default
             write (error_unit, '(a)') 'parasol-bench: error: unknown benchmark "' // &
                 args(1)%s // '"'
@@ -34,6 +39,7 @@ contains
         integer, intent(in) :: unit
         write (unit, '(a)') 'usage: parasol-bench KIND [options]', &
             '  mesh FILE      time reading a mesh (.mail or .msh)', &
+            '  formula        FORMULE evaluations per second', &
             '  (benchmarks are added with the layers they measure)'
     end subroutine print_bench_usage
 end module cli_bench

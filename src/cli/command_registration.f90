@@ -1,0 +1,27 @@
+!> The composition root: the one place that knows every layer's command handlers and
+!> registers them with the deck dispatcher (doc/architecture.md). A command of the catalog
+!> without a registered handler stops the run with "COMMAND is not implemented yet".
+module command_registration
+    use run_context, only: run_context_t
+    use session_commands, only: run_debut, run_fin
+    use function_commands, only: run_defi_constante, run_defi_fonction, run_formule, &
+        run_defi_list_reel
+    implicit none
+    private
+    public :: register_commands
+
+contains
+
+    !> Registers every available handler in ctx. Function commands are side-effect free and
+    !> also run in the check pass (at_check), so `parasol --check` reports their errors.
+    subroutine register_commands(ctx)
+        type(run_context_t), intent(inout) :: ctx
+        call ctx%register('DEBUT', run_debut)
+        call ctx%register('FIN', run_fin)
+        call ctx%register('DEFI_CONSTANTE', run_defi_constante, at_check=.true.)
+        call ctx%register('DEFI_FONCTION', run_defi_fonction, at_check=.true.)
+        call ctx%register('FORMULE', run_formule, at_check=.true.)
+        call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
+    end subroutine register_commands
+
+end module command_registration

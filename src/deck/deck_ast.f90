@@ -1,0 +1,117 @@
+!> Abstract syntax tree of a deck: a flat pool of nodes that refer to their children by
+!> index (no pointers, no recursive types). Every node keeps the line and column of the token
+!> that starts it, so every later error can be located in the deck.
+module deck_ast
+    use kinds, only: i4
+    implicit none
+    private
+
+    !> Node kinds. Expressions:
+    integer, parameter, public :: N_INT = 1, N_REAL = 2, N_STR = 3, N_NAME = 4, N_TUPLE = 5, &
+        N_LIST = 6, N_UNARY = 7, N_BINOP = 8, N_COMPARE = 9, N_AND = 10, N_OR = 11, &
+        N_IFEXP = 12, N_CALL = 13, N_KWARG = 14
+    !> Statements:
+    integer, parameter, public :: N_MODULE = 20, N_ASSIGN = 21, N_EXPR = 22, N_DEF = 23, &
+        N_IF = 24, N_RETURN = 25, N_BLOCK = 26, N_PASS = 27
+
+    !> One node. `text` holds the name, operator, literal spelling or string value.
+    !> Children by kind:
+    !>   N_UNARY(op: '-', '+', 'not') [operand];  N_BINOP(op) [left, right]
+    !>   N_COMPARE(ops blank-separated, e.g. '< <=') [operands...]
+    !>   N_AND / N_OR [operands...];  N_IFEXP [value if true, condition, value if false]
+    !>   N_CALL [callee, arguments...] (keyword arguments are N_KWARG(name) [value])
+    !>   N_TUPLE / N_LIST [items...]
+    !>   N_ASSIGN(target) [value];  N_EXPR [value];  N_RETURN [value]
+    !>   N_DEF(name) [N_NAME parameters..., N_BLOCK body];  N_IF [condition, then, else?]
+    !>   N_MODULE / N_BLOCK [statements...]
+    type, public :: node_t
+        integer(i4) :: kind = 0
+        character(len=:), allocatable :: text
+        integer(i4) :: line = 0, col = 0
+        integer(i4) :: end_line = 0          !< statements: last source line
+        integer(i4), allocatable :: kids(:)  !< exactly the children once sealed
+        integer(i4) :: nk = 0                !< children while building
+    end type node_t
+
+    !> The node pool; node 1..n. `root` is the N_MODULE node of a parsed deck.
+    type, public :: ast_t
+        type(node_t), allocatable :: nodes(:)
+        integer(i4) :: n = 0
+        integer(i4) :: root = 0
+    contains
+        procedure :: add => ast_add
+        procedure :: add_kid => ast_add_kid
+        procedure :: nkids => ast_nkids
+        procedure :: kid => ast_kid
+        procedure :: seal => ast_seal
+    end type ast_t
+
+contains
+
+    !> Appends a node and returns its index.
+    !>  kind : N_* kind;  text : name/operator/literal;  line, col : source position
+    function ast_add(self, kind, text, line, col) result(id)
+        class(ast_t), intent(inout) :: self
+        integer, intent(in) :: kind, line, col
+        character(len=*), intent(in) :: text
+        integer :: id
+        type(node_t), allocatable :: bigger(:)
+        if (.not. allocated(self%nodes)) allocate (self%nodes(256))
+        if (self%n == size(self%nodes)) then
+            allocate (bigger(2 * size(self%nodes)))
+            bigger(1:self%n) = self%nodes(1:self%n)
+            call move_alloc(bigger, self%nodes)
+        end if
+        self%n = self%n + 1
+        id = self%n
+        self%nodes(id)%kind = kind
+        self%nodes(id)%text = text
+        self%nodes(id)%line = line
+        self%nodes(id)%col = col
+        self%nodes(id)%end_line = line
+        allocate (self%nodes(id)%kids(0))
+    end function ast_add
+
+    !> Appends `child` to the children of `parent` (amortized: capacity doubles; `seal`
+    !> trims the arrays when the parse is complete).
+    subroutine ast_add_kid(self, parent, child)
+        class(ast_t), intent(inout) :: self
+        integer, intent(in) :: parent, child
+        integer(i4), allocatable :: bigger(:)
+        associate (node => self%nodes(parent))
+            if (node%nk == size(node%kids)) then
+                allocate (bigger(max(4, 2 * node%nk)))
+                bigger(1:node%nk) = node%kids(1:node%nk)
+                call move_alloc(bigger, node%kids)
+            end if
+            node%nk = node%nk + 1
+            node%kids(node%nk) = int(child, i4)
+        end associate
+    end subroutine ast_add_kid
+
+    !> Trims the children arrays of nodes first..n to their exact size.
+    subroutine ast_seal(self, first)
+        class(ast_t), intent(inout) :: self
+        integer, intent(in) :: first
+        integer :: id
+        do id = max(first, 1), self%n
+            if (size(self%nodes(id)%kids) /= self%nodes(id)%nk) &
+                self%nodes(id)%kids = self%nodes(id)%kids(1:self%nodes(id)%nk)
+        end do
+    end subroutine ast_seal
+
+    !> Number of children of node `id`.
+    pure integer function ast_nkids(self, id)
+        class(ast_t), intent(in) :: self
+        integer, intent(in) :: id
+        ast_nkids = self%nodes(id)%nk
+    end function ast_nkids
+
+    !> The k-th child of node `id`.
+    pure integer function ast_kid(self, id, k)
+        class(ast_t), intent(in) :: self
+        integer, intent(in) :: id, k
+        ast_kid = self%nodes(id)%kids(k)
+    end function ast_kid
+
+end module deck_ast

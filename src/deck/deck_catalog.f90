@@ -1,0 +1,226 @@
+!> Types of the command catalog and the small builder used by deck_catalog_data (the one
+!> place where the commands are described, as data, in Code_Aster's manner: keywords, types,
+!> cardinality, defaults, allowed values, mandatory keywords, rules).
+module deck_catalog
+    use strings, only: string_t
+    use deck_value, only: append_string
+    implicit none
+    private
+
+    !> "any number" for a maximum cardinality.
+    integer, parameter, public :: MANY = huge(1)
+    !> Rule kinds between keywords of one scope (Code_Aster's EXCLUS, UN_PARMI, AU_MOINS_UN).
+    integer, parameter, public :: RULE_EXCLUS = 1, RULE_UN_PARMI = 2, RULE_AU_MOINS_UN = 3
+
+    !> One keyword. `types` is a '|'-separated list of: I, R, TXM, a concept type name
+    !> (maillage, modele, ..., with FUNC meaning fonction|formule and RESU meaning
+    !> evol_elas|evol_noli), ANY. Factor keywords have is_factor and own the keywords whose
+    !> `parent` is their index. `default` is the text of the default ('' = none); several
+    !> values are blank-separated. `noop`: accepted for Code_Aster compatibility, no effect.
+    type, public :: kw_def_t
+        character(len=:), allocatable :: name
+        character(len=:), allocatable :: types
+        integer :: min = 1, max = 1
+        logical :: mandatory = .false.
+        logical :: is_factor = .false.
+        logical :: noop = .false.
+        character(len=:), allocatable :: default
+        type(string_t), allocatable :: into(:)
+        integer :: parent = 0
+    end type kw_def_t
+
+    !> A rule between keywords of a scope (parent = 0: the command, else a factor keyword).
+    type, public :: rule_t
+        integer :: kind = RULE_EXCLUS
+        integer :: parent = 0
+        type(string_t), allocatable :: names(:)
+    end type rule_t
+
+    !> One command: name, result concept type ('' = no result), keywords and rules.
+    !> open_keywords: other keywords are accepted as-is (FORMULE binds deck objects so).
+    type, public :: cmd_def_t
+        character(len=:), allocatable :: name
+        character(len=:), allocatable :: result_type
+        logical :: open_keywords = .false.
+        type(kw_def_t), allocatable :: kws(:)
+        type(rule_t), allocatable :: rules(:)
+        integer :: nkw = 0, nrule = 0
+    end type cmd_def_t
+
+    !> The catalog. `factor` is the factor keyword being described while building.
+    type, public :: catalog_t
+        type(cmd_def_t), allocatable :: cmds(:)
+        integer :: ncmd = 0
+        integer, private :: factor = 0
+    contains
+        procedure :: find_command => catalog_find_command
+        procedure :: command => catalog_add_command
+        procedure :: key => catalog_add_keyword
+        procedure :: fact => catalog_add_factor
+        procedure :: end_fact => catalog_end_factor
+        procedure :: rule => catalog_add_rule
+    end type catalog_t
+
+    public :: find_keyword, split_words
+
+contains
+
+    !> Index of command `name`, 0 if unknown.
+    pure integer function catalog_find_command(self, name)
+        class(catalog_t), intent(in) :: self
+        character(len=*), intent(in) :: name
+        integer :: k
+        catalog_find_command = 0
+        do k = 1, self%ncmd
+            if (self%cmds(k)%name == name) then
+                catalog_find_command = k
+                return
+            end if
+        end do
+    end function catalog_find_command
+
+    !> Index in cmd%kws of keyword `name` in scope `parent` (0 = command level), 0 if none.
+    pure integer function find_keyword(cmd, parent, name)
+        type(cmd_def_t), intent(in) :: cmd
+        integer, intent(in) :: parent
+        character(len=*), intent(in) :: name
+        integer :: k
+        find_keyword = 0
+        do k = 1, cmd%nkw
+            if (cmd%kws(k)%parent == parent .and. cmd%kws(k)%name == name) then
+                find_keyword = k
+                return
+            end if
+        end do
+    end function find_keyword
+
+    !> Starts the description of a command.
+    !>  name : command name;  result_type : concept type of its result ('' = none)
+    subroutine catalog_add_command(self, name, result_type, open_keywords)
+        class(catalog_t), intent(inout) :: self
+        character(len=*), intent(in) :: name, result_type
+        logical, intent(in), optional :: open_keywords
+        type(cmd_def_t), allocatable :: bigger(:)
+        if (.not. allocated(self%cmds)) allocate (self%cmds(32))
+        if (self%ncmd == size(self%cmds)) then
+            allocate (bigger(2 * size(self%cmds)))
+            bigger(1:self%ncmd) = self%cmds(1:self%ncmd)
+            call move_alloc(bigger, self%cmds)
+        end if
+        self%ncmd = self%ncmd + 1
+        self%cmds(self%ncmd)%name = name
+        self%cmds(self%ncmd)%result_type = result_type
+        if (present(open_keywords)) self%cmds(self%ncmd)%open_keywords = open_keywords
+        allocate (self%cmds(self%ncmd)%kws(16), self%cmds(self%ncmd)%rules(4))
+        self%factor = 0
+    end subroutine catalog_add_command
+
+    !> Adds a simple keyword to the current scope (the open factor keyword, else the command).
+    !>  types : see kw_def_t;  min, max : cardinality (default 1..1; min 0 is allowed)
+    !>  req : mandatory;  def : default as text;  into : blank-separated allowed values
+    !>  noop : accepted, no effect in parasol
+    subroutine catalog_add_keyword(self, name, types, min, max, req, def, into, noop)
+        class(catalog_t), intent(inout) :: self
+        character(len=*), intent(in) :: name, types
+        integer, intent(in), optional :: min, max
+        logical, intent(in), optional :: req, noop
+        character(len=*), intent(in), optional :: def, into
+        type(kw_def_t) :: kw
+        kw%name = name
+        kw%types = types
+        kw%parent = self%factor
+        if (present(min)) kw%min = min
+        if (present(max)) kw%max = max
+        if (present(req)) kw%mandatory = req
+        if (present(noop)) kw%noop = noop
+        kw%default = ''
+        if (present(def)) kw%default = def
+        if (present(into)) then
+            call split_words(into, kw%into)
+        else
+            allocate (kw%into(0))
+        end if
+        call append_keyword(self%cmds(self%ncmd), kw)
+    end subroutine catalog_add_keyword
+
+    !> Opens a factor keyword; the following keywords belong to it until end_fact.
+    !>  min, max : occurrences (default 1..1);  req : mandatory
+    subroutine catalog_add_factor(self, name, max, req, noop)
+        class(catalog_t), intent(inout) :: self
+        character(len=*), intent(in) :: name
+        integer, intent(in), optional :: max
+        logical, intent(in), optional :: req, noop
+        type(kw_def_t) :: kw
+        kw%name = name
+        kw%types = 'FACT'
+        kw%is_factor = .true.
+        kw%parent = 0
+        kw%default = ''
+        allocate (kw%into(0))
+        if (present(max)) kw%max = max
+        if (present(req)) kw%mandatory = req
+        if (present(noop)) kw%noop = noop
+        call append_keyword(self%cmds(self%ncmd), kw)
+        self%factor = self%cmds(self%ncmd)%nkw
+    end subroutine catalog_add_factor
+
+    !> Closes the open factor keyword.
+    subroutine catalog_end_factor(self)
+        class(catalog_t), intent(inout) :: self
+        self%factor = 0
+    end subroutine catalog_end_factor
+
+    !> Adds a rule over blank-separated keyword names of the current scope.
+    subroutine catalog_add_rule(self, kind, names)
+        class(catalog_t), intent(inout) :: self
+        integer, intent(in) :: kind
+        character(len=*), intent(in) :: names
+        type(rule_t), allocatable :: bigger(:)
+        associate (c => self%cmds(self%ncmd))
+            if (c%nrule == size(c%rules)) then
+                allocate (bigger(2 * size(c%rules)))
+                bigger(1:c%nrule) = c%rules(1:c%nrule)
+                call move_alloc(bigger, c%rules)
+            end if
+            c%nrule = c%nrule + 1
+            c%rules(c%nrule)%kind = kind
+            c%rules(c%nrule)%parent = self%factor
+            call split_words(names, c%rules(c%nrule)%names)
+        end associate
+    end subroutine catalog_add_rule
+
+    subroutine append_keyword(cmd, kw)
+        type(cmd_def_t), intent(inout) :: cmd
+        type(kw_def_t), intent(in) :: kw
+        type(kw_def_t), allocatable :: bigger(:)
+        if (cmd%nkw == size(cmd%kws)) then
+            allocate (bigger(2 * size(cmd%kws)))
+            bigger(1:cmd%nkw) = cmd%kws(1:cmd%nkw)
+            call move_alloc(bigger, cmd%kws)
+        end if
+        cmd%nkw = cmd%nkw + 1
+        cmd%kws(cmd%nkw) = kw
+    end subroutine append_keyword
+
+    !> Splits blank-separated words.
+    pure subroutine split_words(text, words)
+        character(len=*), intent(in) :: text
+        type(string_t), allocatable, intent(out) :: words(:)
+        integer :: i, j, n
+        allocate (words(0))
+        n = len_trim(text); i = 1
+        do while (i <= n)
+            if (text(i:i) == ' ') then
+                i = i + 1; cycle
+            end if
+            j = i
+            do while (j <= n)
+                if (text(j:j) == ' ') exit
+                j = j + 1
+            end do
+            call append_string(words, text(i:j - 1))
+            i = j
+        end do
+    end subroutine split_words
+
+end module deck_catalog

@@ -1,0 +1,1018 @@
+!> The deck evaluator: runs the statements of a parsed deck over the Python subset of
+!> doc/deck-language.md and dispatches each command call to its registered handler.
+!>
+!> A deck is evaluated twice (design.md): the check pass (ctx%checking) evaluates every
+!> expression and validates every command against the catalog, producing placeholder
+!> concepts (or running side-effect-free handlers registered with at_check); the run pass
+!> then evaluates again and runs each command. Integer/real arithmetic follows Python 3 and
+!> every operation is checked before it is done (no FP trap, located errors instead).
+module deck_interpreter
+    use, intrinsic :: iso_fortran_env, only: int64
+    use kinds, only: dp, i4, i8
+    use strings, only: string_t, to_text
+    use status, only: status_t, set_error, add_context, STATUS_DECK_ERROR, &
+        STATUS_NOT_IMPLEMENTED, STATUS_INTERNAL, STATUS_IO_ERROR
+    use deck_lexer, only: check_bytes
+    use deck_ast
+    use deck_parser, only: parse_deck
+    use deck_value
+    use deck_concept, only: concept_t, placeholder_concept_t
+    use deck_command, only: command_t
+    use deck_validate, only: validate_command
+    use deck_math
+    use deck_suggest, only: did_you_mean
+    use run_context, only: run_context_t
+    implicit none
+    private
+
+    !> Deepest chain of def calls (recursion is not part of deck practice).
+    integer, parameter :: MAX_CALL_DEPTH = 50
+    !> Longest string or tuple built by * repetition.
+    integer, parameter :: MAX_REPEAT = 1000000
+
+    !> Local variables of one def call.
+    type, public :: frame_t
+        type(string_t), allocatable :: names(:)
+        type(value_t), allocatable :: values(:)
+        integer :: n = 0
+        integer :: depth = 0
+        logical :: returned = .false.
+        type(value_t) :: ret
+    end type frame_t
+
+    public :: load_deck, deck_from_text, evaluate_deck, eval_expression, call_def_values
+
+contains
+
+    !> Reads the deck file of ctx, checks its bytes, keeps its lines and parses it.
+    !>  st : out, STATUS_IO_ERROR if unreadable; STATUS_DECK_ERROR located for bad content
+    subroutine load_deck(ctx, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: text
+        integer :: unit, ios, length
+        character(len=256) :: msg
+        open (newunit=unit, file=ctx%deck_path, access='stream', form='unformatted', &
+              status='old', action='read', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot open the deck ' // ctx%deck_path // &
+                           ': ' // trim(msg))
+            return
+        end if
+        inquire (unit=unit, size=length)
+        allocate (character(len=max(length, 0)) :: text)
+        if (length > 0) read (unit, iostat=ios) text
+        close (unit)
+        if (ios /= 0) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot read the deck ' // ctx%deck_path)
+            return
+        end if
+        call deck_from_text(ctx, text, st)
+    end subroutine load_deck
+
+    !> Parses deck text into ctx (also used by tests without a file).
+    subroutine deck_from_text(ctx, text, st)
+        type(run_context_t), intent(inout) :: ctx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        call check_bytes(text, ctx%deck_name, st)
+        if (st%failed()) return
+        call split_lines(text, ctx%lines)
+        call parse_deck(text, ctx%deck_name, ctx%ast, st)
+        if (st%failed()) return
+        if (ctx%ast%nkids(ctx%ast%root) == 0) then
+            call set_error(st, STATUS_DECK_ERROR, 'empty deck: no statement to run (a deck ' &
+                // 'starts with DEBUT() and ends with FIN())', file=ctx%deck_name, &
+                line=1, column=1)
+        end if
+    end subroutine deck_from_text
+
+    subroutine split_lines(text, lines)
+        character(len=*), intent(in) :: text
+        type(string_t), allocatable, intent(inout) :: lines(:)
+        integer :: i, start, n, stop_at
+        n = 0
+        do i = 1, len(text)
+            if (text(i:i) == achar(10)) n = n + 1
+        end do
+        if (allocated(lines)) deallocate (lines)
+        allocate (lines(n + 1))
+        start = 1; n = 0
+        do i = 1, len(text) + 1
+            if (i > len(text)) then
+                if (start > len(text)) exit
+            else if (text(i:i) /= achar(10)) then
+                cycle
+            end if
+            n = n + 1
+            stop_at = i - 1
+            if (stop_at >= start) then
+                if (text(stop_at:stop_at) == achar(13)) stop_at = stop_at - 1
+            end if
+            lines(n)%s = text(start:stop_at)
+            start = i + 1
+        end do
+        lines = lines(1:n)
+    end subroutine split_lines
+
+    !> Evaluates every top-level statement of the parsed deck (one pass).
+    !>  st : out, the first error, located
+    subroutine evaluate_deck(ctx, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(status_t), intent(out) :: st
+        integer :: k, stmt
+        do k = 1, ctx%ast%nkids(ctx%ast%root)
+            stmt = ctx%ast%kid(ctx%ast%root, k)
+            if (ctx%finished) then
+                call set_error(st, STATUS_DECK_ERROR, 'statement after FIN (FIN ends the ' // &
+                    'deck; move it before FIN)', file=ctx%deck_name, &
+                    line=ctx%ast%nodes(stmt)%line, column=ctx%ast%nodes(stmt)%col)
+                return
+            end if
+            ctx%statement = stmt
+            call exec_statement(ctx, stmt, st)
+            if (st%failed()) return
+        end do
+    end subroutine evaluate_deck
+
+    ! ---- statements -------------------------------------------------------------------------
+
+    recursive subroutine exec_statement(ctx, id, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        type(value_t) :: v
+        integer :: k
+        type(node_t) :: node
+        node = ctx%ast%nodes(id)       ! a copy: evaluation may grow the AST (FORMULE VALE)
+        block
+            select case (node%kind)
+            case (N_ASSIGN)
+                call eval(ctx, node%kids(1), v, st, frame, target=node%text)
+                if (st%failed()) return
+                call assign(ctx, node%text, v, node%line, frame)
+            case (N_EXPR)
+                call eval(ctx, node%kids(1), v, st, frame)
+            case (N_DEF)
+                v%kind = VK_DEF; v%s = node%text; v%i = id
+                v%line = node%line; v%col = node%col
+                call assign(ctx, node%text, v, node%line, frame)
+            case (N_IF)
+                call eval(ctx, node%kids(1), v, st, frame)
+                if (st%failed()) return
+                if (truth(v)) then
+                    call exec_block(ctx, node%kids(2), st, frame)
+                else if (size(node%kids) > 2) then
+                    call exec_block(ctx, node%kids(3), st, frame)
+                end if
+            case (N_BLOCK)
+                call exec_block(ctx, id, st, frame)
+            case (N_RETURN)
+                if (.not. present(frame)) then
+                    call fail(st, ctx, id, '"return" outside a def'); return
+                end if
+                call eval(ctx, node%kids(1), v, st, frame)
+                if (st%failed()) return
+                frame%ret = v
+                frame%returned = .true.
+            case (N_PASS)
+            case default
+                k = node%kind
+                call fail(st, ctx, id, 'unexpected statement (kind ' // to_text(int(k, i4)) &
+                          // ')')
+            end select
+        end block
+    end subroutine exec_statement
+
+    recursive subroutine exec_block(ctx, block, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: block
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        integer :: k
+        do k = 1, ctx%ast%nkids(block)
+            call exec_statement(ctx, ctx%ast%kid(block, k), st, frame)
+            if (st%failed()) return
+            if (present(frame)) then
+                if (frame%returned) return
+            end if
+        end do
+    end subroutine exec_block
+
+    subroutine assign(ctx, name, v, line, frame)
+        type(run_context_t), intent(inout) :: ctx
+        character(len=*), intent(in) :: name
+        type(value_t), intent(in) :: v
+        integer, intent(in) :: line
+        type(frame_t), intent(inout), optional :: frame
+        integer :: k
+        if (present(frame)) then
+            do k = 1, frame%n
+                if (frame%names(k)%s == name) then
+                    frame%values(k) = v
+                    return
+                end if
+            end do
+            call append_string(frame%names, name)
+            call append_value(frame%values, v)
+            frame%n = frame%n + 1
+        else
+            call ctx%set_symbol(name, v, line)
+        end if
+    end subroutine assign
+
+    ! ---- expressions ------------------------------------------------------------------------
+
+    !> Evaluates expression node `id` of ctx%ast (public entry, e.g. for tests).
+    subroutine eval_expression(ctx, id, v, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(out) :: v
+        type(status_t), intent(out) :: st
+        call eval(ctx, id, v, st)
+    end subroutine eval_expression
+
+    recursive subroutine eval(ctx, id, v, st, frame, target)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        character(len=*), intent(in), optional :: target
+        type(value_t) :: a, b
+        type(value_list_t) :: list
+        integer :: k, nk, ios
+        select case (ctx%ast%nodes(id)%kind)
+        case (N_INT)
+            v%kind = VK_INT
+            read (ctx%ast%nodes(id)%text, *, iostat=ios) v%i
+            if (ios /= 0) call fail(st, ctx, id, 'integer literal too large (at most ' // &
+                'about 9.2E+18; write it as a real)')
+        case (N_REAL)
+            v%kind = VK_REAL
+            ios = 0
+            if (literal_out_of_range(ctx%ast%nodes(id)%text)) ios = 1
+            if (ios == 0) read (ctx%ast%nodes(id)%text, *, iostat=ios) v%r
+            if (ios == 0) then
+                if (abs(v%r) > huge(v%r)) ios = 1
+            end if
+            if (ios /= 0) call fail(st, ctx, id, 'real literal out of range (the largest ' // &
+                                    'real is about 1.8E+308)')
+        case (N_STR)
+            v = str_value(ctx%ast%nodes(id)%text)
+        case (N_NAME)
+            call lookup(ctx, id, v, st, frame)
+        case (N_TUPLE, N_LIST)
+            nk = ctx%ast%nkids(id)
+            allocate (list%items(nk))
+            do k = 1, nk
+                call eval(ctx, ctx%ast%kid(id, k), list%items(k), st, frame)
+                if (st%failed()) return
+            end do
+            v = pack_values(merge(VK_TUPLE, VK_LIST, ctx%ast%nodes(id)%kind == N_TUPLE), list)
+        case (N_UNARY)
+            call eval(ctx, ctx%ast%kid(id, 1), a, st, frame)
+            if (st%failed()) return
+            call unary(ctx, id, a, v, st)
+        case (N_BINOP)
+            call eval(ctx, ctx%ast%kid(id, 1), a, st, frame)
+            if (st%failed()) return
+            call eval(ctx, ctx%ast%kid(id, 2), b, st, frame)
+            if (st%failed()) return
+            call binary(ctx, id, ctx%ast%nodes(id)%text, a, b, v, st)
+        case (N_COMPARE)
+            call compare_chain(ctx, id, v, st, frame)
+        case (N_AND, N_OR)
+            do k = 1, ctx%ast%nkids(id)
+                call eval(ctx, ctx%ast%kid(id, k), v, st, frame)
+                if (st%failed()) return
+                if (truth(v) .eqv. (ctx%ast%nodes(id)%kind == N_OR)) exit
+            end do
+        case (N_IFEXP)
+            call eval(ctx, ctx%ast%kid(id, 2), a, st, frame)
+            if (st%failed()) return
+            if (truth(a)) then
+                call eval(ctx, ctx%ast%kid(id, 1), v, st, frame)
+            else
+                call eval(ctx, ctx%ast%kid(id, 3), v, st, frame)
+            end if
+        case (N_CALL)
+            call eval_call(ctx, id, v, st, frame, target)
+        case default
+            call fail(st, ctx, id, 'unexpected expression')
+        end select
+        if (v%line == 0) then
+            v%line = ctx%ast%nodes(id)%line; v%col = ctx%ast%nodes(id)%col
+        end if
+    end subroutine eval
+
+    !> Name lookup: locals of the def, deck variables, built-ins.
+    subroutine lookup(ctx, id, v, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(in), optional :: frame
+        character(len=:), allocatable :: name
+        integer :: k
+        name = ctx%ast%nodes(id)%text
+        if (present(frame)) then
+            do k = frame%n, 1, -1
+                if (frame%names(k)%s == name) then
+                    v = frame%values(k)
+                    return
+                end if
+            end do
+        end if
+        k = ctx%find_symbol(name)
+        if (k > 0) then
+            v = ctx%symbols(k)%value
+            return
+        end if
+        select case (name)
+        case ('pi', 'math.pi')
+            v = real_value(PI_VALUE); return
+        case ('math.e')
+            v = real_value(E_VALUE); return
+        case ('True')
+            v = bool_value(.true.); return
+        case ('False')
+            v = bool_value(.false.); return
+        case ('None')
+            v%kind = VK_NONE; return
+        end select
+        if (builtin_id(name) > 0) then
+            v%kind = VK_BUILTIN; v%s = name
+            return
+        end if
+        if (ctx%catalog%find_command(name) > 0 .or. name == '_F') then
+            call fail(st, ctx, id, name // ' is a command: call it with (KEYWORD=value, ...)')
+            return
+        end if
+        call undefined_name(ctx, id, name, st)
+    end subroutine lookup
+
+    !> "name 'X' is not defined", or "used before it is assigned" when a later statement
+    !> assigns it, with a suggestion.
+    subroutine undefined_name(ctx, id, name, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: name
+        type(status_t), intent(inout) :: st
+        integer :: k, s
+        type(string_t), allocatable :: known(:)
+        if (len(name) > 5) then
+            if (name(1:5) == 'math.') then
+                call fail(st, ctx, id, name // ' is not a known math function (known: ' // &
+                    'sqrt exp log log10 sin cos tan asin acos atan atan2 sinh cosh tanh ' // &
+                    'floor ceil, and the constants pi e)')
+                return
+            end if
+        end if
+        do k = 1, ctx%ast%nkids(ctx%ast%root)
+            s = ctx%ast%kid(ctx%ast%root, k)
+            if ((ctx%ast%nodes(s)%kind == N_ASSIGN .or. ctx%ast%nodes(s)%kind == N_DEF) .and. &
+                ctx%ast%nodes(s)%text == name .and. s /= ctx%statement) then
+                if (ctx%ast%nodes(s)%line >= ctx%ast%nodes(id)%line) then
+                    call fail(st, ctx, id, 'name ' // name // ' is used before it is ' // &
+                        'assigned (assigned at line ' // to_text(ctx%ast%nodes(s)%line) // &
+                        '; move that statement first)')
+                    return
+                end if
+            end if
+        end do
+        allocate (known(0))
+        do k = 1, ctx%nsymbol
+            call append_string(known, ctx%symbols(k)%name)
+        end do
+        do k = 1, ctx%catalog%ncmd
+            call append_string(known, ctx%catalog%cmds(k)%name)
+        end do
+        call fail(st, ctx, id, 'name ' // name // ' is not defined' // &
+                  did_you_mean(name, known))
+    end subroutine undefined_name
+
+    ! ---- calls ------------------------------------------------------------------------------
+
+    recursive subroutine eval_call(ctx, id, v, st, frame, target)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        character(len=*), intent(in), optional :: target
+        integer :: callee, icmd
+        type(value_t) :: f
+        type(value_t), allocatable :: args(:)
+        type(value_t) :: kwargs
+        character(len=:), allocatable :: name
+        callee = ctx%ast%kid(id, 1)
+        if (ctx%ast%nodes(callee)%kind == N_NAME) then
+            name = ctx%ast%nodes(callee)%text
+            block
+                icmd = ctx%catalog%find_command(name)
+                if (.not. shadowed(ctx, name, frame)) then
+                    if (icmd > 0 .or. name == '_F') then
+                        call eval_arguments(ctx, id, args, kwargs, st, frame)
+                        if (st%failed()) return
+                        if (size(args) > 0) then
+                            call fail(st, ctx, id, name // ' takes keyword arguments only ' &
+                                      // '(KEYWORD=value)')
+                            return
+                        end if
+                        if (icmd > 0) then
+                            call run_command(ctx, icmd, callee, kwargs, v, st, target)
+                        else
+                            v = kwargs
+                            v%kind = VK_FACTOR
+                        end if
+                        return
+                    end if
+                    if (is_command_like(name) .and. ctx%find_symbol(name) == 0 .and. &
+                        builtin_id(name) == 0) then
+                        call fail(st, ctx, callee, 'unknown command ' // name // &
+                                  did_you_mean(name, command_names(ctx)))
+                        return
+                    end if
+                end if
+            end block
+        end if
+        call eval(ctx, callee, f, st, frame)
+        if (st%failed()) return
+        call eval_arguments(ctx, id, args, kwargs, st, frame)
+        if (st%failed()) return
+        if (nitems(kwargs) > 0 .and. f%kind /= VK_NONE) then
+            call fail(st, ctx, id, 'keyword arguments are only for commands and _F')
+            return
+        end if
+        select case (f%kind)
+        case (VK_BUILTIN)
+            call call_builtin(ctx, id, f%s, args, v, st)
+        case (VK_DEF)
+            call call_def_values(ctx, int(f%i), args, v, st, id, frame)
+        case (VK_CONCEPT)
+            call call_concept(ctx, callee, f, args, v, st)
+        case default
+            call fail(st, ctx, callee, kind_label(f) // ' cannot be called')
+        end select
+    end subroutine eval_call
+
+    logical function shadowed(ctx, name, frame)
+        type(run_context_t), intent(in) :: ctx
+        character(len=*), intent(in) :: name
+        type(frame_t), intent(in), optional :: frame
+        integer :: k
+        shadowed = ctx%find_symbol(name) > 0
+        if (present(frame)) then
+            do k = 1, frame%n
+                if (frame%names(k)%s == name) shadowed = .true.
+            end do
+        end if
+    end function shadowed
+
+    !> Upper-case names with an underscore or of 4+ letters look like command names.
+    pure logical function is_command_like(name)
+        character(len=*), intent(in) :: name
+        integer :: i
+        is_command_like = len(name) >= 4
+        do i = 1, len(name)
+            if (index('ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789', name(i:i)) == 0) &
+                is_command_like = .false.
+        end do
+    end function is_command_like
+
+    function command_names(ctx) result(names)
+        type(run_context_t), intent(in) :: ctx
+        type(string_t), allocatable :: names(:)
+        integer :: k
+        allocate (names(ctx%catalog%ncmd))
+        do k = 1, ctx%catalog%ncmd
+            names(k)%s = ctx%catalog%cmds(k)%name
+        end do
+    end function command_names
+
+    !> Positional arguments, and keyword arguments as a VK_FACTOR value (located at the
+    !> callee name).
+    recursive subroutine eval_arguments(ctx, id, args, kwargs, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), allocatable, intent(out) :: args(:)
+        type(value_t), intent(out) :: kwargs
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        type(value_list_t) :: kw
+        integer :: k, a, nkw, npos
+        npos = 0; nkw = 0
+        do k = 2, ctx%ast%nkids(id)
+            if (ctx%ast%nodes(ctx%ast%kid(id, k))%kind == N_KWARG) then
+                nkw = nkw + 1
+            else
+                npos = npos + 1
+            end if
+        end do
+        allocate (args(npos), kw%items(nkw), kw%keys(nkw), kw%key_line(nkw), kw%key_col(nkw))
+        npos = 0; nkw = 0
+        do k = 2, ctx%ast%nkids(id)
+            a = ctx%ast%kid(id, k)
+            if (ctx%ast%nodes(a)%kind == N_KWARG) then
+                nkw = nkw + 1
+                kw%keys(nkw)%s = ctx%ast%nodes(a)%text
+                kw%key_line(nkw) = ctx%ast%nodes(a)%line
+                kw%key_col(nkw) = ctx%ast%nodes(a)%col
+                call eval(ctx, ctx%ast%kid(a, 1), kw%items(nkw), st, frame)
+            else
+                npos = npos + 1
+                call eval(ctx, a, args(npos), st, frame)
+            end if
+            if (st%failed()) return
+        end do
+        kwargs = pack_values(VK_FACTOR, kw)
+        kwargs%line = ctx%ast%nodes(ctx%ast%kid(id, 1))%line
+        kwargs%col = ctx%ast%nodes(ctx%ast%kid(id, 1))%col
+    end subroutine eval_arguments
+
+    !> Calls def function `def_node` with positional values `args`.
+    !>  call_id : AST node of the call (for messages);  frame : the caller's frame (depth)
+    recursive subroutine call_def_values(ctx, def_node, args, v, st, call_id, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: def_node, call_id
+        type(value_t), intent(in) :: args(:)
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(in), optional :: frame
+        type(frame_t) :: local
+        integer :: np, k
+        np = ctx%ast%nkids(def_node) - 1
+        if (size(args) /= np) then
+            call fail(st, ctx, call_id, ctx%ast%nodes(def_node)%text // '() takes ' // &
+                to_text(int(np, i4)) // ' argument(s), got ' // to_text(int(size(args), i4)))
+            return
+        end if
+        local%depth = 1
+        if (present(frame)) local%depth = frame%depth + 1
+        if (local%depth > MAX_CALL_DEPTH) then
+            call fail(st, ctx, call_id, 'def calls nested deeper than ' // &
+                      to_text(int(MAX_CALL_DEPTH, i4)) // ' (recursion is not supported)')
+            return
+        end if
+        allocate (local%names(np), local%values(np))
+        do k = 1, np
+            local%names(k)%s = ctx%ast%nodes(ctx%ast%kid(def_node, k))%text
+            local%values(k) = args(k)
+        end do
+        local%n = np
+        call exec_block(ctx, ctx%ast%kid(def_node, np + 1), st, local)
+        if (st%failed()) return
+        v = local%ret
+    end subroutine call_def_values
+
+    !> F(x, ...) for a concept: functions evaluate (through concept_t%call_real), others
+    !> refuse. In the check pass a placeholder cannot be evaluated: the result is 0.0.
+    subroutine call_concept(ctx, id, f, args, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: f
+        type(value_t), intent(in) :: args(:)
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(status_t) :: cst
+        real(dp) :: y
+        integer :: k
+        do k = 1, size(args)
+            if (.not. is_number(args(k))) then
+                call fail(st, ctx, id, 'a function takes numbers, got ' // kind_label(args(k)))
+                return
+            end if
+        end do
+        if (.not. associated(f%obj)) then
+            call fail(st, ctx, id, 'this concept cannot be called'); return
+        end if
+        call f%obj%call_real(as_real(args), y, cst)
+        if (cst%failed()) then
+            call fail(st, ctx, id, cst%message); return
+        end if
+        v = real_value(y)
+    end subroutine call_concept
+
+    !> Built-in functions on numbers (Python semantics for ints where it matters).
+    subroutine call_builtin(ctx, id, name, args, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: name
+        type(value_t), intent(in) :: args(:)
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(value_t), allocatable :: xs(:)
+        type(value_list_t) :: list
+        real(dp), allocatable :: x(:)
+        real(dp) :: r
+        integer :: b, code, k
+        logical :: all_int
+        b = builtin_id(name)
+        xs = args
+        if ((b == B_MIN .or. b == B_MAX) .and. size(args) == 1) then
+            if (args(1)%kind == VK_TUPLE .or. args(1)%kind == VK_LIST) then
+                list = unpack_value(args(1))
+                xs = list%items
+            end if
+        end if
+        if (builtin_arity_of(b) > 0 .and. size(xs) /= builtin_arity_of(b)) then
+            call fail(st, ctx, id, name // '() takes ' // to_text(int(builtin_arity_of(b), &
+                i4)) // ' argument(s), got ' // to_text(int(size(xs), i4)))
+            return
+        end if
+        if (size(xs) == 0) then
+            call fail(st, ctx, id, name // '() needs at least one argument'); return
+        end if
+        all_int = .true.
+        do k = 1, size(xs)
+            if (.not. is_number(xs(k))) then
+                call fail(st, ctx, id, name // '() expects numbers, got ' // &
+                          kind_label(xs(k))); return
+            end if
+            if (xs(k)%kind == VK_REAL) all_int = .false.
+        end do
+        x = as_real(xs)
+        call checked_call(b, x, size(x), r, code)
+        if (code /= MATH_OK) then
+            call fail(st, ctx, id, math_message(code, name // '()')); return
+        end if
+        select case (b)
+        case (B_ABS, B_MIN, B_MAX)
+            if (all_int) then
+                v = int_value(nint(r, i8))
+            else
+                v = real_value(r)
+            end if
+        case (B_INT, B_FLOOR, B_CEIL)
+            if (abs(r) >= 9.2e18_dp) then
+                call fail(st, ctx, id, name // '() result out of the integer range'); return
+            end if
+            v = int_value(int(r, i8))
+        case default
+            v = real_value(r)
+        end select
+    end subroutine call_builtin
+
+    ! ---- commands ---------------------------------------------------------------------------
+
+    !> Validates and runs (or, in the check pass, stands in for) catalog command icmd.
+    recursive subroutine run_command(ctx, icmd, name_node, kwargs, v, st, target)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: icmd, name_node
+        type(value_t), intent(in) :: kwargs
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        character(len=*), intent(in), optional :: target
+        type(command_t) :: cmd
+        class(concept_t), allocatable :: result
+        class(concept_t), pointer :: ptr
+        integer :: h, line, col
+        logical :: run_it
+        line = ctx%ast%nodes(name_node)%line; col = ctx%ast%nodes(name_node)%col
+        if (ctx%finished) then
+            call fail(st, ctx, name_node, 'command ' // ctx%catalog%cmds(icmd)%name // &
+                      ' after FIN (FIN ends the deck)'); return
+        end if
+        call validate_command(ctx%catalog, icmd, kwargs, ctx%deck_name, line, col, cmd, st)
+        if (st%failed()) return
+        cmd%source = statement_source(ctx)
+        h = ctx%find_handler(cmd%name)
+        run_it = h > 0
+        if (ctx%checking .and. h > 0) run_it = ctx%handlers(h)%at_check
+        if (.not. ctx%checking) then
+            call echo_statement(ctx, cmd%name, line)
+            if (h == 0) then
+                call set_error(st, STATUS_NOT_IMPLEMENTED, cmd%name // &
+                    ' is not implemented yet', file=ctx%deck_name, line=line, column=col)
+                return
+            end if
+        end if
+        if (run_it) then
+            block
+                type(status_t) :: hst
+                call ctx%handlers(h)%run(ctx, cmd, result, hst)
+                if (hst%failed()) then
+                    call add_context(hst, file=ctx%deck_name, line=line, column=col, &
+                                     command=cmd%name)
+                    st = hst
+                    return
+                end if
+            end block
+        else if (len(cmd%result_type) > 0) then
+            allocate (placeholder_concept_t :: result)
+            select type (result)
+            type is (placeholder_concept_t)
+                result%kind_name = cmd%result_type
+            end select
+        end if
+        ctx%ncommand = ctx%ncommand + 1
+        if (cmd%name == 'FIN') ctx%finished = .true.
+        if (.not. allocated(result)) then
+            if (len(cmd%result_type) > 0) call set_error(st, STATUS_INTERNAL, cmd%name // &
+                ' produced no result', file=ctx%deck_name, line=line, column=col)
+            return
+        end if
+        result%name = ''
+        if (present(target)) result%name = target
+        call ctx%own_concept(result, ptr, st)
+        if (st%failed()) return
+        v%kind = VK_CONCEPT
+        v%obj => ptr
+        v%s = ptr%type_name()
+        v%line = line; v%col = col
+        call ctx%write_mess('    -> ' // ptr%summary())
+    end subroutine run_command
+
+    !> Writes the statement being evaluated to the .mess once, with its line numbers.
+    subroutine echo_statement(ctx, name, line)
+        type(run_context_t), intent(inout) :: ctx
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: line
+        integer :: l, first, last
+        character(len=8) :: buf
+        if (ctx%echoed == ctx%statement) then
+            call ctx%write_mess('  -- ' // name // ' (line ' // to_text(int(line, i4)) // ')')
+            return
+        end if
+        ctx%echoed = ctx%statement
+        first = ctx%ast%nodes(ctx%statement)%line
+        last = max(first, ctx%ast%nodes(ctx%statement)%end_line)
+        call ctx%write_mess('')
+        call ctx%write_mess('# ---- ' // name // ' (line ' // to_text(int(line, i4)) // ')')
+        do l = first, min(last, size(ctx%lines))
+            write (buf, '(i6)') l
+            call ctx%write_mess(buf(1:6) // ' | ' // ctx%lines(l)%s)
+        end do
+    end subroutine echo_statement
+
+    function statement_source(ctx) result(text)
+        type(run_context_t), intent(in) :: ctx
+        character(len=:), allocatable :: text
+        integer :: l
+        text = ''
+        if (ctx%statement == 0) return
+        do l = ctx%ast%nodes(ctx%statement)%line, &
+               min(ctx%ast%nodes(ctx%statement)%end_line, size(ctx%lines))
+            if (len(text) > 0) text = text // achar(10)
+            text = text // ctx%lines(l)%s
+        end do
+    end function statement_source
+
+    ! ---- operators --------------------------------------------------------------------------
+
+    subroutine unary(ctx, id, a, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: a
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        select case (ctx%ast%nodes(id)%text)
+        case ('not')
+            v = bool_value(.not. truth(a))
+        case ('-', '+')
+            if (.not. is_number(a)) then
+                call fail(st, ctx, id, 'unary ' // ctx%ast%nodes(id)%text // &
+                          ' needs a number, got ' // kind_label(a)); return
+            end if
+            if (a%kind == VK_REAL) then
+                v = real_value(a%r)
+                if (ctx%ast%nodes(id)%text == '-') v%r = -a%r
+            else
+                v = int_value(a%i)
+                if (ctx%ast%nodes(id)%text == '-') v%i = -a%i
+            end if
+        end select
+    end subroutine unary
+
+    subroutine binary(ctx, id, op, a, b, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: op
+        type(value_t), intent(in) :: a, b
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        real(dp) :: r
+        integer :: code
+        type(value_list_t) :: la, lb
+        if (is_number(a) .and. is_number(b)) then
+            if (a%kind /= VK_REAL .and. b%kind /= VK_REAL .and. op /= '/') then
+                call int_binary(ctx, id, op, a%i, b%i, v, st)
+                return
+            end if
+            if (op == '**') then
+                call checked_pow(as_real(a), as_real(b), r, code)
+            else
+                call checked_binary(op, as_real(a), as_real(b), r, code)
+            end if
+            if (code /= MATH_OK) then
+                call fail(st, ctx, id, math_message(code, value_text(a) // ' ' // op // ' ' &
+                          // value_text(b))); return
+            end if
+            v = real_value(r)
+            return
+        end if
+        if (op == '+' .and. a%kind == VK_STR .and. b%kind == VK_STR) then
+            v = str_value(a%s // b%s); return
+        end if
+        if (op == '+' .and. (a%kind == VK_TUPLE .or. a%kind == VK_LIST) .and. &
+            b%kind == a%kind) then
+            la = unpack_value(a); lb = unpack_value(b)
+            call append_values(la%items, lb%items)
+            v = sequence_value(a%kind, la%items)
+            return
+        end if
+        if (op == '*' .and. (a%kind == VK_STR .or. a%kind == VK_TUPLE .or. &
+            a%kind == VK_LIST) .and. b%kind == VK_INT) then
+            call repeat_value(ctx, id, a, b%i, v, st); return
+        end if
+        call fail(st, ctx, id, 'unsupported operand types for ' // op // ': ' // &
+                  kind_label(a) // ' and ' // kind_label(b))
+    end subroutine binary
+
+    subroutine repeat_value(ctx, id, a, n, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: a
+        integer(i8), intent(in) :: n
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        integer :: k, length
+        type(value_list_t) :: la
+        type(value_t), allocatable :: all(:)
+        if (a%kind == VK_STR) then
+            length = len(a%s)
+        else
+            length = nitems(a)
+        end if
+        if (n > 0 .and. real(length, dp) * real(n, dp) > real(MAX_REPEAT, dp)) then
+            call fail(st, ctx, id, 'repetition too long (more than 1000000 elements)'); return
+        end if
+        if (a%kind == VK_STR) then
+            v = str_value(repeat(a%s, int(max(n, 0_i8))))
+        else
+            la = unpack_value(a)
+            allocate (all(0))
+            do k = 1, int(n)
+                call append_values(all, la%items)
+            end do
+            v = sequence_value(a%kind, all)
+        end if
+    end subroutine repeat_value
+
+    !> Integer arithmetic with Python's floor division/modulo; overflow is an error.
+    subroutine int_binary(ctx, id, op, a, b, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: op
+        integer(i8), intent(in) :: a, b
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        integer(i8) :: r, q
+        integer :: k, code
+        real(dp) :: x
+        real(dp), parameter :: LIMIT = 9.2e18_dp
+        select case (op)
+        case ('+', '-', '*')
+            if (op == '+') x = real(a, dp) + real(b, dp)
+            if (op == '-') x = real(a, dp) - real(b, dp)
+            if (op == '*') x = real(a, dp) * real(b, dp)
+            if (abs(x) > LIMIT) then
+                call fail(st, ctx, id, 'integer overflow in ' // to_text(a) // ' ' // op // &
+                          ' ' // to_text(b) // ' (use reals, e.g. 1.0E+20)'); return
+            end if
+            if (op == '+') r = a + b
+            if (op == '-') r = a - b
+            if (op == '*') r = a * b
+            v = int_value(r)
+        case ('//', '%')
+            if (b == 0) then
+                call fail(st, ctx, id, 'integer division by zero in ' // to_text(a) // ' ' // &
+                          op // ' 0'); return
+            end if
+            q = a / b
+            if (mod(a, b) /= 0 .and. ((a < 0) .neqv. (b < 0))) q = q - 1
+            if (op == '//') then
+                v = int_value(q)
+            else
+                v = int_value(a - q * b)
+            end if
+        case ('**')
+            if (b < 0) then
+                call checked_pow(real(a, dp), real(b, dp), x, code)
+                if (code /= MATH_OK) then
+                    call fail(st, ctx, id, math_message(code, to_text(a) // ' ** ' // &
+                              to_text(b))); return
+                end if
+                v = real_value(x); return
+            end if
+            r = 1
+            do k = 1, int(min(b, 64_i8))
+                if (abs(real(r, dp) * real(a, dp)) > LIMIT) then
+                    call fail(st, ctx, id, 'integer overflow in ' // to_text(a) // ' ** ' // &
+                              to_text(b) // ' (use reals)'); return
+                end if
+                r = r * a
+            end do
+            if (b > 64 .and. abs(a) > 1) then
+                call fail(st, ctx, id, 'integer overflow in ' // to_text(a) // ' ** ' // &
+                          to_text(b) // ' (use reals)'); return
+            end if
+            if (b > 64 .and. a == -1 .and. mod(b, 2_i8) == 1) r = -1
+            v = int_value(r)
+        case default
+            call fail(st, ctx, id, 'unsupported operator ' // op)
+        end select
+    end subroutine int_binary
+
+    recursive subroutine compare_chain(ctx, id, v, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        type(value_t) :: a, b
+        type(string_t), allocatable :: ops(:)
+        integer :: k, i, j
+        character(len=:), allocatable :: text
+        text = ctx%ast%nodes(id)%text
+        allocate (ops(0))
+        i = 1
+        do while (i <= len(text))
+            j = index(text(i:) // ' ', ' ') + i - 1
+            call append_string(ops, text(i:j - 1))
+            i = j + 1
+        end do
+        call eval(ctx, ctx%ast%kid(id, 1), a, st, frame)
+        if (st%failed()) return
+        v = bool_value(.true.)
+        do k = 1, size(ops)
+            call eval(ctx, ctx%ast%kid(id, k + 1), b, st, frame)
+            if (st%failed()) return
+            if (.not. compare(ctx, id, ops(k)%s, a, b, st)) then
+                v = bool_value(.false.)
+                return
+            end if
+            if (st%failed()) return
+            a = b
+        end do
+    end subroutine compare_chain
+
+    logical function compare(ctx, id, op, a, b, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: op
+        type(value_t), intent(in) :: a, b
+        type(status_t), intent(inout) :: st
+        integer :: c
+        compare = .false.
+        if (is_number(a) .and. is_number(b)) then
+            if (as_real(a) < as_real(b)) then
+                c = -1
+            else if (as_real(a) > as_real(b)) then
+                c = 1
+            else
+                c = 0
+            end if
+        else if (a%kind == VK_STR .and. b%kind == VK_STR) then
+            c = 0
+            if (llt(a%s, b%s)) c = -1
+            if (lgt(a%s, b%s)) c = 1
+        else if (op == '==' .or. op == '!=') then
+            c = 1
+            if (a%kind == b%kind .and. a%kind == VK_CONCEPT) then
+                if (associated(a%obj, b%obj)) c = 0
+            end if
+            if (a%kind == VK_NONE .and. b%kind == VK_NONE) c = 0
+        else
+            call fail(st, ctx, id, 'cannot order ' // kind_label(a) // ' and ' // &
+                      kind_label(b)); return
+        end if
+        select case (op)
+        case ('<')
+            compare = c < 0
+        case ('<=')
+            compare = c <= 0
+        case ('>')
+            compare = c > 0
+        case ('>=')
+            compare = c >= 0
+        case ('==')
+            compare = c == 0
+        case ('!=')
+            compare = c /= 0
+        end select
+    end function compare
+
+    subroutine fail(st, ctx, id, message)
+        type(status_t), intent(inout) :: st
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: message
+        if (st%failed()) return
+        call set_error(st, STATUS_DECK_ERROR, message, file=ctx%deck_name, &
+                       line=ctx%ast%nodes(id)%line, column=ctx%ast%nodes(id)%col)
+    end subroutine fail
+
+end module deck_interpreter

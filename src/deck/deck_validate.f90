@@ -1,0 +1,552 @@
+!> Validation of one command call against its catalog entry (deck_catalog_data): unknown
+!> keywords (with "did you mean"), types, cardinality, allowed values, mandatory keywords,
+!> exclusive/one-of rules, then defaults. Produces the command_t handlers receive.
+module deck_validate
+    use kinds, only: dp, i8
+    use strings, only: string_t, to_text
+    use status, only: status_t, set_error, STATUS_DECK_ERROR
+    use deck_value
+    use deck_catalog, only: catalog_t, cmd_def_t, kw_def_t, find_keyword, split_words, MANY, &
+        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+    use deck_command, only: command_t, keyword_set_t, kw_value_t, factor_value_t
+    use deck_suggest, only: did_you_mean
+    implicit none
+    private
+    public :: validate_command, type_accepts, default_value
+
+contains
+
+    !> Validates the keyword arguments of a call to catalog command `icmd`.
+    !>  cat : the catalog;  icmd : index of the command in it
+    !>  args : VK_FACTOR value holding the keyword arguments and their locations
+    !>  file, line, col : where the command name is written
+    !>  cmd : out, the validated command, defaults filled
+    !>  st : out, STATUS_DECK_ERROR located at the offending keyword or value
+    subroutine validate_command(cat, icmd, args, file, line, col, cmd, st)
+        type(catalog_t), intent(in) :: cat
+        integer, intent(in) :: icmd, line, col
+        type(value_t), intent(in) :: args
+        character(len=*), intent(in) :: file
+        type(command_t), intent(out) :: cmd
+        type(status_t), intent(out) :: st
+        integer :: j, k
+        type(factor_value_t) :: factor
+        type(value_list_t) :: a
+        a = unpack_value(args)
+        associate (def => cat%cmds(icmd))
+            cmd%name = def%name
+            cmd%result_type = def%result_type
+            cmd%file = file; cmd%command = def%name; cmd%scope = ''
+            cmd%line = line; cmd%col = col
+            allocate (cmd%items(8))
+            call check_scope(def, 0, a, file, st)
+            if (st%failed()) return
+            do j = 1, size(a%keys)
+                k = find_keyword(def, 0, a%keys(j)%s)
+                if (k > 0) then
+                    if (def%kws(k)%is_factor) then
+                        call build_factor(def, k, a%items(j), file, a%key_line(j), &
+                                          a%key_col(j), factor, st)
+                        if (st%failed()) return
+                        call cmd%add_factor(factor)
+                        cycle
+                    end if
+                end if
+                call add_simple(def, k, a, j, file, cmd, st)
+                if (st%failed()) return
+            end do
+            call check_required(def, 0, a, file, line, col, st)
+            if (st%failed()) return
+            call fill_defaults(def, 0, cmd)
+        end associate
+    end subroutine validate_command
+
+    !> Unknown and repeated keywords of one scope (checked before the values).
+    subroutine check_scope(def, parent, args, file, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: file
+        type(status_t), intent(inout) :: st
+        integer :: j, i, k
+        do j = 1, size(args%keys)
+            k = find_keyword(def, parent, args%keys(j)%s)
+            if (k == 0 .and. .not. (def%open_keywords .and. parent == 0)) then
+                call set_error(st, STATUS_DECK_ERROR, 'unknown keyword ' // args%keys(j)%s // &
+                    did_you_mean(args%keys(j)%s, scope_names(def, parent)) // &
+                    ' (valid here: ' // join(scope_names(def, parent)) // ')', file=file, &
+                    line=args%key_line(j), column=args%key_col(j), command=def%name, &
+                    keyword=path(def, parent, args%keys(j)%s))
+                return
+            end if
+            do i = 1, j - 1
+                if (args%keys(i)%s == args%keys(j)%s) then
+                    call set_error(st, STATUS_DECK_ERROR, 'keyword given twice', file=file, &
+                        line=args%key_line(j), column=args%key_col(j), command=def%name, &
+                        keyword=path(def, parent, args%keys(j)%s))
+                    return
+                end if
+            end do
+        end do
+    end subroutine check_scope
+
+    !> Mandatory keywords and rules of one scope (checked after the values, so a wrong
+    !> value is reported at its keyword first).
+    subroutine check_required(def, parent, args, file, line, col, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent, line, col
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: file
+        type(status_t), intent(inout) :: st
+        integer :: k
+        do k = 1, def%nkw
+            if (def%kws(k)%parent /= parent .or. .not. def%kws(k)%mandatory) cycle
+            if (.not. given(args, def%kws(k)%name)) then
+                call set_error(st, STATUS_DECK_ERROR, 'missing mandatory keyword ' // &
+                    def%kws(k)%name, file=file, line=line, column=col, command=def%name, &
+                    keyword=path(def, parent, def%kws(k)%name))
+                return
+            end if
+        end do
+        call check_rules(def, parent, args, file, line, col, st)
+    end subroutine check_required
+
+    subroutine check_rules(def, parent, args, file, line, col, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent, line, col
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: file
+        type(status_t), intent(inout) :: st
+        integer :: r, i, count, last
+        character(len=:), allocatable :: names, what
+        do r = 1, def%nrule
+            if (def%rules(r)%parent /= parent) cycle
+            count = 0; last = 0; names = ''
+            do i = 1, size(def%rules(r)%names)
+                if (i > 1) names = names // ' | '
+                names = names // def%rules(r)%names(i)%s
+                if (given(args, def%rules(r)%names(i)%s)) then
+                    count = count + 1
+                    if (count == 2) last = i
+                end if
+            end do
+            what = ''
+            select case (def%rules(r)%kind)
+            case (RULE_EXCLUS)
+                if (count > 1) what = 'keywords ' // names // ' exclude each other (give ' // &
+                    'only one)'
+            case (RULE_UN_PARMI)
+                if (count > 1) what = 'give exactly one of ' // names // ', not several'
+                if (count == 0) what = 'missing keyword: give exactly one of ' // names
+            case (RULE_AU_MOINS_UN)
+                if (count == 0) what = 'missing keyword: give at least one of ' // names
+            end select
+            if (len(what) == 0) cycle
+            if (last > 0) then
+                call set_error(st, STATUS_DECK_ERROR, what, file=file, &
+                    line=key_line(args, def%rules(r)%names(last)%s), &
+                    column=key_col(args, def%rules(r)%names(last)%s), command=def%name, &
+                    keyword=path(def, parent, def%rules(r)%names(last)%s))
+            else
+                call set_error(st, STATUS_DECK_ERROR, what, file=file, line=line, column=col, &
+                               command=def%name, keyword=scope_path(def, parent))
+            end if
+            return
+        end do
+    end subroutine check_rules
+
+    !> Occurrences of factor keyword k: a _F, or a tuple/list of _F.
+    subroutine build_factor(def, k, v, file, line, col, factor, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: k, line, col
+        type(value_t), intent(in) :: v
+        character(len=*), intent(in) :: file
+        type(factor_value_t), intent(out) :: factor
+        type(status_t), intent(inout) :: st
+        type(value_t), allocatable :: occs(:)
+        type(value_list_t) :: list
+        integer :: i, j, kw
+        factor%name = def%kws(k)%name
+        factor%line = line; factor%col = col
+        if (v%kind == VK_FACTOR) then
+            allocate (occs(1))
+            occs(1) = v
+        else if (v%kind == VK_TUPLE .or. v%kind == VK_LIST) then
+            list = unpack_value(v)
+            occs = list%items
+        else
+            call set_error(st, STATUS_DECK_ERROR, 'expected _F(...) (a factor keyword), got ' &
+                // kind_label(v), file=file, line=vline(v, line), column=vcol(v, col), &
+                command=def%name, keyword=def%kws(k)%name)
+            return
+        end if
+        if (size(occs) > def%kws(k)%max .or. size(occs) == 0) then
+            call set_error(st, STATUS_DECK_ERROR, 'expected ' // count_text(1, &
+                def%kws(k)%max) // ' occurrence(s) of _F(...), got ' // to_text(size(occs)), &
+                file=file, line=line, column=col, command=def%name, keyword=def%kws(k)%name)
+            return
+        end if
+        allocate (factor%occ(size(occs)))
+        do i = 1, size(occs)
+            if (occs(i)%kind /= VK_FACTOR) then
+                call set_error(st, STATUS_DECK_ERROR, 'expected _F(...), got ' // &
+                    kind_label(occs(i)), file=file, line=vline(occs(i), line), &
+                    column=vcol(occs(i), col), command=def%name, keyword=def%kws(k)%name)
+                return
+            end if
+            associate (occ => factor%occ(i))
+                occ%file = file; occ%command = def%name; occ%scope = def%kws(k)%name
+                occ%line = vline(occs(i), line); occ%col = vcol(occs(i), col)
+                allocate (occ%items(8))
+                list = unpack_value(occs(i))
+                call check_scope(def, k, list, file, st)
+                if (st%failed()) return
+                do j = 1, size(list%keys)
+                    kw = find_keyword(def, k, list%keys(j)%s)
+                    call add_simple(def, kw, list, j, file, occ, st)
+                    if (st%failed()) return
+                end do
+                call check_required(def, k, list, file, occ%line, occ%col, st)
+                if (st%failed()) return
+                call fill_defaults(def, k, occ)
+            end associate
+        end do
+    end subroutine build_factor
+
+    !> Checks and normalizes argument j of `args` against keyword kw (0: open keyword).
+    subroutine add_simple(def, kw, args, j, file, set, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: kw, j
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: file
+        class(keyword_set_t), intent(inout) :: set
+        type(status_t), intent(inout) :: st
+        type(kw_value_t) :: item
+        type(value_t), allocatable :: items(:)
+        type(value_list_t) :: list
+        integer :: i, parent
+        character(len=:), allocatable :: msg
+        item%name = args%keys(j)%s
+        item%line = args%key_line(j); item%col = args%key_col(j)
+        item%value = args%items(j)
+        if (kw == 0) then                       ! open keyword (FORMULE binds objects)
+            call set%add(item)
+            return
+        end if
+        parent = def%kws(kw)%parent
+        associate (k => def%kws(kw), v => args%items(j))
+            if (k%types == 'ANY') then         ! bookkeeping keyword: anything goes
+                call set%add(item)
+                return
+            end if
+            if (v%kind == VK_FACTOR) then
+                call fail(v, 'expected ' // type_words(k%types) // ', got _F(...) (this ' // &
+                          'keyword is not a factor keyword)'); return
+            end if
+            if (v%kind == VK_TUPLE .or. v%kind == VK_LIST) then
+                list = unpack_value(v)
+                items = list%items
+            else
+                allocate (items(1))
+                items(1) = v
+            end if
+            if (size(items) < k%min .or. size(items) > k%max) then
+                call fail(v, 'expected ' // count_text(k%min, k%max) // ' value(s), got ' // &
+                          to_text(size(items))); return
+            end if
+            do i = 1, size(items)
+                if (.not. type_accepts(k%types, items(i))) then
+                    call fail(items(i), 'expected ' // type_words(k%types) // ', got ' // &
+                              describe(items(i))); return
+                end if
+                if (index(k%types, 'R') == 1 .and. items(i)%kind /= VK_REAL .and. &
+                    is_number(items(i))) items(i) = real_value(as_real(items(i)))
+                if (size(k%into) > 0) then
+                    msg = check_into(k, items(i))
+                    if (len(msg) > 0) then
+                        call fail(items(i), msg); return
+                    end if
+                end if
+            end do
+            if (k%max == 1) then
+                item%value = items(1)
+            else
+                item%value = sequence_value(VK_TUPLE, items)
+            end if
+        end associate
+        call set%add(item)
+    contains
+        subroutine fail(where, message)
+            type(value_t), intent(in) :: where
+            character(len=*), intent(in) :: message
+            call set_error(st, STATUS_DECK_ERROR, message, file=file, &
+                line=vline(where, args%key_line(j)), column=vcol(where, args%key_col(j)), &
+                command=def%name, keyword=path(def, parent, args%keys(j)%s))
+        end subroutine fail
+    end subroutine add_simple
+
+    !> '' when v is one of kw%into, else the message.
+    function check_into(kw, v) result(msg)
+        type(kw_def_t), intent(in) :: kw
+        type(value_t), intent(in) :: v
+        character(len=:), allocatable :: msg, text
+        integer :: i
+        msg = ''
+        if (v%kind == VK_STR) then
+            text = v%s
+        else if (v%kind == VK_INT) then
+            text = to_text(v%i)
+        else
+            return
+        end if
+        do i = 1, size(kw%into)
+            if (kw%into(i)%s == text) return
+        end do
+        msg = 'value ' // value_text(v) // ' is not allowed' // did_you_mean(text, kw%into) // &
+              ' (allowed: ' // join(kw%into) // ')'
+    end function check_into
+
+    !> Adds catalog defaults for keywords of scope `parent` that were not given.
+    subroutine fill_defaults(def, parent, set)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        class(keyword_set_t), intent(inout) :: set
+        integer :: k
+        type(kw_value_t) :: item
+        do k = 1, def%nkw
+            associate (kw => def%kws(k))
+                if (kw%parent /= parent .or. kw%is_factor .or. len(kw%default) == 0) cycle
+                if (set%has(kw%name)) cycle
+                item%name = kw%name
+                item%value = default_value(kw)
+                item%is_default = .true.
+                call set%add(item)
+            end associate
+        end do
+    end subroutine fill_defaults
+
+    !> The catalog default of a keyword as a value (blank-separated words for lists).
+    function default_value(kw) result(v)
+        type(kw_def_t), intent(in) :: kw
+        type(value_t) :: v
+        type(string_t), allocatable :: words(:)
+        type(value_t), allocatable :: items(:)
+        integer :: i
+        call split_words(kw%default, words)
+        allocate (items(size(words)))
+        do i = 1, size(words)
+            select case (kw%types(1:1))
+            case ('I')
+                items(i) = int_value(parse_int(words(i)%s))
+            case ('R')
+                items(i) = real_value(parse_real(words(i)%s))
+            case default
+                items(i) = str_value(words(i)%s)
+            end select
+        end do
+        if (kw%max == 1) then
+            v = items(1)
+        else
+            v = sequence_value(VK_TUPLE, items)
+        end if
+    end function default_value
+
+    !> True when value v is acceptable for the '|'-separated catalog types.
+    logical function type_accepts(types, v)
+        character(len=*), intent(in) :: types
+        type(value_t), intent(in) :: v
+        type(string_t), allocatable :: words(:)
+        integer :: i
+        type_accepts = .false.
+        call split_words(expand_types(types), words)
+        do i = 1, size(words)
+            select case (words(i)%s)
+            case ('ANY')
+                type_accepts = .true.
+            case ('I')
+                type_accepts = v%kind == VK_INT .or. v%kind == VK_BOOL
+            case ('R')
+                type_accepts = is_number(v)
+            case ('TXM')
+                type_accepts = v%kind == VK_STR
+            case default
+                if (v%kind == VK_CONCEPT) type_accepts = v%s == words(i)%s
+            end select
+            if (type_accepts) return
+        end do
+    end function type_accepts
+
+    !> 'FUNC|R' -> 'fonction formule R' (blank-separated concrete types).
+    function expand_types(types) result(out)
+        character(len=*), intent(in) :: types
+        character(len=:), allocatable :: out
+        type(string_t), allocatable :: words(:)
+        integer :: i
+        character(len=len(types)) :: t
+        t = types
+        do i = 1, len(t)
+            if (t(i:i) == '|') t(i:i) = ' '
+        end do
+        call split_words(t, words)
+        out = ''
+        do i = 1, size(words)
+            select case (words(i)%s)
+            case ('FUNC')
+                out = out // ' fonction formule'
+            case ('RESU')
+                out = out // ' evol_elas evol_noli'
+            case default
+                out = out // ' ' // words(i)%s
+            end select
+        end do
+    end function expand_types
+
+    !> Catalog types in words: 'a real', 'a text', 'a concept of type fonction or formule'.
+    function type_words(types) result(text)
+        character(len=*), intent(in) :: types
+        character(len=:), allocatable :: text
+        type(string_t), allocatable :: words(:)
+        character(len=:), allocatable :: concepts
+        integer :: i
+        call split_words(expand_types(types), words)
+        text = ''
+        concepts = ''
+        do i = 1, size(words)
+            select case (words(i)%s)
+            case ('I')
+                text = text // ' or an integer'
+            case ('R')
+                text = text // ' or a real'
+            case ('TXM')
+                text = text // ' or a text'
+            case default
+                if (len(concepts) > 0) concepts = concepts // ' or '
+                concepts = concepts // words(i)%s
+            end select
+        end do
+        if (len(concepts) > 0) text = text // ' or a concept of type ' // concepts
+        text = text(5:)
+    end function type_words
+
+    function describe(v) result(text)
+        type(value_t), intent(in) :: v
+        character(len=:), allocatable :: text
+        text = kind_label(v)
+        select case (v%kind)
+        case (VK_STR, VK_INT, VK_REAL)
+            text = text // ' ' // value_text(v)
+        case (VK_CONCEPT)
+            if (associated(v%obj)) then
+                if (allocated(v%obj%name)) then
+                    if (len(v%obj%name) > 0) text = text // ' (' // v%obj%name // ')'
+                end if
+            end if
+        end select
+    end function describe
+
+    function count_text(lo, hi) result(text)
+        integer, intent(in) :: lo, hi
+        character(len=:), allocatable :: text
+        if (hi == MANY) then
+            text = 'at least ' // to_text(lo)
+        else if (lo == hi) then
+            text = to_text(lo)
+        else
+            text = 'between ' // to_text(lo) // ' and ' // to_text(hi)
+        end if
+    end function count_text
+
+    function scope_names(def, parent) result(names)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        type(string_t), allocatable :: names(:)
+        integer :: k
+        allocate (names(0))
+        do k = 1, def%nkw
+            if (def%kws(k)%parent == parent) call append_string(names, def%kws(k)%name)
+        end do
+    end function scope_names
+
+    function join(words) result(text)
+        type(string_t), intent(in) :: words(:)
+        character(len=:), allocatable :: text
+        integer :: i
+        text = ''
+        do i = 1, size(words)
+            if (i > 1) text = text // ', '
+            text = text // words(i)%s
+        end do
+    end function join
+
+    function path(def, parent, name) result(text)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: text
+        text = name
+        if (parent > 0) text = def%kws(parent)%name // '/' // name
+    end function path
+
+    function scope_path(def, parent) result(text)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        character(len=:), allocatable :: text
+        text = ''
+        if (parent > 0) text = def%kws(parent)%name
+    end function scope_path
+
+    logical function given(args, name)
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: name
+        integer :: j
+        given = .false.
+        do j = 1, size(args%keys)
+            if (args%keys(j)%s == name) given = .true.
+        end do
+    end function given
+
+    integer function key_line(args, name)
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: name
+        integer :: j
+        key_line = 0
+        do j = 1, size(args%keys)
+            if (args%keys(j)%s == name) key_line = args%key_line(j)
+        end do
+    end function key_line
+
+    integer function key_col(args, name)
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: name
+        integer :: j
+        key_col = 0
+        do j = 1, size(args%keys)
+            if (args%keys(j)%s == name) key_col = args%key_col(j)
+        end do
+    end function key_col
+
+    integer function vline(v, fallback)
+        type(value_t), intent(in) :: v
+        integer, intent(in) :: fallback
+        vline = v%line
+        if (vline == 0) vline = fallback
+    end function vline
+
+    integer function vcol(v, fallback)
+        type(value_t), intent(in) :: v
+        integer, intent(in) :: fallback
+        vcol = v%col
+        if (v%line == 0) vcol = fallback
+    end function vcol
+
+    integer(i8) function parse_int(text)
+        character(len=*), intent(in) :: text
+        read (text, *) parse_int
+    end function parse_int
+
+    real(dp) function parse_real(text)
+        character(len=*), intent(in) :: text
+        read (text, *) parse_real
+    end function parse_real
+
+end module deck_validate

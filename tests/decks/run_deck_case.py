@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""Runs one deck of the parasol deck corpus and checks the outcome.
+
+usage: run_deck_case.py PARASOL DECK WORKDIR [--check] [--generate KIND]
+                        [--expect-exit N] [--expect 'L:C: error: TEXT'] [--phrase TEXT]
+
+A bad deck states what it expects in its first lines:
+    # expect: 12:5: error: AFFE_MODELE/AFFE/MODELISATION:
+    # phrase: did you mean DKT?
+The test passes when parasol exits with status 1 within 1 s, stderr contains
+`NAME.comm:12:5: error: AFFE_MODELE/AFFE/MODELISATION:` and the phrase, and no sign of a
+crash ("Fortran runtime error", "Backtrace", "ERROR STOP", "Segmentation"). A good deck
+(no expect line, or --expect-exit 0) must exit 0 with an empty stderr.
+--generate KIND writes the deck first (big or binary inputs are not committed):
+empty, binary, long_line (1 MB), deep_parens (10 000 nested parentheses).
+"""
+import os
+import subprocess
+import sys
+import time
+
+CRASH_SIGNS = ("Fortran runtime error", "Backtrace", "ERROR STOP", "Segmentation",
+               "double free", "Program received signal")
+
+
+def generate(kind, path):
+    if kind == "empty":
+        data = b""
+    elif kind == "binary":
+        data = b"# expect: 3:3: error: \n# phrase: NUL byte\n\x7fE\x00\x01\x02\xff binary\n"
+    elif kind == "long_line":
+        data = (b"# expect: 3:5: error: \n# phrase: unterminated string\nx = '"
+                + b"a" * (1 << 20) + b"\nFIN()\n")
+    elif kind == "deep_parens":
+        data = (b"# expect: 3:205: error: \n# phrase: nested deeper than 200\nx = "
+                + b"(" * 10000 + b"1" + b")" * 10000 + b"\n")
+    else:
+        raise SystemExit("unknown --generate kind " + kind)
+    with open(path, "wb") as f:
+        f.write(data)
+
+
+def expectations(path):
+    expect, phrase = None, None
+    with open(path, "rb") as f:
+        head = f.read(4096).decode("utf-8", "replace").splitlines()[:5]
+    for line in head:
+        if line.startswith("# expect:"):
+            expect = line[len("# expect:"):].strip()
+        elif line.startswith("# phrase:"):
+            phrase = line[len("# phrase:"):].strip()
+    return expect, phrase
+
+
+def main(argv):
+    parasol, deck, workdir = argv[1], argv[2], argv[3]
+    opts = argv[4:]
+    check = "--check" in opts
+    expect = phrase = None
+    expect_exit = None
+    for flag in ("--generate", "--expect", "--phrase", "--expect-exit"):
+        if flag in opts:
+            value = opts[opts.index(flag) + 1]
+            if flag == "--generate":
+                os.makedirs(os.path.dirname(os.path.abspath(deck)), exist_ok=True)
+                generate(value, deck)
+            elif flag == "--expect":
+                expect = value
+            elif flag == "--phrase":
+                phrase = value
+            else:
+                expect_exit = int(value)
+    file_expect, file_phrase = expectations(deck)
+    expect = expect or file_expect
+    phrase = phrase or file_phrase
+    if expect_exit is None:
+        expect_exit = 1 if expect else 0
+    os.makedirs(workdir, exist_ok=True)
+    name = os.path.basename(deck)
+    stem = os.path.splitext(name)[0]
+    old_resu = os.path.join(workdir, stem + ".resu")
+    if expect and not check:
+        # a failed run must leave an older .resu untouched
+        with open(old_resu, "w") as f:
+            f.write("OLD RESULT\n")
+    cmd = [os.path.abspath(parasol), "--outdir", os.path.abspath(workdir)]
+    if check:
+        cmd.append("--check")
+    cmd.append(name)
+    start = time.monotonic()
+    run = subprocess.run(cmd, cwd=os.path.dirname(os.path.abspath(deck)),
+                         capture_output=True, timeout=30)
+    elapsed = time.monotonic() - start
+    err = run.stderr.decode("utf-8", "replace")
+    problems = []
+    if run.returncode != expect_exit:
+        problems.append("exit status %d, expected %d" % (run.returncode, expect_exit))
+    if elapsed > 1.0:
+        problems.append("took %.2f s (limit 1 s)" % elapsed)
+    for sign in CRASH_SIGNS:
+        if sign in err:
+            problems.append("crash sign on stderr: " + sign)
+    if expect:
+        prefix = name + ":" + expect
+        if prefix not in err:
+            problems.append("stderr lacks " + repr(prefix))
+        if phrase and phrase not in err:
+            problems.append("stderr lacks the phrase " + repr(phrase))
+        if not check:
+            with open(old_resu) as f:
+                if f.read() != "OLD RESULT\n":
+                    problems.append("the older .resu was overwritten by a failed run")
+            if os.path.exists(old_resu + ".partial"):
+                problems.append("the temporary .resu.partial was left behind")
+            mess = os.path.join(workdir, stem + ".mess")
+            if not os.path.exists(mess):
+                problems.append("no .mess was committed for the failed run")
+            else:
+                with open(mess, encoding="utf-8", errors="replace") as f:
+                    if prefix not in f.read():
+                        problems.append("the .mess lacks the error message")
+    elif err.strip():
+        problems.append("unexpected stderr")
+    if problems:
+        print("FAIL " + name + ": " + "; ".join(problems))
+        print("stderr was:\n" + err)
+        return 1
+    print("ok " + name + (": " + err.strip() if err.strip() else ""))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
