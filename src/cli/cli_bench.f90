@@ -3,6 +3,7 @@ module cli_bench
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use strings, only: string_t
     use cli_args, only: get_arguments
+    use bench_skyline, only: run_bench_skyline
     implicit none
     private
     public :: run_parasol_bench
@@ -21,6 +22,8 @@ contains
         case ('--help', '-h')
             call print_bench_usage(output_unit)
             exit_status = 0
+        case ('skyline')
+            call run_bench_skyline(args(2:), exit_status)
         case default
             write (error_unit, '(a)') 'parasol-bench: error: unknown benchmark "' // &
                 args(1)%s // '"'
@@ -31,6 +34,7 @@ contains
     subroutine print_bench_usage(unit)
         integer, intent(in) :: unit
         write (unit, '(a)') 'usage: parasol-bench KIND [options]', &
+            '  skyline --nx NX --ny NY --dofs D [--renum RCMK|METIS|SANS]  skyline vs DPBTRF', &
             '  (benchmarks are added with the layers they measure)'
     end subroutine print_bench_usage
 end module cli_bench
