@@ -23,6 +23,11 @@ module bench_skyline
     private
     public :: run_bench_skyline
 
+    !> DPBTRF is skipped beyond 1e9 band entries (8 GB; also below LAPACK's 32-bit index
+    !> limit 2**31) or N KD^2 = 2e12 flops (minutes): wide METIS bands would not finish.
+    integer(i8), parameter :: MAX_BAND_ENTRIES = 1000000000_i8
+    real(dp), parameter :: MAX_BAND_FLOPS = 2.0e12_dp
+
     !> The benchmark's parameters (command line).
     type :: plate_case_t
         integer(i4) :: nx = 16, ny = 64, dofs = 6
@@ -146,10 +151,11 @@ contains
         call right_hand_side(b)
         t_band = 0.0_dp
         r_band = 0.0_dp
-        if (pc%lapack .and. int(kd + 1, i8) * n > int(huge(1), i8)) then
-            ! LAPACK takes 32-bit integers: a band array past 2**31 entries is out of reach.
+        if (pc%lapack .and. (int(kd + 1, i8) * n > MAX_BAND_ENTRIES .or. &
+                             real(n, dp) * real(kd, dp)**2 > MAX_BAND_FLOPS)) then
             write (output_unit, '(a)') 'dpbtrf: skipped, band storage (KD+1) x N = ' // &
-                to_text(int(kd + 1, i8) * n) // ' entries exceeds 32-bit indexing'
+                to_text(int(kd + 1, i8) * n) // ' entries or N KD^2 = ' // &
+                real_short(real(n, dp) * real(kd, dp)**2) // ' flops is out of reach'
         else if (pc%lapack) then
             call time_dpbtrf(sky, kd, b, xb, t_band, st)
             if (st%failed()) return

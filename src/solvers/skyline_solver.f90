@@ -22,7 +22,7 @@ module skyline_solver
     use status, only: status_t, set_error, STATUS_SINGULAR, STATUS_INTERNAL
     use strings, only: to_text
     use skyline_matrix, only: skyline_t, skyline_bandwidth, skyline_profile_size
-    use lapack_interface, only: dgemm, dtrsm
+    use lapack_interface, only: dgemm, dsyrk, dtrsm
     implicit none
     private
 
@@ -40,7 +40,7 @@ module skyline_solver
     real(dp), parameter :: ZERO_PIVOT_PENALTY = 1.0e16_dp
     !> Panel width (columns) and row block of the blocked kernel; below this bandwidth the
     !> reference kernel is as fast (measured, doc/performance.md).
-    integer(i4), parameter :: PANEL_WIDTH = 64, ROW_BLOCK = 96, BLOCKED_MIN_BANDWIDTH = 48
+    integer(i4), parameter :: PANEL_WIDTH = 64, ROW_BLOCK = 64, BLOCKED_MIN_BANDWIDTH = 48
 
     !> How to factor and what counts as singular.
     type, public :: factor_options_t
@@ -391,20 +391,34 @@ contains
         real(dp), intent(inout) :: p(ldp, PANEL_WIDTH)
         type(pivot_context_t), intent(in) :: ctx
         type(factor_report_t), intent(inout) :: report
-        real(dp), allocatable :: s(:, :)
-        integer(i4) :: na, wp, k, c, r, q
+        real(dp), allocatable :: s(:, :), dk(:)
+        integer(i4) :: na, wp, c, r, q
         real(dp) :: g, u, acc, d
         na = j0 - t
         wp = j1 - j0 + 1
         if (na > 0) then
-            allocate (s(na, wp))
-            do c = 1, wp
-                do k = 1, na
-                    s(k, c) = p(k, c) / values(diag(t + k - 1))
+            allocate (s(na, wp), dk(na))
+            dk = values(diag(t:j0 - 1))
+            if (all(dk > 0.0_dp)) then
+                ! G^T D^-1 G = H^T H with H = D^-1/2 G: symmetric rank-k update of the upper
+                ! triangle only (half the flops of dgemm).
+                dk = 1.0_dp / sqrt(dk)
+                do c = 1, wp
+                    s(:, c) = p(1:na, c) * dk
                 end do
-            end do
-            call dgemm('T', 'N', wp, wp, na, -1.0_dp, s, na, p, ldp, 1.0_dp, p(na + 1, 1), ldp)
-            p(1:na, 1:wp) = s
+                call dsyrk('U', 'T', wp, na, -1.0_dp, s, na, 1.0_dp, p(na + 1, 1), ldp)
+                do c = 1, wp
+                    p(1:na, c) = s(:, c) * dk
+                end do
+            else
+                dk = 1.0_dp / dk
+                do c = 1, wp
+                    s(:, c) = p(1:na, c) * dk
+                end do
+                call dgemm('T', 'N', wp, wp, na, -1.0_dp, s, na, p, ldp, 1.0_dp, &
+                           p(na + 1, 1), ldp)
+                p(1:na, 1:wp) = s
+            end if
         end if
         do c = 1, wp
             do r = 2, c - 1
