@@ -40,7 +40,7 @@ module skyline_solver
     real(dp), parameter :: ZERO_PIVOT_PENALTY = 1.0e16_dp
     !> Panel width (columns) and row block of the blocked kernel; below this bandwidth the
     !> reference kernel is as fast (measured, doc/performance.md).
-    integer(i4), parameter :: PANEL_WIDTH = 64, ROW_BLOCK = 64, BLOCKED_MIN_BANDWIDTH = 48
+    integer(i4), parameter :: PANEL_WIDTH = 64, ROW_BLOCK = 64, BLOCKED_MIN_BANDWIDTH = 64
 
     !> How to factor and what counts as singular.
     type, public :: factor_options_t
@@ -133,8 +133,8 @@ contains
     end subroutine skyline_factor
 
     !> Digits lost by a pivot: log10(|original| / |pivot|); DIGITS_ALL_LOST when the pivot is
-    !> zero relative to the original (|pivot| <= eps |original|); 0 when original = 0 and the
-    !> pivot is not zero (no reference to lose digits from).
+    !> zero relative to the original (|pivot| <= eps |original|, or subnormal); 0 when
+    !> original = 0 and the pivot is not zero (no reference to lose digits from).
     !>  pivot, original : in, d_i and a_ii
     !>  reference       : in, magnitude used for the zero test when original = 0
     pure real(dp) function digits_lost(pivot, original, reference)
@@ -142,7 +142,8 @@ contains
         real(dp) :: ref
         ref = abs(original)
         if (ref <= 0.0_dp) ref = abs(reference)
-        if (abs(pivot) <= epsilon(1.0_dp) * ref .or. .not. abs(pivot) > 0.0_dp) then
+        ! Zero: every digit lost, or below the normal range (its reciprocal could overflow).
+        if (abs(pivot) <= epsilon(1.0_dp) * ref .or. abs(pivot) < tiny(1.0_dp)) then
             digits_lost = DIGITS_ALL_LOST
         else if (abs(original) > 0.0_dp) then
             digits_lost = log10(abs(original) / abs(pivot))
