@@ -13,7 +13,8 @@
 !> NPREC (Code_Aster SOLVEUR/NPREC, default 8, u4.50.01): the pivot d_i of equation i lost
 !>     digits_i = log10(|a_ii| / |d_i|)
 !> significant digits relative to the original diagonal a_ii. A pivot is flagged when it
-!> loses more than NPREC digits (NPREC < 0 switches that test off, as in Code_Aster), when it
+!> loses more than NPREC digits (as Code_Aster's LDLT and MULT_FRONT do, |NPREC| is used and
+!> NPREC = 0 means the default 8; only MUMPS reads NPREC < 0 as "no detection"), when it
 !> is zero (|d_i| <= eps |a_ii|: every digit lost), or when it is negative and the caller
 !> declared the matrix positive definite. With STOP_SINGULIER='OUI' (stop_singular) a flagged
 !> pivot is an error STATUS_SINGULAR naming the first flagged equation; the report lists all.
@@ -44,7 +45,7 @@ module skyline_solver
 
     !> How to factor and what counts as singular.
     type, public :: factor_options_t
-        integer(i4) :: nprec = NPREC_DEFAULT      !< SOLVEUR/NPREC; < 0: no digit-loss test
+        integer(i4) :: nprec = NPREC_DEFAULT      !< SOLVEUR/NPREC (|nprec|; 0 -> 8)
         logical :: stop_singular = .true.         !< SOLVEUR/STOP_SINGULIER = 'OUI'
         logical :: positive_definite = .false.    !< a negative pivot is then flagged
         integer(i4) :: method = FACTOR_AUTO       !< FACTOR_AUTO/REFERENCE/BLOCKED
@@ -102,6 +103,9 @@ contains
             return
         end if
         if (present(options)) ctx%options = options
+        ! Code_Aster (u4.50.01, LDLT/MULT_FRONT): the absolute value counts, 0 is the default.
+        ctx%options%nprec = abs(ctx%options%nprec)
+        if (ctx%options%nprec == 0) ctx%options%nprec = NPREC_DEFAULT
         report%n_equations = sky%n
         report%profile_size = skyline_profile_size(sky)
         report%bandwidth = skyline_bandwidth(sky)
@@ -173,7 +177,7 @@ contains
             reason = PIVOT_ZERO
         else if (d < 0.0_dp .and. ctx%options%positive_definite) then
             reason = PIVOT_NEGATIVE
-        else if (ctx%options%nprec >= 0 .and. lost > real(ctx%options%nprec, dp)) then
+        else if (lost > real(ctx%options%nprec, dp)) then
             reason = PIVOT_DIGITS_LOST
         end if
         if (d < 0.0_dp .and. reason /= PIVOT_ZERO) then
