@@ -30,7 +30,7 @@ module bench_skyline
 
     !> The benchmark's parameters (command line).
     type :: plate_case_t
-        integer(i4) :: nx = 16, ny = 64, dofs = 6
+        integer(i4) :: nx = 16, ny = 64, dofs = 6, repeat = 1
         character(len=8) :: renum = 'RCMK'
         integer(i4) :: kernel = FACTOR_AUTO
         logical :: lapack = .true.
@@ -82,6 +82,8 @@ contains
                 read (args(k + 1)%s, *, iostat=ios) pc%ny
             case ('--dofs')
                 read (args(k + 1)%s, *, iostat=ios) pc%dofs
+            case ('--repeat')
+                read (args(k + 1)%s, *, iostat=ios) pc%repeat
             case ('--renum')
                 pc%renum = args(k + 1)%s
             case ('--kernel')
@@ -98,7 +100,7 @@ contains
             case default
                 ios = 1
             end select
-            if (ios /= 0 .or. pc%nx < 1 .or. pc%ny < 1 .or. pc%dofs < 1) then
+            if (ios /= 0 .or. min(pc%nx, pc%ny, pc%dofs, pc%repeat) < 1) then
                 write (error_unit, '(a)') 'parasol-bench skyline: bad option ' // args(k)%s // &
                     ' ' // args(k + 1)%s
                 call print_skyline_usage(error_unit)
@@ -112,7 +114,8 @@ contains
     subroutine print_skyline_usage(unit)
         integer, intent(in) :: unit
         write (unit, '(a)') 'usage: parasol-bench skyline [--nx NX] [--ny NY] [--dofs D] ' // &
-            '[--renum RCMK|METIS|SANS] [--kernel auto|reference|blocked] [--no-lapack]'
+            '[--renum RCMK|METIS|SANS] [--kernel auto|reference|blocked] [--repeat R] ' // &
+            '[--no-lapack]'
     end subroutine print_skyline_usage
 
     !> Builds, renumbers, assembles, factors and solves one case; prints the RESULT line.
@@ -121,11 +124,12 @@ contains
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: elem_ptr(:), elem_nodes(:), xadj(:), adj(:), n2o(:), o2n(:)
         integer(i4), allocatable :: eqs(:, :)
-        integer(i4) :: n_nodes, n, band0, band1, kd, k
+        integer(i4) :: n_nodes, n, band0, band1, kd, k, rep
+        logical :: use_band
         integer(i8) :: prof0, prof1
         type(skyline_t) :: sky
         real(dp), allocatable :: b(:), x(:), xb(:)
-        real(dp) :: t_sky, t_band, r_sky, r_band
+        real(dp) :: t_sky, t_band, r_sky, r_band, t
         call plate_mesh(pc%nx, pc%ny, elem_ptr, elem_nodes)
         n_nodes = (pc%nx + 1) * (pc%ny + 1)
         call graph_from_elements(n_nodes, elem_ptr, elem_nodes, xadj, adj, st)
@@ -149,20 +153,31 @@ contains
             real_short(skyline_mean_height(sky))
         allocate (b(n), x(n))
         call right_hand_side(b)
-        t_band = 0.0_dp
-        r_band = 0.0_dp
+        use_band = pc%lapack
         if (pc%lapack .and. (int(kd + 1, i8) * n > MAX_BAND_ENTRIES .or. &
                              real(n, dp) * real(kd, dp)**2 > MAX_BAND_FLOPS)) then
             write (output_unit, '(a)') 'dpbtrf: skipped, band storage (KD+1) x N = ' // &
                 to_text(int(kd + 1, i8) * n) // ' entries or N KD^2 = ' // &
                 real_short(real(n, dp) * real(kd, dp)**2) // ' flops is out of reach'
-        else if (pc%lapack) then
-            call time_dpbtrf(sky, kd, b, xb, t_band, st)
-            if (st%failed()) return
+            use_band = .false.
         end if
-        x = b
-        call time_skyline(sky, pc%kernel, x, t_sky, st)
-        if (st%failed()) return
+        ! Shared machines are noisy: the best of --repeat runs is reported for each solver.
+        t_band = huge(1.0_dp)
+        t_sky = huge(1.0_dp)
+        do rep = 1, pc%repeat
+            if (rep > 1) call build_plate_matrix(n, eqs, sky, st)
+            if (use_band) then
+                call time_dpbtrf(sky, kd, b, xb, t, st)
+                if (st%failed()) return
+                t_band = min(t_band, t)
+            end if
+            x = b
+            call time_skyline(sky, pc%kernel, x, t, st)
+            if (st%failed()) return
+            t_sky = min(t_sky, t)
+        end do
+        if (.not. use_band) t_band = 0.0_dp
+        r_band = 0.0_dp
         call build_plate_matrix(n, eqs, sky, st)
         r_sky = relative_residual(sky, x, b)
         if (allocated(xb)) r_band = relative_residual(sky, xb, b)
