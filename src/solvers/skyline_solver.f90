@@ -302,7 +302,7 @@ contains
         real(dp), intent(inout) :: values(:)
         type(pivot_context_t), intent(in) :: ctx
         type(factor_report_t), intent(inout) :: report
-        real(dp), allocatable :: p(:, :), w(:, :)
+        real(dp), allocatable :: p(:, :), w(:, :), s(:, :), dk(:)
         integer(i4), allocatable :: top(:)
         integer(i4) :: j, j0, j1, t, ldp, ldw
         allocate (top(n))
@@ -311,14 +311,16 @@ contains
         end do
         ldp = band + PANEL_WIDTH
         ldw = band + ROW_BLOCK
-        allocate (p(ldp, PANEL_WIDTH), w(ldw, ROW_BLOCK))
+        allocate (p(ldp, PANEL_WIDTH), w(ldw, ROW_BLOCK), s(max(1, band), PANEL_WIDTH), &
+                  dk(max(1, band)))
         j0 = 1
         do while (j0 <= n)
             j1 = min(n, j0 + PANEL_WIDTH - 1)
             t = minval(top(j0:j1))
             call load_panel(n, diag, values, top, j0, j1, t, ldp, p)
             call substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w)
-            call factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, ctx, report)
+            call factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, max(1, band), s, &
+                                       dk, ctx, report)
             call store_panel(n, diag, values, top, j0, j1, t, ldp, p)
             j0 = j1 + 1
         end do
@@ -389,40 +391,40 @@ contains
 
     !> Diagonal block of the panel: P_JJ -= S^T G with G = P(rows t..j0-1), S = D^-1 G (the
     !> panel's own u_kj, stored back into P), then dense Crout of the block with pivot tests.
-    subroutine factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, ctx, report)
-        integer(i4), intent(in) :: n, j0, j1, t, ldp
+    !>  s, dk : work arrays (lds >= j0 - t rows), allocated once by the caller
+    subroutine factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, lds, s, dk, ctx, &
+                                     report)
+        integer(i4), intent(in) :: n, j0, j1, t, ldp, lds
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(in) :: values(:)
-        real(dp), intent(inout) :: p(ldp, PANEL_WIDTH)
+        real(dp), intent(inout) :: p(ldp, PANEL_WIDTH), s(lds, PANEL_WIDTH), dk(lds)
         type(pivot_context_t), intent(in) :: ctx
         type(factor_report_t), intent(inout) :: report
-        real(dp), allocatable :: s(:, :), dk(:)
         integer(i4) :: na, wp, c, r, q
         real(dp) :: g, u, acc, d
         na = j0 - t
         wp = j1 - j0 + 1
         if (na > 0) then
-            allocate (s(na, wp), dk(na))
-            dk = values(diag(t:j0 - 1))
-            if (all(dk > 0.0_dp)) then
+            dk(1:na) = values(diag(t:j0 - 1))
+            if (all(dk(1:na) > 0.0_dp)) then
                 ! G^T D^-1 G = H^T H with H = D^-1/2 G: symmetric rank-k update of the upper
                 ! triangle only (half the flops of dgemm).
-                dk = 1.0_dp / sqrt(dk)
+                dk(1:na) = 1.0_dp / sqrt(dk(1:na))
                 do c = 1, wp
-                    s(:, c) = p(1:na, c) * dk
+                    s(1:na, c) = p(1:na, c) * dk(1:na)
                 end do
-                call dsyrk('U', 'T', wp, na, -1.0_dp, s, na, 1.0_dp, p(na + 1, 1), ldp)
+                call dsyrk('U', 'T', wp, na, -1.0_dp, s, lds, 1.0_dp, p(na + 1, 1), ldp)
                 do c = 1, wp
-                    p(1:na, c) = s(:, c) * dk
+                    p(1:na, c) = s(1:na, c) * dk(1:na)
                 end do
             else
-                dk = 1.0_dp / dk
+                dk(1:na) = 1.0_dp / dk(1:na)
                 do c = 1, wp
-                    s(:, c) = p(1:na, c) * dk
+                    s(1:na, c) = p(1:na, c) * dk(1:na)
                 end do
-                call dgemm('T', 'N', wp, wp, na, -1.0_dp, s, na, p, ldp, 1.0_dp, &
+                call dgemm('T', 'N', wp, wp, na, -1.0_dp, s, lds, p, ldp, 1.0_dp, &
                            p(na + 1, 1), ldp)
-                p(1:na, 1:wp) = s
+                p(1:na, 1:wp) = s(1:na, 1:wp)
             end if
         end if
         do c = 1, wp
