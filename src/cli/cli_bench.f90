@@ -4,6 +4,7 @@ module cli_bench
     use strings, only: string_t
     use cli_args, only: get_arguments
     use bench_mesh, only: run_bench_mesh
+    use bench_skyline, only: run_bench_skyline
     implicit none
     private
     public :: run_parasol_bench
@@ -28,6 +29,8 @@ contains
                 use bench_formula, only: run_formula_bench
                 call run_formula_bench(args, exit_status)
             end block
+        case ('skyline')
+            call run_bench_skyline(args(2:), exit_status)
         case default
             write (error_unit, '(a)') 'parasol-bench: error: unknown benchmark "' // &
                 args(1)%s // '"'
@@ -40,6 +43,7 @@ contains
         write (unit, '(a)') 'usage: parasol-bench KIND [options]', &
             '  mesh FILE      time reading a mesh (.mail or .msh)', &
             '  formula        FORMULE evaluations per second', &
+            '  skyline --nx NX --ny NY --dofs D [--renum RCMK|METIS|SANS]  skyline vs DPBTRF', &
             '  (benchmarks are added with the layers they measure)'
     end subroutine print_bench_usage
 end module cli_bench
