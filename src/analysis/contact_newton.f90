@@ -42,6 +42,11 @@ module contact_newton
     !> Springs named in a list before it is abbreviated.
     integer(i4), parameter :: LIST_NAMES = 6
     integer(i4), parameter :: MATRIX_NONE = 0, MATRIX_ELASTIC = 1, MATRIX_TANGENT = 2
+    !> A pivot below this fraction of the largest diagonal term is at the round-off level
+    !> of the stiffest terms (~1e4 machine epsilons): a free rigid motion, even when the
+    !> equation's own diagonal is small enough for NPREC not to flag it (e.g. a DX left free
+    !> under a plate 1e8 times stiffer than its springs).
+    real(dp), parameter :: RIGID_PIVOT_RATIO = 1.0e-12_dp
 
     !> NEWTON, CONVERGENCE and SOLVEUR options.
     type, public :: newton_options_t
@@ -86,7 +91,7 @@ module contact_newton
         logical :: refactored = .false.
     end type newton_state_t
 
-    public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose
+    public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear
 
 contains
 
@@ -359,9 +364,7 @@ contains
         state%current = use
     end function choose_matrix
 
-    !> Assembles and factors the matrix `use` if it is not ready; a flagged pivot becomes
-    !> STATUS_NO_EQUILIBRIUM (tangent with open springs), STATUS_SINGULAR (STOP_SINGULIER),
-    !> or a warning line.
+    !> Assembles and factors the matrix `use` if it is not ready (see assemble_and_factor).
     subroutine factor_and_diagnose(s, map, state, use, options, t, log, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -371,46 +374,94 @@ contains
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
-        type(factor_options_t) :: lenient
-        type(factor_report_t) :: report
-        character(len=:), allocatable :: where
-        integer(i4) :: n_open
         state%refactored = .false.
         if (use == MATRIX_ELASTIC .and. state%have_elastic) return
         if (use == MATRIX_TANGENT .and. state%have_tangent) return
-        lenient = options
-        lenient%stop_singular = .false.
         if (use == MATRIX_ELASTIC) then
-            call assemble_stiffness(s, map, state%u, .true., state%elastic, st)
-            if (st%ok()) call skyline_factor(state%elastic, report, st, lenient)
+            call assemble_and_factor(s, map, state%u, .true., state%closed, state%elastic, &
+                options, t, log, st)
             state%have_elastic = st%ok()
         else
-            call assemble_stiffness(s, map, state%u, .false., state%tangent, st)
-            if (st%ok()) call skyline_factor(state%tangent, report, st, lenient)
+            call assemble_and_factor(s, map, state%u, .false., state%closed, state%tangent, &
+                options, t, log, st)
             state%have_tangent = st%ok()
         end if
         if (st%failed()) return
         state%refactored = .true.
         state%factorizations = state%factorizations + 1
-        if (report%n_flagged == 0) return
-        where = describe_equation(s%dofs, s%mesh, map%free_to_eq(report%flagged_equations(1)))
-        where = where // ' (pivot lost ' // real_digits(report%flagged_digits_lost(1)) // &
-            ' digits, NPREC = ' // to_text(abs(options%nprec)) // ')'
-        n_open = count(.not. state%closed, kind=i4)
-        if (use == MATRIX_TANGENT .and. n_open > 0) then
+    end subroutine factor_and_diagnose
+
+    !> MECA_STATIQUE: assembles and factors the (linear) stiffness at u.
+    subroutine factor_and_diagnose_linear(s, map, u, sky, options, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:)
+        type(skyline_t), intent(out) :: sky
+        type(factor_options_t), intent(in) :: options
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        logical :: none(0)
+        call assemble_and_factor(s, map, u, .false., none, sky, options, 0.0_dp, log, st)
+    end subroutine factor_and_diagnose_linear
+
+    !> Assembles the matrix at u (elastic or tangent) and factors it. A flagged pivot
+    !> becomes STATUS_NO_EQUILIBRIUM (tangent with open springs: the structure is left free),
+    !> STATUS_SINGULAR (STOP_SINGULIER = OUI) naming node and component, or a warning line.
+    !>  closed : in, the spring statuses (for the no-equilibrium message)
+    subroutine assemble_and_factor(s, map, u, elastic, closed, sky, options, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), t
+        logical, intent(in) :: elastic, closed(:)
+        type(skyline_t), intent(out) :: sky
+        type(factor_options_t), intent(in) :: options
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        type(factor_options_t) :: lenient
+        type(factor_report_t) :: report
+        character(len=:), allocatable :: where
+        integer(i4) :: n_open
+        real(dp) :: largest
+        integer(i4) :: rigid
+        lenient = options
+        lenient%stop_singular = .false.
+        call assemble_stiffness(s, map, u, elastic, sky, st)
+        if (st%failed()) return
+        largest = 0.0_dp
+        if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
+        call skyline_factor(sky, report, st, lenient)
+        if (st%failed()) return
+        rigid = 0
+        if (sky%n > 0) rigid = findloc(abs(sky%values(sky%diag(1:sky%n))) <= &
+            RIGID_PIVOT_RATIO * largest, .true., dim=1)
+        if (report%n_flagged == 0 .and. rigid == 0) return
+        if (report%n_flagged > 0) then
+            where = describe_equation(s%dofs, s%mesh, &
+                map%free_to_eq(report%flagged_equations(1)))
+            where = where // ' (pivot lost ' // real_digits(report%flagged_digits_lost(1)) &
+                // ' digits, NPREC = ' // to_text(merge(abs(options%nprec), 8_i4, &
+                options%nprec /= 0)) // ')'
+        else
+            where = describe_equation(s%dofs, s%mesh, map%free_to_eq(rigid)) // &
+                ' (pivot ' // real_e13(sky%values(sky%diag(rigid))) // ' against a largest ' &
+                // 'diagonal term ' // real_e13(largest) // ')'
+        end if
+        n_open = count(.not. closed, kind=i4)
+        if (.not. elastic .and. n_open > 0) then
             call set_error(st, STATUS_NO_EQUILIBRIUM, 'INST ' // real_e13(t) // &
                 ': no equilibrium: ' // to_text(n_open) // ' of ' // &
-                to_text(size(state%closed)) // ' DIS_CHOC springs are open and the ' // &
+                to_text(size(closed)) // ' DIS_CHOC springs are open and the ' // &
                 'structure is left free: rigid motion at ' // where)
         else if (options%stop_singular) then
-            call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': singular ' // &
-                'matrix at ' // where // ', ' // to_text(report%n_flagged) // &
-                ' pivot(s) flagged: a support (DDL_IMPO) or a stiffness is missing there')
+            call set_error(st, STATUS_SINGULAR, 'singular matrix at ' // where // ', ' // &
+                to_text(max(report%n_flagged, 1_i4)) // ' pivot(s) flagged: a support ' // &
+                '(DDL_IMPO) or a stiffness is missing there')
         else
-            call log_add(log, '  warning: matrix nearly singular at ' // where // &
-                ' (STOP_SINGULIER = NON, continuing)')
+            call log_add(log, '  warning: matrix nearly singular at ' // where // ', ' // &
+                to_text(max(report%n_flagged, 1_i4)) // ' pivot(s) flagged ' // &
+                '(STOP_SINGULIER = NON)')
         end if
-    end subroutine factor_and_diagnose
+    end subroutine assemble_and_factor
 
     !> With every spring open, an elastic-matrix iteration that does not reduce the residual
     !> means nothing holds the structure (the elastic matrix itself is regular).

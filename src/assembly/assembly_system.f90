@@ -282,7 +282,7 @@ contains
         logical, intent(out) :: closed
         type(status_t), intent(out) :: st
         integer(i4) :: kind, m, nn, p0
-        real(dp) :: x(3, 4)
+        real(dp) :: x(3, 4), x2(2, 4), k8(8, 8)
         kind = s%model%element(c)
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
@@ -299,14 +299,16 @@ contains
                         s%cara%coef_rigi_drz(c), ke, st)
                 else
                     call plate_internal_forces(x(:, 1:nn), nn, e%e, e%nu, &
-                        s%cara%thickness(c), s%cara%coef_rigi_drz(c), ue, fe, st)
+                        s%cara%thickness(c), s%cara%coef_rigi_drz(c), &
+                        plate_deformation(x(:, 1:nn), nn, ue), fe, st)
                 end if
             end associate
         else if (is_plane_solid(kind)) then
             associate (e => s%materials%materials(m)%elas)
-                call plane_quad4_stiffness(x(1:2, 1:4), e%e, e%nu, &
-                    kind == ELEM_D_PLAN_QUAD4, ke, st)
-                if (.not. want_matrix) fe = matmul(ke, ue)
+                x2 = x(1:2, 1:4)
+                call plane_quad4_stiffness(x2, e%e, e%nu, kind == ELEM_D_PLAN_QUAD4, k8, st)
+                ke = k8
+                if (.not. want_matrix) fe = matmul(k8, plane_deformation(x2, ue))
             end associate
         else
             call discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
@@ -325,9 +327,12 @@ contains
         logical, intent(out) :: closed
         type(status_t), intent(out) :: st
         integer(i4) :: kind, m
-        real(dp) :: kv(6), angles(3), gap, k6(6, 6), k4(4, 4)
+        real(dp) :: kv(6), angles(3), gap, k6(6, 6), k4(4, 4), k3(3, 3), k2(2, 2)
+        real(dp) :: c3(3, 2), c2(2, 2)
         logical :: global
         kind = s%model%element(c)
+        c3 = x(:, 1:2)
+        c2 = x(1:2, 1:2)
         kv = s%cara%discrete_values(:, c)
         global = s%cara%discrete_repere(c) == REPERE_GLOBAL
         angles = 0.0_dp
@@ -338,10 +343,10 @@ contains
         fn = 0.0_dp
         select case (kind)
         case (ELEM_DIS_T_SEG2)
-            call dis_t_seg2_stiffness(x(:, 1:2), kv(1:3), global, angles(3), k6, st)
+            call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
             ke = k6
         case (ELEM_2D_DIS_T_SEG2)
-            call dis_2d_t_seg2_stiffness(x(1:2, 1:2), kv(1:2), global, k4, st)
+            call dis_2d_t_seg2_stiffness(c2, kv(1:2), global, k4, st)
             ke = k4
         case (ELEM_DIS_T_POI1)
             call dis_t_poi1_stiffness(kv(1:3), global, angles, ke)
@@ -356,27 +361,94 @@ contains
         m = material_of_cell(s%materials, c)
         associate (dc => s%materials%materials(m)%dis_contact)
             if (kind == ELEM_DIS_T_SEG2) then
-                k6 = ke
+                k3 = ke(1:3, 1:3)
                 if (dc%has_rigi_nor) then
-                    call dis_choc_seg2(x(:, 1:2), ue, k6(1:3, 1:3), dc%dist_1, dc%dist_2, &
+                    call dis_choc_seg2(c3, ue, k3, dc%dist_1, dc%dist_2, &
                         elastic, closed, gap, fn, fe, ke, st, dc%rigi_nor, dc%rigi_tan)
                 else
-                    call dis_choc_seg2(x(:, 1:2), ue, k6(1:3, 1:3), dc%dist_1, dc%dist_2, &
+                    call dis_choc_seg2(c3, ue, k3, dc%dist_1, dc%dist_2, &
                         elastic, closed, gap, fn, fe, ke, st, rigi_tan=dc%rigi_tan)
                 end if
             else
-                k4 = ke
+                k2 = ke(1:2, 1:2)
                 if (dc%has_rigi_nor) then
-                    call dis_choc_2d_seg2(x(1:2, 1:2), ue, k4(1:2, 1:2), dc%dist_1, &
+                    call dis_choc_2d_seg2(c2, ue, k2, dc%dist_1, &
                         dc%dist_2, elastic, closed, gap, fn, fe, ke, st, dc%rigi_nor, &
                         dc%rigi_tan)
                 else
-                    call dis_choc_2d_seg2(x(1:2, 1:2), ue, k4(1:2, 1:2), dc%dist_1, &
+                    call dis_choc_2d_seg2(c2, ue, k2, dc%dist_1, &
                         dc%dist_2, elastic, closed, gap, fn, fe, ke, st, rigi_tan=dc%rigi_tan)
                 end if
             end if
         end associate
     end subroutine discrete_response
+
+    !> Plane QUAD4 displacements minus their rigid motion (mean translation and the
+    !> rotation about Z fitted about the centroid). K times a rigid motion is zero, so f_int
+    !> is unchanged, but the round-off of K u no longer scales with the (large) rigid part:
+    !> in SSNL130 the slab is ~1e8 times stiffer than the springs and moves ~3.5e-3 rigidly.
+    pure function plane_deformation(x, ue) result(ud)
+        real(dp), intent(in) :: x(2, 4), ue(8)
+        real(dp) :: ud(8), xc(2), uc(2), d(2), num, den, omega
+        integer(i4) :: i
+        xc = sum(x, dim=2) / 4.0_dp
+        uc = [sum(ue(1:7:2)), sum(ue(2:8:2))] / 4.0_dp
+        num = 0.0_dp
+        den = 0.0_dp
+        do i = 1, 4
+            d = x(:, i) - xc
+            num = num + d(1) * (ue(2 * i) - uc(2)) - d(2) * (ue(2 * i - 1) - uc(1))
+            den = den + d(1)**2 + d(2)**2
+        end do
+        omega = 0.0_dp
+        if (den > 0.0_dp) omega = num / den
+        do i = 1, 4
+            d = x(:, i) - xc
+            ud(2 * i - 1) = ue(2 * i - 1) - uc(1) + omega * d(2)
+            ud(2 * i) = ue(2 * i) - uc(2) - omega * d(1)
+        end do
+    end function plane_deformation
+
+    !> Plate (DX..DRZ per node) displacements minus a rigid motion: the mean translation
+    !> and the mean rotation about the in-plane axes (u = t + w x (x - xc), theta = w,
+    !> w normal to the plate). That motion has zero energy in DKT/DKQ (a rotation about the
+    !> normal would load the fictitious DRZ stiffness, so it is left in); removing it keeps
+    !> the round-off of K u proportional to the deformation (see plane_deformation).
+    pure function plate_deformation(x, nn, ue) result(ud)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: x(3, nn), ue(6 * nn)
+        real(dp) :: ud(6 * nn), xc(3), t(3), w(3), n(3), d(3)
+        integer(i4) :: i
+        if (nn == 4) then
+            n = cross(x(:, 3) - x(:, 1), x(:, 4) - x(:, 2))
+        else
+            n = cross(x(:, 2) - x(:, 1), x(:, 3) - x(:, 1))
+        end if
+        ud = ue
+        if (.not. norm2(n) > 0.0_dp) return
+        n = n / norm2(n)
+        xc = sum(x, dim=2) / real(nn, dp)
+        t = 0.0_dp
+        w = 0.0_dp
+        do i = 1, nn
+            t = t + ue(6 * i - 5:6 * i - 3)
+            w = w + ue(6 * i - 2:6 * i)
+        end do
+        t = t / real(nn, dp)
+        w = w / real(nn, dp)
+        w = w - dot_product(w, n) * n
+        do i = 1, nn
+            d = x(:, i) - xc
+            ud(6 * i - 5:6 * i - 3) = ue(6 * i - 5:6 * i - 3) - t - cross(w, d)
+            ud(6 * i - 2:6 * i) = ue(6 * i - 2:6 * i) - w
+        end do
+    end function plate_deformation
+
+    pure function cross(a, b) result(c)
+        real(dp), intent(in) :: a(3), b(3)
+        real(dp) :: c(3)
+        c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
+    end function cross
 
     !> Gathers the element displacements of a cell from u (absent equations: 0).
     pure function gather(u, eqs, n) result(ue)
@@ -389,6 +461,17 @@ contains
             if (eqs(k) > 0) ue(k) = u(eqs(k))
         end do
     end function gather
+
+    !> (Re)allocates the element matrix and vector to n equations.
+    subroutine size_element_arrays(n, ke, fe)
+        integer(i4), intent(in) :: n
+        real(dp), allocatable, intent(inout) :: ke(:, :), fe(:)
+        if (allocated(fe)) then
+            if (size(fe) == n) return
+            deallocate (ke, fe)
+        end if
+        allocate (ke(n, n), fe(n))
+    end subroutine size_element_arrays
 
     !> Assembles the stiffness of the free equations at displacements u.
     !>  elastic : in, .true. = every DIS_CHOC spring closed and bilateral (ELASTIQUE);
@@ -403,16 +486,18 @@ contains
         type(skyline_t), intent(out) :: sky
         type(status_t), intent(out) :: st
         integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS)
-        real(dp) :: ke(MAX_ELEMENT_DOFS, MAX_ELEMENT_DOFS), fe(MAX_ELEMENT_DOFS), fn
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
         logical :: closed
         sky = map%pattern
         do k = 1, size(map%cells)
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
-            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke(1:n, 1:n), &
-                fe(1:n), closed, fn, st)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
+                fn, st)
             if (st%failed()) return
-            call skyline_add_element(sky, free_of(map, eqs(1:n)), ke(1:n, 1:n), st)
+            call skyline_add_element(sky, free_of(map, eqs(1:n)), ke, st)
             if (st%failed()) return
         end do
     end subroutine assemble_stiffness
@@ -429,15 +514,17 @@ contains
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
-        real(dp) :: ke(MAX_ELEMENT_DOFS, MAX_ELEMENT_DOFS), fe(MAX_ELEMENT_DOFS), f
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: f
         logical :: is_closed
         fint = 0.0_dp
         i_spring = 0
         do k = 1, size(map%cells)
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
-            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., &
-                ke(1:n, 1:n), fe(1:n), is_closed, f, st)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
+                is_closed, f, st)
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
