@@ -112,8 +112,8 @@ contains
         if (st%ok()) call occ%get_text('CRITERE', criterion, st)
         if (st%failed()) return
         if (tole_machine < 0.0_dp .or. precision < 0.0_dp) then
-            call occ%error_at(trim(merge('TOLE_MACHINE', 'PRECISION   ', tole_machine < 0.0_dp)), &
-                              'a tolerance must be >= 0', st)
+            call occ%error_at(trim(merge('TOLE_MACHINE', 'PRECISION   ', &
+                                         tole_machine < 0.0_dp)), 'a tolerance must be >= 0', st)
             return
         end if
         if (occ%has('REFERENCE') .neqv. occ%has('VALE_REFE')) then
