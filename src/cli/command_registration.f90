@@ -6,6 +6,8 @@ module command_registration
     use session_commands, only: run_debut, run_fin
     use function_commands, only: run_defi_constante, run_defi_fonction, run_formule, &
         run_defi_list_reel
+    use test_resu_command, only: run_test_resu
+    use impr_resu_command, only: run_impr_resu
     implicit none
     private
     public :: register_commands
@@ -22,6 +24,8 @@ contains
         call ctx%register('DEFI_FONCTION', run_defi_fonction, at_check=.true.)
         call ctx%register('FORMULE', run_formule, at_check=.true.)
         call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
+        call ctx%register('TEST_RESU', run_test_resu)
+        call ctx%register('IMPR_RESU', run_impr_resu)
     end subroutine register_commands
 
 end module command_registration
