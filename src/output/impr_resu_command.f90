@@ -127,22 +127,15 @@ contains
         type(result_concept_t), intent(in) :: res
         integer(i4), allocatable, intent(out) :: indices(:)
         type(status_t), intent(out) :: st
-        real(dp), allocatable :: insts(:), values(:)
+        real(dp), allocatable :: insts(:)
         integer(i4), allocatable :: nume_ordres(:)
         if (occ%has('INST')) then
             call occ%get_reals('INST', insts, st)
             if (st%ok()) call impr_resu_instants(res, indices, st, insts=insts)
             if (st%failed()) call relocate(occ, 'INST', st)
         else if (occ%has('NUME_ORDRE')) then
-            ! get_reals, not get_ints: deck_command's set_get_ints allocates its result twice
-            ! (reported to the deck author); the catalog has already checked these are integers.
-            call occ%get_reals('NUME_ORDRE', values, st)
+            call occ%get_ints('NUME_ORDRE', nume_ordres, st)
             if (st%failed()) return
-            if (any(abs(values) > real(huge(1_i4), dp))) then
-                call occ%error_at('NUME_ORDRE', 'a NUME_ORDRE is out of range', st)
-                return
-            end if
-            nume_ordres = nint(values, kind=i4)
             call impr_resu_instants(res, indices, st, nume_ordres=nume_ordres)
             if (st%failed()) call relocate(occ, 'NUME_ORDRE', st)
         else
