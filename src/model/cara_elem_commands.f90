@@ -247,8 +247,9 @@ contains
         real(dp), allocatable :: coef(:)
         real(dp) :: centre(3)
         logical :: has_centre
-        call centre_point(occ, mesh, centre, has_centre, st)
-        if (st%failed()) return
+        ! With COEF_GROUP the centre is not used (translational springs only: it would
+        ! only matter for the moments of K_TR_*), so it is not looked up: Code_Aster decks
+        ! give GROUP_NO_CENTRE out of habit (SSNL130 model B names one its mesh lacks).
         if (occ%has('COEF_GROUP')) then
             call occ%get_reals('COEF_GROUP', coef, st)
             if (st%failed()) return
@@ -256,6 +257,8 @@ contains
             call relocate_error(occ, 'COEF_GROUP', st)
             return
         end if
+        call centre_point(occ, mesh, centre, has_centre, st)
+        if (st%failed()) return
         if (.not. has_centre) then
             call occ%error_at('FONC_GROUP', 'FONC_GROUP is a function of the distance ' // &
                 'from a centre: give GROUP_NO_CENTRE, NOEUD_CENTRE or COOR_CENTRE', st, &
