@@ -71,11 +71,29 @@ if(DEFINED COMPARE_DECK)
 endif()
 
 if(DEFINED REF)
-    execute_process(COMMAND ${DIFF} ${resu} ${REF} --rtol ${RTOL} RESULT_VARIABLE rc
+    # The ERREUR column of a TEST_RESU check line is derived from the two values beside it
+    # (compared here); it is a difference of nearly equal numbers, so its own relative change
+    # between builds is large and meaningless. It is left out of both files; TOLE stays.
+    foreach(pair "${resu};${OUTDIR}/${stem}.resu.cmp" "${REF};${OUTDIR}/${stem}.resu.ref.cmp")
+        list(GET pair 0 from)
+        list(GET pair 1 to)
+        file(STRINGS ${from} lines)
+        set(text "")
+        foreach(line IN LISTS lines)
+            if(line MATCHES "^( OK   |NOOK  )")
+                string(REGEX REPLACE "[^ ]+%( +[^ ]+%)$" "\\1" line "${line}")
+            endif()
+            string(APPEND text "${line}\n")
+        endforeach()
+        file(WRITE ${to} "${text}")
+    endforeach()
+    execute_process(COMMAND ${DIFF} ${OUTDIR}/${stem}.resu.cmp ${OUTDIR}/${stem}.resu.ref.cmp
+                            --rtol ${RTOL} RESULT_VARIABLE rc
                     OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message("${out}${err}")
     if(NOT rc EQUAL 0)
-        message(FATAL_ERROR "${resu} differs from ${REF} beyond rtol ${RTOL}")
+        message(FATAL_ERROR "${resu} differs from ${REF} beyond rtol ${RTOL} "
+                            "(ERREUR columns left out)")
     endif()
 endif()
 
