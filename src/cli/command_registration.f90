@@ -6,6 +6,12 @@ module command_registration
     use session_commands, only: run_debut, run_fin
     use function_commands, only: run_defi_constante, run_defi_fonction, run_formule, &
         run_defi_list_reel
+    use test_resu_command, only: run_test_resu
+    use impr_resu_command, only: run_impr_resu
+    use mesh_commands, only: run_lire_maillage
+    use model_commands, only: run_affe_modele
+    use material_commands, only: run_defi_materiau, run_affe_materiau
+    use cara_elem_commands, only: run_affe_cara_elem
     implicit none
     private
     public :: register_commands
@@ -22,6 +28,13 @@ contains
         call ctx%register('DEFI_FONCTION', run_defi_fonction, at_check=.true.)
         call ctx%register('FORMULE', run_formule, at_check=.true.)
         call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
+        call ctx%register('TEST_RESU', run_test_resu)
+        call ctx%register('IMPR_RESU', run_impr_resu)
+        call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
+        call ctx%register('AFFE_MODELE', run_affe_modele)
+        call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
+        call ctx%register('AFFE_MATERIAU', run_affe_materiau)
+        call ctx%register('AFFE_CARA_ELEM', run_affe_cara_elem)
     end subroutine register_commands
 
 end module command_registration

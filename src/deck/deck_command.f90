@@ -296,6 +296,7 @@ contains
         call items_of(self, key, items, st)
         allocate (x(0))
         if (st%failed()) return
+        deallocate (x)
         allocate (x(size(items)))
         do k = 1, size(items)
             if (items(k)%kind /= VK_INT .or. abs(items(k)%i) > int(huge(1_i4), i8)) then

@@ -263,6 +263,9 @@ contains
             v = str_value(ctx%ast%nodes(id)%text)
         case (N_NAME)
             call lookup(ctx, id, v, st, frame)
+            ! A name's value is located where it is used, not where it was bound, so an
+            ! error about it (e.g. a concept of the wrong type) points at the use.
+            v%line = ctx%ast%nodes(id)%line; v%col = ctx%ast%nodes(id)%col
         case (N_TUPLE, N_LIST)
             nk = ctx%ast%nkids(id)
             allocate (list%items(nk))

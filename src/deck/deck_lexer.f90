@@ -6,6 +6,7 @@
 module deck_lexer
     use kinds, only: i4
     use status, only: status_t, set_error, STATUS_DECK_ERROR
+    use strings, only: to_text
     implicit none
     private
 
@@ -141,7 +142,7 @@ contains
                 call lex_name()
             case ('(', '[', '{')
                 if (depth >= MAX_BRACKETS) then
-                    call fail('brackets nested deeper than ' // itoa(MAX_BRACKETS) // &
+                    call fail('brackets nested deeper than ' // to_text(MAX_BRACKETS) // &
                         ' levels (simplify the expression)', line, col); return
                 end if
                 depth = depth + 1
@@ -413,12 +414,5 @@ contains
         nb = nb + len(s)
     end subroutine append_text
 
-    pure function itoa(k) result(s)
-        integer, intent(in) :: k
-        character(len=:), allocatable :: s
-        character(len=12) :: buf
-        write (buf, '(i0)') k
-        s = trim(buf)
-    end function itoa
 
 end module deck_lexer

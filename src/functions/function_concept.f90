@@ -12,7 +12,7 @@
 !> did not name is an error at evaluation.
 module function_concept
     use kinds, only: dp
-    use strings, only: string_t
+    use strings, only: string_t, to_text
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use deck_concept, only: concept_t
     implicit none
@@ -94,8 +94,8 @@ contains
         call self%bind([character(len=1) :: ], probe)     ! learns the parameter names
         n = size(probe%names)
         if (n > 0 .and. size(args) /= n) then
-            call set_error(st, STATUS_MODEL_ERROR, 'the function takes ' // itoa(n) // &
-                           ' argument(s), got ' // itoa(size(args)))
+            call set_error(st, STATUS_MODEL_ERROR, 'the function takes ' // to_text(n) // &
+                           ' argument(s), got ' // to_text(size(args)))
             return
         end if
         allocate (given(size(args)))
@@ -107,13 +107,6 @@ contains
         call self%evaluate(binding, args, y, st)
     end subroutine function_call_real
 
-    pure function itoa(k) result(s)
-        integer, intent(in) :: k
-        character(len=:), allocatable :: s
-        character(len=12) :: buf
-        write (buf, '(i0)') k
-        s = trim(buf)
-    end function itoa
 
     !> Sets the "parameter not provided" error for parameter k of a binding.
     subroutine missing_parameter(fname, binding, k, st)

@@ -11,6 +11,7 @@ module result_gmsh
     use result_data, only: node_field_t, point_array_t, check_result_mesh, check_node_field, &
                            expand_node_field, RESULT_CELL_POI1, RESULT_CELL_SEG2, &
                            RESULT_CELL_TRIA3, RESULT_CELL_QUAD4
+    use strings, only: to_text
     implicit none
     private
 
@@ -97,7 +98,7 @@ contains
         character(len=128) :: buf
         integer :: i
         call file%write_line('$Nodes')
-        call file%write_line(itext(size(coords, 2)))
+        call file%write_line(to_text(size(coords, 2)))
         do i = 1, size(coords, 2)
             write (buf, '(i0, 3(" ", ' // REAL_FORMAT // '))') i, coords(:, i)
             call file%write_line(squeeze(buf))
@@ -112,7 +113,7 @@ contains
         character(len=128) :: buf
         integer :: c
         call file%write_line('$Elements')
-        call file%write_line(itext(size(cell_types)))
+        call file%write_line(to_text(size(cell_types)))
         do c = 1, size(cell_types)
             write (buf, '(*(i0, :, " "))') c, gmsh_element_type(cell_types(c)), 2, 0, 1, &
                 cell_nodes(cell_ptr(c):cell_ptr(c + 1) - 1)
@@ -136,9 +137,9 @@ contains
         write (buf, '(' // REAL_FORMAT // ')') time
         call file%write_line(trim(adjustl(buf)))
         call file%write_line('3')
-        call file%write_line(itext(step))
-        call file%write_line(itext(size(array%values, 1)))
-        call file%write_line(itext(size(array%values, 2)))
+        call file%write_line(to_text(step))
+        call file%write_line(to_text(size(array%values, 1)))
+        call file%write_line(to_text(size(array%values, 2)))
         do i = 1, size(array%values, 2)
             write (buf, '(i0, *(" ", ' // REAL_FORMAT // '))') i, array%values(:, i)
             call file%write_line(squeeze(buf))
@@ -164,12 +165,5 @@ contains
         out = buf(1:n)
     end function squeeze
 
-    pure function itext(value) result(text)
-        integer, intent(in) :: value
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') value
-        text = trim(buf)
-    end function itext
 
 end module result_gmsh

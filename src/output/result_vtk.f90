@@ -8,7 +8,7 @@
 module result_vtk
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_INTERNAL
-    use strings, only: string_t
+    use strings, only: string_t, to_text
     use atomic_file, only: atomic_file_t, open_atomic
     use result_data, only: node_field_t, point_array_t, check_result_mesh, check_node_field, &
                            expand_node_field, RESULT_CELL_POI1, RESULT_CELL_SEG2, &
@@ -66,8 +66,8 @@ contains
         call file%write_line('<VTKFile type="UnstructuredGrid" version="0.1" ' // &
                              'byte_order="LittleEndian" header_type="UInt64">')
         call file%write_line('  <UnstructuredGrid>')
-        call file%write_line('    <Piece NumberOfPoints="' // itext(size(coords, 2)) // &
-                             '" NumberOfCells="' // itext(size(cell_types)) // '">')
+        call file%write_line('    <Piece NumberOfPoints="' // to_text(size(coords, 2)) // &
+                             '" NumberOfCells="' // to_text(size(cell_types)) // '">')
         call write_point_data(file, fields)
         call file%write_line('      <Points>')
         call file%write_line('        <DataArray type="Float64" NumberOfComponents="3" ' // &
@@ -95,7 +95,7 @@ contains
             do a = 1, size(arrays)
                 call file%write_line('        <DataArray type="Float64" Name="' // &
                                      arrays(a)%name // '" NumberOfComponents="' // &
-                                     itext(size(arrays(a)%values, 1)) // '" format="ascii">')
+                                     to_text(size(arrays(a)%values, 1)) // '" format="ascii">')
                 call write_real_rows(file, arrays(a)%values)
                 call file%write_line('        </DataArray>')
             end do
@@ -119,12 +119,12 @@ contains
         call file%write_line('        </DataArray>')
         call file%write_line('        <DataArray type="Int64" Name="offsets" format="ascii">')
         do c = 1, size(cell_types)
-            call file%write_line('          ' // itext(cell_ptr(c + 1) - 1))
+            call file%write_line('          ' // to_text(cell_ptr(c + 1) - 1))
         end do
         call file%write_line('        </DataArray>')
         call file%write_line('        <DataArray type="UInt8" Name="types" format="ascii">')
         do c = 1, size(cell_types)
-            call file%write_line('          ' // itext(vtk_cell_type(cell_types(c))))
+            call file%write_line('          ' // to_text(vtk_cell_type(cell_types(c))))
         end do
         call file%write_line('        </DataArray>')
         call file%write_line('      </Cells>')
@@ -212,12 +212,5 @@ contains
         name = path(index(path, '/', back=.true.) + 1:)
     end function base_name
 
-    pure function itext(value) result(text)
-        integer, intent(in) :: value
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') value
-        text = trim(buf)
-    end function itext
 
 end module result_vtk

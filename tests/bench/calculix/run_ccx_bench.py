@@ -30,7 +30,9 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools"))  # rigid_bed_exact
 import make_ccx_bed  # noqa: E402
 import rigid_bed_exact  # noqa: E402
 

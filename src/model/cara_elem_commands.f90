@@ -1,0 +1,360 @@
+!> Command handler of element characteristics: AFFE_CARA_ELEM (doc/deck-language.md):
+!> COQUE, DISCRET, DISCRET_2D, ORIENTATION, then RIGI_PARASOL (which overrides the
+!> discrete values of its springs).
+module cara_elem_commands
+    use kinds, only: dp, i4
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
+    use strings, only: string_t, to_text, to_upper
+    use deck_concept, only: concept_t
+    use deck_command, only: command_t, keyword_set_t, concept_ref_t
+    use run_context, only: run_context_t
+    use mesh_types, only: mesh_t, cells_of_group
+    use mesh_command_support, only: relocate_error, read_groups, group_cells
+    use model_concept, only: model_concept_t
+    use model_cara_elem, only: cara_elem_init, assign_coque, assign_discrete, &
+        assign_orientation, discrete_value_count, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N
+    use model_rigi_parasol, only: rigi_parasol_table_t, compute_rigi_parasol, &
+        apply_rigi_parasol, rigi_parasol_lines, cell_centre_distances, raft_from_groups, &
+        parasol_centre
+    use function_concept, only: function_concept_t
+    use model_parasol_function, only: distance_function_values
+    use cara_elem_concept, only: cara_elem_concept_t
+    implicit none
+    private
+
+    public :: run_affe_cara_elem
+
+contains
+
+    !> AFFE_CARA_ELEM(MODELE, COQUE, DISCRET, DISCRET_2D, ORIENTATION, RIGI_PARASOL, INFO).
+    !> INFO=2 writes the RIGI_PARASOL table to the .mess:
+    !> `RIGI_PARASOL <cell> <node> <weight> <k1> <k2> [<k3>]`, then the sum of the weights.
+    !>  result : out, a cara_elem_concept_t
+    !>  st     : out, located at the keyword (AFFE_CARA_ELEM/FACTOR/KEY): a group missing in
+    !>           the mesh, EPAIS <= 0, a cell whose element does not fit the factor or
+    !>           CARA, a wrong VALE count, RIGI_PARASOL raft nodes and springs that do not
+    !>           pair one to one, FONC_GROUP without a centre
+    subroutine run_affe_cara_elem(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        type(cara_elem_concept_t), allocatable :: cc
+        class(concept_t), pointer :: p
+        integer(i4) :: i, info
+        call cmd%get_concept('MODELE', p, st)
+        if (st%failed()) return
+        select type (p)
+        type is (model_concept_t)
+            call cmd%get_int('INFO', info, st)
+            if (st%failed()) return
+            allocate (cc)
+            call cara_elem_init(cc%cara, p%mesh)
+            do i = 1, cmd%count('COQUE')
+                call coque_occurrence(cmd%occurrence('COQUE', i), p, cc, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('DISCRET')
+                call discrete_occurrence(cmd%occurrence('DISCRET', i), 'DISCRET', p, cc, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('DISCRET_2D')
+                call discrete_occurrence(cmd%occurrence('DISCRET_2D', i), 'DISCRET_2D', p, &
+                                         cc, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('ORIENTATION')
+                call orientation_occurrence(cmd%occurrence('ORIENTATION', i), p, cc, st)
+                if (st%failed()) return
+            end do
+            cc%n_parasol = cmd%count('RIGI_PARASOL')
+            allocate (cc%parasol(cc%n_parasol))
+            do i = 1, cc%n_parasol
+                call parasol_occurrence(cmd%occurrence('RIGI_PARASOL', i), p, cc%parasol(i), &
+                                        cc, st)
+                if (st%failed()) return
+                call write_parasol(ctx, p%mesh, cc%parasol(i), info)
+            end do
+        class default
+            call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
+            return
+        end select
+        call move_alloc(cc, result)
+    end subroutine run_affe_cara_elem
+
+    ! COQUE: EPAIS (> 0) and COEF_RIGI_DRZ on the plate cells of each group.
+    subroutine coque_occurrence(occ, mc, cc, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(cara_elem_concept_t), intent(inout) :: cc
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: names(:)
+        integer(i4), allocatable :: groups(:)
+        real(dp) :: epais, drz
+        integer(i4) :: g
+        call occ%get_real('EPAIS', epais, st)
+        if (st%failed()) return
+        if (epais <= 0.0_dp) then
+            call occ%error_at('EPAIS', 'the shell thickness must be > 0 (got ' // &
+                              to_text(epais) // ')', st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        call occ%get_real('COEF_RIGI_DRZ', drz, st)
+        if (st%failed()) return
+        call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
+        if (st%failed()) return
+        do g = 1, size(groups)
+            call assign_coque(cc%cara, mc%model, mc%mesh, cells_of_group(mc%mesh, groups(g)), &
+                              epais, st, coef_rigi_drz=drz, group=names(g)%s)
+            call relocate_error(occ, 'GROUP_MA', st)
+            if (st%failed()) return
+        end do
+    end subroutine coque_occurrence
+
+    ! DISCRET / DISCRET_2D: CARA, VALE (count checked at VALE), REPERE on each group.
+    subroutine discrete_occurrence(occ, keyword, mc, cc, st)
+        type(keyword_set_t), intent(in) :: occ
+        character(len=*), intent(in) :: keyword
+        type(model_concept_t), intent(in) :: mc
+        type(cara_elem_concept_t), intent(inout) :: cc
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: names(:)
+        integer(i4), allocatable :: groups(:)
+        character(len=:), allocatable :: cara, repere
+        real(dp), allocatable :: vale(:)
+        integer(i4) :: g, n
+        call occ%get_text('CARA', cara, st)
+        if (st%ok()) call occ%get_text('REPERE', repere, st)
+        if (st%ok()) call occ%get_reals('VALE', vale, st)
+        if (st%failed()) return
+        n = discrete_value_count(parse_cara(cara), keyword == 'DISCRET_2D')
+        if (size(vale) /= n) then
+            call occ%error_at('VALE', cara // ' needs ' // to_text(n) // ' values, got ' // &
+                to_text(size(vale, kind=i4)), st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
+        if (st%failed()) return
+        do g = 1, size(groups)
+            call assign_discrete(cc%cara, mc%model, mc%mesh, &
+                cells_of_group(mc%mesh, groups(g)), keyword, cara, vale, repere, st, &
+                group=names(g)%s)
+            call relocate_error(occ, 'CARA', st)
+            if (st%failed()) return
+        end do
+    end subroutine discrete_occurrence
+
+    ! ORIENTATION: CARA and VALE (count checked at VALE) on the discrete cells of each group.
+    subroutine orientation_occurrence(occ, mc, cc, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(cara_elem_concept_t), intent(inout) :: cc
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: names(:)
+        integer(i4), allocatable :: groups(:)
+        character(len=:), allocatable :: cara
+        real(dp), allocatable :: vale(:)
+        integer(i4) :: g, n
+        call occ%get_text('CARA', cara, st)
+        if (st%ok()) call occ%get_reals('VALE', vale, st)
+        if (st%failed()) return
+        n = merge(1, 3, to_upper(cara) == 'ANGL_VRIL')
+        if (size(vale) /= n) then
+            call occ%error_at('VALE', cara // ' needs ' // to_text(n) // ' values, got ' // &
+                to_text(size(vale, kind=i4)), st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
+        if (st%failed()) return
+        do g = 1, size(groups)
+            call assign_orientation(cc%cara, mc%model, mc%mesh, &
+                cells_of_group(mc%mesh, groups(g)), cara, vale, st, group=names(g)%s)
+            call relocate_error(occ, 'GROUP_MA', st)
+            if (st%failed()) return
+        end do
+    end subroutine orientation_occurrence
+
+    ! One RIGI_PARASOL occurrence: raft cells and coefficients, springs, table, stored
+    ! in cc%cara as discrete values.
+    subroutine parasol_occurrence(occ, mc, table, cc, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(rigi_parasol_table_t), intent(out) :: table
+        type(cara_elem_concept_t), intent(inout) :: cc
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: names(:), springs(:)
+        integer(i4), allocatable :: groups(:), raft(:), spring_cells(:)
+        real(dp), allocatable :: coefficients(:), vale(:)
+        character(len=:), allocatable :: spring_key, cara, label, repere
+        integer(i4) :: g
+        spring_key = 'GROUP_MA_POI1'
+        if (occ%has('GROUP_MA_SEG2')) spring_key = 'GROUP_MA_SEG2'
+        call parasol_cara_check(occ, spring_key, cara, st)
+        if (st%failed()) return
+        call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
+        if (st%failed()) return
+        call group_cells(occ, spring_key, mc%mesh, spring_cells, st)
+        if (st%ok()) call occ%get_texts(spring_key, springs, st)
+        if (st%ok()) call occ%get_reals('VALE', vale, st)
+        if (st%failed()) return
+        call raft_coefficients(occ, mc%mesh, names, groups, raft, coefficients, st)
+        if (st%failed()) return
+        label = springs(1)%s
+        do g = 2, size(springs)
+            label = label // ', ' // springs(g)%s
+        end do
+        call compute_rigi_parasol(mc%model, mc%mesh, raft, coefficients, spring_cells, cara, &
+                                  vale, table, st, spring_group=label)
+        call relocate_error(occ, spring_key, st)
+        if (st%ok()) call occ%get_text('REPERE', repere, st)
+        if (st%ok()) call apply_rigi_parasol(cc%cara, table, cara, repere, st)
+        call relocate_error(occ, 'REPERE', st)
+    end subroutine parasol_occurrence
+
+    ! CARA of RIGI_PARASOL: one of K_T_D_L (SEG2 springs) / K_T_D_N (POI1 springs).
+    subroutine parasol_cara_check(occ, spring_key, cara, st)
+        type(keyword_set_t), intent(in) :: occ
+        character(len=*), intent(in) :: spring_key
+        character(len=:), allocatable, intent(out) :: cara
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: caras(:)
+        integer(i4) :: code
+        call occ%get_texts('CARA', caras, st)
+        if (st%failed()) return
+        cara = to_upper(caras(1)%s)
+        code = parse_cara(cara)
+        if (size(caras) > 1 .or. (code /= CARA_K_T_D_L .and. code /= CARA_K_T_D_N)) then
+            call occ%error_at('CARA', 'parasol has translational springs only: give one ' // &
+                'CARA, K_T_D_L (GROUP_MA_SEG2) or K_T_D_N (GROUP_MA_POI1); rotational ' // &
+                'K_TR_* needs DIS_TR', st, code=STATUS_NOT_IMPLEMENTED)
+        else if (code == CARA_K_T_D_L .neqv. spring_key == 'GROUP_MA_SEG2') then
+            call occ%error_at('CARA', cara // ' does not fit ' // spring_key // &
+                trim(merge(': SEG2 springs take K_T_D_L', ': POI1 springs take K_T_D_N', &
+                           spring_key == 'GROUP_MA_SEG2')), st, code=STATUS_MODEL_ERROR)
+        end if
+    end subroutine parasol_cara_check
+
+    ! Raft cells of the GROUP_MA groups with their COEF_GROUP, or FONC_GROUP at the
+    ! distance of each cell centre from the centre point.
+    subroutine raft_coefficients(occ, mesh, names, groups, raft, coefficients, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(mesh_t), intent(in) :: mesh
+        type(string_t), intent(in) :: names(:)
+        integer(i4), intent(in) :: groups(:)
+        integer(i4), allocatable, intent(out) :: raft(:)
+        real(dp), allocatable, intent(out) :: coefficients(:)
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: coef(:)
+        real(dp) :: centre(3)
+        logical :: has_centre
+        ! With COEF_GROUP the centre is not used (translational springs only: it would
+        ! only matter for the moments of K_TR_*), so it is not looked up: Code_Aster decks
+        ! give GROUP_NO_CENTRE out of habit (SSNL130 model B names one its mesh lacks).
+        if (occ%has('COEF_GROUP')) then
+            call occ%get_reals('COEF_GROUP', coef, st)
+            if (st%failed()) return
+            call raft_from_groups(mesh, names, coef, raft, coefficients, st)
+            call relocate_error(occ, 'COEF_GROUP', st)
+            return
+        end if
+        call centre_point(occ, mesh, centre, has_centre, st)
+        if (st%failed()) return
+        if (.not. has_centre) then
+            call occ%error_at('FONC_GROUP', 'FONC_GROUP is a function of the distance ' // &
+                'from a centre: give GROUP_NO_CENTRE, NOEUD_CENTRE or COOR_CENTRE', st, &
+                code=STATUS_MODEL_ERROR)
+            return
+        end if
+        call function_coefficients(occ, mesh, groups, centre, raft, coefficients, st)
+    end subroutine raft_coefficients
+
+    ! The centre point, if one of GROUP_NO_CENTRE, NOEUD_CENTRE, COOR_CENTRE is given.
+    subroutine centre_point(occ, mesh, centre, has_centre, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(mesh_t), intent(in) :: mesh
+        real(dp), intent(out) :: centre(3)
+        logical, intent(out) :: has_centre
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: name
+        real(dp), allocatable :: xyz(:)
+        centre = 0.0_dp
+        has_centre = .true.
+        if (occ%has('GROUP_NO_CENTRE')) then
+            call occ%get_text('GROUP_NO_CENTRE', name, st)
+            if (st%ok()) call parasol_centre(mesh, centre, st, group=name)
+            call relocate_error(occ, 'GROUP_NO_CENTRE', st)
+        else if (occ%has('NOEUD_CENTRE')) then
+            call occ%get_text('NOEUD_CENTRE', name, st)
+            if (st%ok()) call parasol_centre(mesh, centre, st, node=name)
+            call relocate_error(occ, 'NOEUD_CENTRE', st)
+        else if (occ%has('COOR_CENTRE')) then
+            call occ%get_reals('COOR_CENTRE', xyz, st)
+            if (st%ok()) call parasol_centre(mesh, centre, st, coordinates=xyz)
+            call relocate_error(occ, 'COOR_CENTRE', st)
+        else
+            has_centre = .false.
+        end if
+    end subroutine centre_point
+
+    ! FONC_GROUP: one function for all groups or one per group, evaluated per raft cell.
+    subroutine function_coefficients(occ, mesh, groups, centre, raft, coefficients, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: groups(:)
+        real(dp), intent(in) :: centre(3)
+        integer(i4), allocatable, intent(out) :: raft(:)
+        real(dp), allocatable, intent(out) :: coefficients(:)
+        type(status_t), intent(out) :: st
+        type(concept_ref_t), allocatable :: refs(:)
+        integer(i4), allocatable :: members(:)
+        real(dp), allocatable :: values(:)
+        integer(i4) :: g, n
+        call occ%get_concepts('FONC_GROUP', refs, st)
+        if (st%failed()) return
+        if (size(refs) /= 1 .and. size(refs) /= size(groups)) then
+            call occ%error_at('FONC_GROUP', 'FONC_GROUP needs 1 function or one per group (' &
+                // to_text(size(groups, kind=i4)) // '), got ' // &
+                to_text(size(refs, kind=i4)), st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        n = 0
+        do g = 1, size(groups)
+            n = n + size(cells_of_group(mesh, groups(g)), kind=i4)
+        end do
+        allocate (raft(n), coefficients(n))
+        n = 0
+        do g = 1, size(groups)
+            members = cells_of_group(mesh, groups(g))
+            select type (f => refs(min(g, size(refs, kind=i4)))%ptr)
+            class is (function_concept_t)
+                call distance_function_values(f, &
+                    cell_centre_distances(mesh, members, centre), values, st)
+            class default
+                call set_error(st, STATUS_MODEL_ERROR, 'expected a function, got ' // &
+                               f%type_name())
+            end select
+            call relocate_error(occ, 'FONC_GROUP', st)
+            if (st%failed()) return
+            raft(n + 1:n + size(members)) = members
+            coefficients(n + 1:n + size(members)) = values
+            n = n + size(members, kind=i4)
+        end do
+    end subroutine function_coefficients
+
+    ! .mess: one line per occurrence; INFO=2 adds the table.
+    subroutine write_parasol(ctx, mesh, table, info)
+        type(run_context_t), intent(inout) :: ctx
+        type(mesh_t), intent(in) :: mesh
+        type(rigi_parasol_table_t), intent(in) :: table
+        integer(i4), intent(in) :: info
+        character(len=120), allocatable :: lines(:)
+        integer(i4) :: k
+        call ctx%write_mess('    RIGI_PARASOL ' // to_text(table%n) // ' springs')
+        if (info < 2) return
+        lines = rigi_parasol_lines(mesh, table)
+        do k = 1, size(lines)
+            call ctx%write_mess(trim(lines(k)))
+        end do
+    end subroutine write_parasol
+
+end module cara_elem_commands
