@@ -1,0 +1,335 @@
+!> Command handlers MECA_STATIQUE and STAT_NON_LINE: gather the structure from the MODELE,
+!> CHAM_MATER and CARA_ELEM concepts, the EXCIT loads, COMPORTEMENT (DIS_CHOC cells),
+!> INCREMENT, NEWTON, CONVERGENCE and SOLVEUR, run the core (linear_static,
+!> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
+module analysis_commands
+    use kinds, only: dp, i4
+    use status, only: status_t, STATUS_MODEL_ERROR
+    use strings, only: to_text, real_e13
+    use deck_concept, only: concept_t
+    use deck_command, only: command_t, keyword_set_t
+    use run_context, only: run_context_t
+    use mesh_command_support, only: group_cells, all_cells
+    use model_types, only: is_discrete
+    use model_concept, only: model_concept_t
+    use material_concept, only: material_field_concept_t
+    use cara_elem_concept, only: cara_elem_concept_t
+    use model_cara_elem, only: cara_elem_init
+    use model_material, only: material_field_init
+    use load_commands, only: char_meca_concept_t
+    use function_concept, only: function_concept_t
+    use real_list, only: real_list_t
+    use assembly_system, only: structure_t, structure_check
+    use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
+        newton_summary_t
+    use linear_static, only: meca_statique
+    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION
+    use analysis_log, only: analysis_log_t
+    implicit none
+    private
+
+    public :: run_stat_non_line, run_meca_statique
+
+contains
+
+    !> STAT_NON_LINE (see contact_newton for the algorithm and its defaults).
+    !>  st : out, located errors (concept types, COMPORTEMENT, INCREMENT); analysis failures
+    !>       (STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, STATUS_SINGULAR) at the command
+    subroutine run_stat_non_line(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        type(structure_t) :: s
+        type(excitation_t), allocatable :: excit(:)
+        type(newton_options_t) :: options
+        type(result_concept_t), allocatable :: res
+        type(analysis_log_t) :: log
+        type(newton_summary_t) :: summary
+        real(dp), allocatable :: times(:)
+        integer(i4) :: k
+        call gather_structure(cmd, s, st)
+        if (st%ok()) call gather_excitations(cmd, excit, st)
+        if (st%ok()) call read_behaviour(cmd, s, st)
+        if (st%ok()) call read_increment(cmd, times, st)
+        if (st%ok()) call read_newton(ctx, cmd, options, st)
+        if (st%failed()) return
+        call structure_check(s, st)
+        if (st%failed()) return
+        call ctx%write_mess('    ' // to_text(count(s%choc)) // ' DIS_CHOC cell(s), ' // &
+            to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
+        allocate (res)
+        call stat_non_line(s, excit, times, options, res, log, summary, st)
+        do k = 1, log%n
+            call ctx%write_mess('    ' // log%lines(k)%s)
+        end do
+        if (st%failed()) return
+        call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
+            ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
+            ' factorization(s) in ' // to_text(summary%n_steps) // ' step(s)')
+        call move_alloc(res, result)
+    end subroutine run_stat_non_line
+
+    !> MECA_STATIQUE: linear statics at INST / LIST_INST (default: INST = 0).
+    subroutine run_meca_statique(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        type(structure_t) :: s
+        type(excitation_t), allocatable :: excit(:)
+        type(newton_options_t) :: options
+        type(result_concept_t), allocatable :: res
+        type(analysis_log_t) :: log
+        real(dp), allocatable :: times(:)
+        class(concept_t), pointer :: p
+        integer(i4) :: k
+        call gather_structure(cmd, s, st)
+        if (st%ok()) call gather_excitations(cmd, excit, st)
+        if (st%ok()) call read_newton(ctx, cmd, options, st)
+        if (st%failed()) return
+        allocate (s%choc(s%mesh%n_cells), source=.false.)
+        times = [0.0_dp]
+        if (cmd%has('INST')) call cmd%get_reals('INST', times, st)
+        if (cmd%has('LIST_INST')) then
+            call cmd%get_concept('LIST_INST', p, st)
+            if (st%ok()) then
+                select type (p)
+                type is (real_list_t)
+                    times = p%values
+                end select
+            end if
+        end if
+        if (st%failed()) return
+        call structure_check(s, st)
+        if (st%failed()) return
+        allocate (res)
+        call meca_statique(s, excit, times, options%factor, trim(options%renum), res, log, st)
+        do k = 1, log%n
+            call ctx%write_mess('    ' // log%lines(k)%s)
+        end do
+        if (st%failed()) return
+        call move_alloc(res, result)
+    end subroutine run_meca_statique
+
+    !> MODELE, CHAM_MATER, CARA_ELEM -> the structure (copies).
+    subroutine gather_structure(cmd, s, st)
+        type(command_t), intent(in) :: cmd
+        type(structure_t), intent(out) :: s
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        call cmd%get_concept('MODELE', p, st)
+        if (st%failed()) return
+        select type (p)
+        type is (model_concept_t)
+            s%mesh = p%mesh
+            s%model = p%model
+            s%dofs = p%dofs
+        class default
+            call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
+            return
+        end select
+        call material_field_init(s%materials, s%mesh)
+        if (cmd%has('CHAM_MATER')) then
+            call cmd%get_concept('CHAM_MATER', p, st)
+            if (st%failed()) return
+            select type (p)
+            type is (material_field_concept_t)
+                s%materials = p%field
+            class default
+                call cmd%error_at('CHAM_MATER', 'expected a material field (cham_mater), ' // &
+                    'got ' // p%type_name(), st)
+                return
+            end select
+        end if
+        call cara_elem_init(s%cara, s%mesh)
+        if (cmd%has('CARA_ELEM')) then
+            call cmd%get_concept('CARA_ELEM', p, st)
+            if (st%failed()) return
+            select type (p)
+            type is (cara_elem_concept_t)
+                s%cara = p%cara
+            class default
+                call cmd%error_at('CARA_ELEM', 'expected element characteristics ' // &
+                    '(cara_elem), got ' // p%type_name(), st)
+                return
+            end select
+        end if
+    end subroutine gather_structure
+
+    !> EXCIT occurrences: CHARGE (char_meca) and optional FONC_MULT.
+    subroutine gather_excitations(cmd, excit, st)
+        type(command_t), intent(in) :: cmd
+        type(excitation_t), allocatable, intent(out) :: excit(:)
+        type(status_t), intent(out) :: st
+        type(keyword_set_t) :: occ
+        class(concept_t), pointer :: p
+        integer(i4) :: k
+        allocate (excit(cmd%count('EXCIT')))
+        do k = 1, size(excit)
+            occ = cmd%occurrence('EXCIT', k)
+            call occ%get_concept('CHARGE', p, st)
+            if (st%failed()) return
+            select type (p)
+            type is (char_meca_concept_t)
+                excit(k)%load => p%loads
+            class default
+                call occ%error_at('CHARGE', 'expected a load (char_meca), got ' // &
+                    p%type_name(), st)
+                return
+            end select
+            if (.not. occ%has('FONC_MULT')) cycle
+            call occ%get_concept('FONC_MULT', p, st)
+            if (st%failed()) return
+            select type (p)
+            class is (function_concept_t)
+                excit(k)%fonc_mult => p
+            class default
+                call occ%error_at('FONC_MULT', 'expected a function, got ' // p%type_name(), st)
+                return
+            end select
+        end do
+    end subroutine gather_excitations
+
+    !> COMPORTEMENT: RELATION per cell (TOUT or GROUP_MA; later occurrences win). DIS_CHOC
+    !> only on discrete (DIS_T / 2D_DIS_T) cells.
+    subroutine read_behaviour(cmd, s, st)
+        type(command_t), intent(in) :: cmd
+        type(structure_t), intent(inout) :: s
+        type(status_t), intent(out) :: st
+        type(keyword_set_t) :: occ
+        character(len=:), allocatable :: relation
+        integer(i4), allocatable :: cells(:)
+        integer(i4) :: k
+        allocate (s%choc(s%mesh%n_cells), source=.false.)
+        do k = 1, cmd%count('COMPORTEMENT')
+            occ = cmd%occurrence('COMPORTEMENT', k)
+            call occ%get_text('RELATION', relation, st)
+            if (st%failed()) return
+            if (occ%has('GROUP_MA')) then
+                call group_cells(occ, 'GROUP_MA', s%mesh, cells, st)
+                if (st%failed()) return
+                if (relation == 'DIS_CHOC' .and. .not. all(is_discrete(s%model%element(cells)))) &
+                    then
+                    call occ%error_at('GROUP_MA', 'DIS_CHOC applies to discrete (DIS_T, ' // &
+                        '2D_DIS_T) cells only; ' // to_text(count(.not. is_discrete( &
+                        s%model%element(cells)))) // ' cell(s) of the group are not', st, &
+                        code=STATUS_MODEL_ERROR)
+                    return
+                end if
+            else
+                cells = all_cells(s%mesh)
+                if (relation == 'DIS_CHOC') cells = pack(cells, is_discrete(s%model%element))
+            end if
+            s%choc(cells) = relation == 'DIS_CHOC'
+        end do
+    end subroutine read_behaviour
+
+    !> INCREMENT: LIST_INST restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices
+    !> from 0). times(1) is the initial instant.
+    subroutine read_increment(cmd, times, st)
+        type(command_t), intent(in) :: cmd
+        real(dp), allocatable, intent(out) :: times(:)
+        type(status_t), intent(out) :: st
+        type(keyword_set_t) :: occ
+        class(concept_t), pointer :: p
+        real(dp) :: t0, t1
+        integer(i4) :: i0, i1
+        occ = cmd%occurrence('INCREMENT', 1)
+        call occ%get_concept('LIST_INST', p, st)
+        if (st%failed()) return
+        select type (p)
+        type is (real_list_t)
+            times = p%values
+        class default
+            call occ%error_at('LIST_INST', 'expected a list of reals (DEFI_LIST_REEL)', st)
+            return
+        end select
+        i0 = 1
+        i1 = size(times, kind=i4)
+        if (occ%has('NUME_INST_INIT')) call occ%get_int('NUME_INST_INIT', i0, st)
+        if (occ%has('NUME_INST_INIT')) i0 = i0 + 1
+        if (occ%has('NUME_INST_FIN')) call occ%get_int('NUME_INST_FIN', i1, st)
+        if (occ%has('NUME_INST_FIN')) i1 = i1 + 1
+        if (occ%has('INST_INIT')) then
+            call occ%get_real('INST_INIT', t0, st)
+            i0 = instant_index(times, t0)
+        end if
+        if (occ%has('INST_FIN')) then
+            call occ%get_real('INST_FIN', t1, st)
+            i1 = instant_index(times, t1)
+        end if
+        if (st%failed()) return
+        if (i0 < 1 .or. i1 > size(times) .or. i1 <= i0) then
+            call occ%error_at('LIST_INST', 'the increment selects no step of the list ' // &
+                '(initial index ' // to_text(i0 - 1) // ', final ' // to_text(i1 - 1) // &
+                ', list of ' // to_text(size(times)) // ' instants)', st, &
+                code=STATUS_MODEL_ERROR)
+            return
+        end if
+        times = times(i0:i1)
+    end subroutine read_increment
+
+    !> Index of instant t in the list (relative precision RESULT_INST_PRECISION), 0 if none.
+    pure integer(i4) function instant_index(times, t) result(k)
+        real(dp), intent(in) :: times(:), t
+        do k = 1, size(times, kind=i4)
+            if (abs(times(k) - t) <= RESULT_INST_PRECISION * max(abs(t), 1.0_dp)) return
+        end do
+        k = 0
+    end function instant_index
+
+    !> NEWTON, CONVERGENCE, SOLVEUR.
+    subroutine read_newton(ctx, cmd, options, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        type(newton_options_t), intent(out) :: options
+        type(status_t), intent(out) :: st
+        type(keyword_set_t) :: occ
+        character(len=:), allocatable :: text
+        if (cmd%count('NEWTON') > 0) then
+            occ = cmd%occurrence('NEWTON', 1)
+            options%prediction_given = occ%has('PREDICTION')
+            if (options%prediction_given) then
+                call occ%get_text('PREDICTION', text, st)
+                options%prediction_elastic = text == 'ELASTIQUE'
+            end if
+            call occ%get_text('MATRICE', text, st)
+            options%matrix_elastic = text == 'ELASTIQUE'
+            if (st%ok()) call occ%get_int('REAC_ITER', options%reac_iter, st)
+            if (st%ok()) call occ%get_int('REAC_INCR', options%reac_incr, st)
+            if (st%failed()) return
+        end if
+        if (cmd%count('CONVERGENCE') > 0) then
+            occ = cmd%occurrence('CONVERGENCE', 1)
+            if (occ%has('RESI_GLOB_MAXI')) then
+                options%use_maxi = .true.
+                options%use_rela = .false.
+                call occ%get_real('RESI_GLOB_MAXI', options%resi_glob_maxi, st)
+            end if
+            if (occ%has('RESI_GLOB_RELA')) call occ%get_real('RESI_GLOB_RELA', &
+                options%resi_glob_rela, st)
+            if (st%ok()) call occ%get_int('ITER_GLOB_MAXI', options%iter_glob_maxi, st)
+            if (st%failed()) return
+        end if
+        if (cmd%count('SOLVEUR') == 0) return
+        occ = cmd%occurrence('SOLVEUR', 1)
+        call occ%get_text('METHODE', text, st)
+        if (st%failed()) return
+        if (text /= 'LDLT') call ctx%write_mess('    SOLVEUR/METHODE ' // text // &
+            ': parasol solves with its LDLT skyline solver')
+        if (occ%has('RENUM')) then
+            call occ%get_text('RENUM', text, st)
+            if (text == 'RCMK' .or. text == 'METIS' .or. text == 'SANS') then
+                options%renum = text
+            else
+                call ctx%write_mess('    SOLVEUR/RENUM ' // text // ': not available, RCMK used')
+            end if
+        end if
+        call occ%get_int('NPREC', options%factor%nprec, st)
+        if (st%ok()) call occ%get_text('STOP_SINGULIER', text, st)
+        if (st%failed()) return
+        options%factor%stop_singular = text == 'OUI'
+    end subroutine read_newton
+
+end module analysis_commands

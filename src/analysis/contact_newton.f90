@@ -1,0 +1,561 @@
+!> STAT_NON_LINE core: quasi-static time stepping with DIS_CHOC springs (design.md,
+!> "STAT_NON_LINE"; Code_Aster U4.51.03 for the NEWTON/CONVERGENCE keywords).
+!>
+!> Per step (instant t+): imposed values and external forces at t+; then iterations
+!> u <- u + K^-1 (f_ext - f_int(u)) on the free equations, iteration 0 being the prediction.
+!> K is the "elastic" matrix (every DIS_CHOC spring closed and bilateral; assembled and
+!> factored once per analysis and reused) or the tangent at the current spring status.
+!>   prediction: PREDICTION (default: the MATRICE choice, as Code_Aster); a tangent
+!>               prediction is rebuilt every REAC_INCR steps (1), otherwise reused;
+!>   corrections: MATRICE = ELASTIQUE: the elastic matrix; TANGENTE: rebuilt every REAC_ITER
+!>               iterations (REAC_ITER = 0, the default: the prediction's matrix is kept).
+!> Convergence: RESI_GLOB_RELA = max|f_ext - f_int| (free equations) / max(max|f_ext|,
+!> max|reactions|) <= tolerance (and RESI_GLOB_MAXI = the numerator <= its value if given)
+!> and no spring changed status in the last iteration. A zero denominator (no load) switches
+!> to the absolute criterion (RESI_GLOB_MAXI, or the RESI_GLOB_RELA value in N), and the
+!> .mess says so. Failures: STATUS_NO_CONVERGENCE (ITER_GLOB_MAXI exceeded, or a contact
+!> status cycle under full Newton), STATUS_NO_EQUILIBRIUM (springs open and the structure
+!> left free), STATUS_SINGULAR (a singular model with the springs closed).
+module contact_newton
+    use kinds, only: dp, i4, i8
+    use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
+        STATUS_SINGULAR
+    use strings, only: to_text, real_e13
+    use mesh_types, only: cell_name
+    use model_dof_numbering, only: describe_equation
+    use model_loads, only: load_set_t
+    use function_concept, only: function_concept_t, param_binding_t
+    use skyline_matrix, only: skyline_t
+    use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t, &
+        factor_report_t
+    use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
+        assemble_stiffness, internal_forces, renumbering_lines
+    use assembly_loads, only: mark_imposed, impose_values, add_external_forces
+    use analysis_result, only: result_concept_t, result_init, result_store
+    use analysis_log, only: analysis_log_t, log_add
+    implicit none
+    private
+
+    !> Code_Aster defaults (U4.51.03): RESI_GLOB_RELA 1e-6, ITER_GLOB_MAXI 10.
+    real(dp), parameter, public :: DEFAULT_RESI_GLOB_RELA = 1.0e-6_dp
+    integer(i4), parameter, public :: DEFAULT_ITER_GLOB_MAXI = 10
+    !> Springs named in a list before it is abbreviated.
+    integer(i4), parameter :: LIST_NAMES = 6
+    integer(i4), parameter :: MATRIX_NONE = 0, MATRIX_ELASTIC = 1, MATRIX_TANGENT = 2
+    !> A pivot below this fraction of the largest diagonal term is at the round-off level
+    !> of the stiffest terms (~1e4 machine epsilons): a free rigid motion, even when the
+    !> equation's own diagonal is small enough for NPREC not to flag it (e.g. a DX left free
+    !> under a plate 1e8 times stiffer than its springs).
+    real(dp), parameter :: RIGID_PIVOT_RATIO = 1.0e-12_dp
+
+    !> NEWTON, CONVERGENCE and SOLVEUR options.
+    type, public :: newton_options_t
+        logical :: prediction_given = .false.      !< PREDICTION given
+        logical :: prediction_elastic = .false.    !< PREDICTION = 'ELASTIQUE'
+        logical :: matrix_elastic = .false.        !< MATRICE = 'ELASTIQUE' (default TANGENTE)
+        integer(i4) :: reac_iter = 0               !< NEWTON/REAC_ITER
+        integer(i4) :: reac_incr = 1               !< NEWTON/REAC_INCR
+        logical :: use_rela = .true.               !< RESI_GLOB_RELA criterion active
+        real(dp) :: resi_glob_rela = DEFAULT_RESI_GLOB_RELA
+        logical :: use_maxi = .false.              !< RESI_GLOB_MAXI given
+        real(dp) :: resi_glob_maxi = 0.0_dp
+        integer(i4) :: iter_glob_maxi = DEFAULT_ITER_GLOB_MAXI
+        type(factor_options_t) :: factor           !< NPREC, STOP_SINGULIER
+        character(len=8) :: renum = 'RCMK'         !< SOLVEUR/RENUM
+    end type newton_options_t
+
+    !> One EXCIT occurrence: a char_meca's load set and an optional FONC_MULT of INST.
+    !> Both pointers refer to concepts owned by the run context (not freed here).
+    type, public :: excitation_t
+        type(load_set_t), pointer :: load => null()
+        class(function_concept_t), pointer :: fonc_mult => null()
+    end type excitation_t
+
+    !> What each step cost.
+    type, public :: newton_summary_t
+        integer(i4) :: n_steps = 0
+        real(dp), allocatable :: inst(:)
+        integer(i4), allocatable :: iterations(:)      !< Newton iterations (excl. prediction)
+        integer(i4), allocatable :: factorizations(:)
+        real(dp), allocatable :: resi_rela(:), resi_maxi(:)
+    end type newton_summary_t
+
+    !> The analysis state carried from iteration to iteration and step to step.
+    type :: newton_state_t
+        real(dp), allocatable :: u(:), fint(:), fext(:), fn(:)
+        logical, allocatable :: closed(:)
+        type(skyline_t) :: elastic, tangent
+        logical :: have_elastic = .false., have_tangent = .false.
+        integer(i4) :: current = MATRIX_NONE
+        integer(i4) :: factorizations = 0
+        logical :: refactored = .false.
+    end type newton_state_t
+
+    public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear
+
+contains
+
+    !> Runs STAT_NON_LINE.
+    !>  s        : in, the structure (s%choc marks the DIS_CHOC cells)
+    !>  excit    : in, the EXCIT occurrences
+    !>  times    : in, times(1) = INST_INIT, times(2:) the ends of the steps (increasing)
+    !>  options  : in, NEWTON/CONVERGENCE/SOLVEUR
+    !>  res      : out, evol_noli: NUME_ORDRE 0 = zero state at INST_INIT, then each step
+    !>  log      : inout, .mess lines (renumbering, Newton table per step)
+    !>  summary  : out, iterations and factorizations per step
+    !>  st       : out, see the module header; the result holds the converged steps
+    subroutine stat_non_line(s, excit, times, options, res, log, summary, st)
+        type(structure_t), intent(in) :: s
+        type(excitation_t), intent(in) :: excit(:)
+        real(dp), intent(in) :: times(:)
+        type(newton_options_t), intent(in) :: options
+        type(result_concept_t), intent(out) :: res
+        type(analysis_log_t), intent(inout) :: log
+        type(newton_summary_t), intent(out) :: summary
+        type(status_t), intent(out) :: st
+        type(assembly_map_t) :: map
+        type(newton_state_t) :: state
+        logical, allocatable :: imposed(:)
+        character(len=100) :: lines(2)
+        integer(i4) :: k, step, n_eq
+        n_eq = s%dofs%n_equations
+        allocate (imposed(n_eq), source=.false.)
+        do k = 1, size(excit)
+            call mark_imposed(s, excit(k)%load, imposed, st)
+            if (st%failed()) return
+        end do
+        call build_assembly_map(s, imposed, trim(options%renum), map, st)
+        if (st%failed()) return
+        lines = renumbering_lines(map)
+        call log_add(log, lines(1))
+        call log_add(log, lines(2))
+        call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
+        allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), source=0.0_dp)
+        allocate (state%closed(size(map%springs)), state%fn(size(map%springs)))
+        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+        if (st%failed()) return
+        call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
+        call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
+            state%closed, state%fn)
+        n_eq = int(size(times), i4) - 1
+        allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
+            summary%resi_rela(n_eq), summary%resi_maxi(n_eq))
+        do step = 1, int(size(times), i4) - 1
+            call newton_step(s, map, excit, times(step + 1), step, options, state, log, &
+                summary, st)
+            if (st%failed()) return
+            call result_store(res, step, times(step + 1), state%u, state%fint, &
+                reactions(map, state), state%closed, state%fn)
+        end do
+    end subroutine stat_non_line
+
+    !> Reactions f_int - f_ext on the imposed equations, 0 elsewhere.
+    pure function reactions(map, state) result(reac)
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(in) :: state
+        real(dp) :: reac(size(state%u))
+        reac = merge(state%fint - state%fext, 0.0_dp, map%imposed)
+    end function reactions
+
+    !> Imposed values into u and external forces at t, over all EXCIT occurrences.
+    !>  st : out, function evaluation errors (FONC_MULT included)
+    subroutine loads_at(s, excit, t, u, fext, st)
+        type(structure_t), intent(in) :: s
+        type(excitation_t), intent(in) :: excit(:)
+        real(dp), intent(in) :: t
+        real(dp), intent(inout) :: u(:)
+        real(dp), intent(out) :: fext(:)
+        type(status_t), intent(out) :: st
+        type(param_binding_t) :: binding
+        real(dp) :: factor
+        integer(i4) :: k
+        fext = 0.0_dp
+        do k = 1, size(excit)
+            factor = 1.0_dp
+            if (associated(excit(k)%fonc_mult)) then
+                call excit(k)%fonc_mult%bind(['INST'], binding)
+                call excit(k)%fonc_mult%evaluate(binding, [t], factor, st)
+                if (st%failed()) then
+                    call set_error(st, st%code, 'EXCIT/FONC_MULT: ' // st%message)
+                    return
+                end if
+            end if
+            call impose_values(s, excit(k)%load, t, factor, u, st)
+            if (st%ok()) call add_external_forces(s, excit(k)%load, t, factor, fext, st)
+            if (st%failed()) return
+        end do
+    end subroutine loads_at
+
+    !> RESI_GLOB_MAXI = max|f_ext - f_int| over the free equations and RESI_GLOB_RELA =
+    !> that / max(max|f_ext|, max|reactions|); zero_load when the denominator is 0 (then
+    !> resi_rela is returned as 0 and the caller must use the absolute criterion).
+    pure subroutine residual_measures(imposed, fint, fext, resi_rela, resi_maxi, zero_load)
+        logical, intent(in) :: imposed(:)
+        real(dp), intent(in) :: fint(:), fext(:)
+        real(dp), intent(out) :: resi_rela, resi_maxi
+        logical, intent(out) :: zero_load
+        real(dp) :: denominator
+        resi_maxi = maxval(abs(fext - fint), mask=.not. imposed, dim=1)
+        if (count(.not. imposed) == 0) resi_maxi = 0.0_dp
+        denominator = maxval(abs(fext), dim=1)
+        if (any(imposed)) denominator = max(denominator, &
+            maxval(abs(fint - fext), mask=imposed, dim=1))
+        zero_load = .not. denominator > 0.0_dp
+        resi_rela = 0.0_dp
+        if (.not. zero_load) resi_rela = resi_maxi / denominator
+    end subroutine residual_measures
+
+    !> One step of STAT_NON_LINE (see the module header).
+    subroutine newton_step(s, map, excit, t, step, options, state, log, summary, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(excitation_t), intent(in) :: excit(:)
+        real(dp), intent(in) :: t
+        integer(i4), intent(in) :: step
+        type(newton_options_t), intent(in) :: options
+        type(newton_state_t), intent(inout) :: state
+        type(analysis_log_t), intent(inout) :: log
+        type(newton_summary_t), intent(inout) :: summary
+        type(status_t), intent(out) :: st
+        logical, allocatable :: start(:), history(:, :)
+        real(dp), allocatable :: r(:), resi_history(:)
+        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds
+        integer(i4) :: iter, changed, use, repeat_of
+        integer(i8) :: t0, t1, rate
+        logical :: zero_load, converged, said_zero
+        call log_add(log, '')
+        call log_add(log, 'INST ' // real_e13(t) // ' (step ' // to_text(step) // ')')
+        call log_add(log, ' ITER  RESI_GLOB_RELA  RESI_GLOB_MAXI  MATRIX                ' // &
+            'CLOSED CHANGED  TIME(s)')
+        call loads_at(s, excit, t, state%u, state%fext, st)
+        if (st%failed()) return
+        start = state%closed
+        allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
+            resi_history(0:options%iter_glob_maxi), r(map%n_free))
+        state%factorizations = 0
+        previous_maxi = huge(1.0_dp)
+        said_zero = .false.
+        converged = .false.
+        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+        if (st%failed()) return
+        do iter = 0, options%iter_glob_maxi
+            call system_clock(t0, rate)
+            use = choose_matrix(options, iter, step, state)
+            call factor_and_diagnose(s, map, state, use, options%factor, t, log, st)
+            if (st%failed()) return
+            r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
+            if (use == MATRIX_ELASTIC) call skyline_solve(state%elastic, r, st)
+            if (use == MATRIX_TANGENT) call skyline_solve(state%tangent, r, st)
+            if (st%failed()) return
+            state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
+            history(:, iter) = state%closed
+            call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+            if (st%failed()) return
+            changed = count(state%closed .neqv. history(:, iter), kind=i4)
+            call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
+                resi_maxi, zero_load)
+            resi_history(iter) = resi_maxi
+            call system_clock(t1)
+            seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
+            call log_add(log, iteration_row(iter, resi_rela, resi_maxi, zero_load, use, &
+                state%refactored, count(state%closed, kind=i4), changed, seconds))
+            if (zero_load .and. .not. said_zero) then
+                call log_add(log, '  no load and no reaction: RESI_GLOB_RELA is undefined,' &
+                    // ' absolute criterion RESI_GLOB_MAXI <= ' // real_e13(absolute_tol( &
+                    options)) // ' N used')
+                said_zero = .true.
+            end if
+            converged = changed == 0 .and. criteria_met(options, resi_rela, resi_maxi, &
+                zero_load)
+            if (converged) exit
+            call check_no_equilibrium(s, map, state, use, iter, resi_maxi, previous_maxi, &
+                t, st)
+            if (st%failed()) return
+            previous_maxi = resi_maxi
+            repeat_of = cycle_start(history(:, 0:iter), state%closed)
+            if (repeat_of >= 0 .and. changed > 0) then
+                call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+                    ' repeats iteration ' // to_text(repeat_of) // ' (cycling)')
+                if (.not. options%matrix_elastic .and. options%reac_iter == 1) then
+                    call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
+                        ': the contact status cycles (iteration ' // to_text(iter) // &
+                        ' repeats iteration ' // to_text(repeat_of) // '); springs ' // &
+                        'changing: ' // changed_names(s, map, history(:, iter), &
+                        state%closed))
+                    return
+                end if
+            end if
+        end do
+        if (.not. converged) then
+            call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
+                ': no convergence in ITER_GLOB_MAXI = ' // to_text(options%iter_glob_maxi) // &
+                ' iterations; RESI_GLOB_MAXI history: ' // history_text(resi_history) // &
+                '; springs still changing: ' // changed_names(s, map, &
+                history(:, options%iter_glob_maxi), state%closed))
+            return
+        end if
+        call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
+            to_text(state%factorizations) // ' factorization(s); ' // &
+            to_text(count(state%closed, kind=i4)) // ' of ' // to_text(size(state%closed)) // &
+            ' springs closed')
+        call log_add(log, '  closed in the step: ' // changed_names(s, map, start, &
+            state%closed, want_closed=.true.))
+        call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
+            state%closed, want_closed=.false.))
+        summary%n_steps = step
+        summary%inst(step) = t
+        summary%iterations(step) = iter
+        summary%factorizations(step) = state%factorizations
+        summary%resi_rela(step) = resi_rela
+        summary%resi_maxi(step) = resi_maxi
+    end subroutine newton_step
+
+    !> Absolute tolerance of the zero-load case: RESI_GLOB_MAXI if given, else the
+    !> RESI_GLOB_RELA value read in newtons.
+    pure real(dp) function absolute_tol(options)
+        type(newton_options_t), intent(in) :: options
+        absolute_tol = options%resi_glob_rela
+        if (options%use_maxi) absolute_tol = options%resi_glob_maxi
+    end function absolute_tol
+
+    pure logical function criteria_met(options, resi_rela, resi_maxi, zero_load)
+        type(newton_options_t), intent(in) :: options
+        real(dp), intent(in) :: resi_rela, resi_maxi
+        logical, intent(in) :: zero_load
+        if (zero_load) then
+            criteria_met = resi_maxi <= absolute_tol(options)
+            return
+        end if
+        criteria_met = .true.
+        if (options%use_rela) criteria_met = resi_rela <= options%resi_glob_rela
+        if (options%use_maxi) criteria_met = criteria_met .and. &
+            resi_maxi <= options%resi_glob_maxi
+    end function criteria_met
+
+    !> Which matrix iteration `iter` of step `step` uses; marks a tangent to rebuild by
+    !> dropping it (factor_and_diagnose then assembles and factors).
+    integer(i4) function choose_matrix(options, iter, step, state) result(use)
+        type(newton_options_t), intent(in) :: options
+        integer(i4), intent(in) :: iter, step
+        type(newton_state_t), intent(inout) :: state
+        logical :: elastic
+        if (iter == 0) then
+            elastic = options%matrix_elastic
+            if (options%prediction_given) elastic = options%prediction_elastic
+            if (elastic) then
+                use = MATRIX_ELASTIC
+            else
+                use = MATRIX_TANGENT
+                if (options%reac_incr > 0) then
+                    if (mod(step - 1, options%reac_incr) == 0) state%have_tangent = .false.
+                end if
+            end if
+        else if (options%matrix_elastic) then
+            use = MATRIX_ELASTIC
+        else
+            use = state%current
+            if (options%reac_iter > 0) then
+                if (mod(iter, options%reac_iter) == 0) then
+                    use = MATRIX_TANGENT
+                    state%have_tangent = .false.
+                end if
+            end if
+        end if
+        state%current = use
+    end function choose_matrix
+
+    !> Assembles and factors the matrix `use` if it is not ready (see assemble_and_factor).
+    subroutine factor_and_diagnose(s, map, state, use, options, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(in) :: use
+        type(factor_options_t), intent(in) :: options
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        state%refactored = .false.
+        if (use == MATRIX_ELASTIC .and. state%have_elastic) return
+        if (use == MATRIX_TANGENT .and. state%have_tangent) return
+        if (use == MATRIX_ELASTIC) then
+            call assemble_and_factor(s, map, state%u, .true., state%closed, state%elastic, &
+                options, t, log, st)
+            state%have_elastic = st%ok()
+        else
+            call assemble_and_factor(s, map, state%u, .false., state%closed, state%tangent, &
+                options, t, log, st)
+            state%have_tangent = st%ok()
+        end if
+        if (st%failed()) return
+        state%refactored = .true.
+        state%factorizations = state%factorizations + 1
+    end subroutine factor_and_diagnose
+
+    !> MECA_STATIQUE: assembles and factors the (linear) stiffness at u.
+    subroutine factor_and_diagnose_linear(s, map, u, sky, options, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:)
+        type(skyline_t), intent(out) :: sky
+        type(factor_options_t), intent(in) :: options
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        logical :: none(0)
+        call assemble_and_factor(s, map, u, .false., none, sky, options, 0.0_dp, log, st)
+    end subroutine factor_and_diagnose_linear
+
+    !> Assembles the matrix at u (elastic or tangent) and factors it. A flagged pivot
+    !> becomes STATUS_NO_EQUILIBRIUM (tangent with open springs: the structure is left free),
+    !> STATUS_SINGULAR (STOP_SINGULIER = OUI) naming node and component, or a warning line.
+    !>  closed : in, the spring statuses (for the no-equilibrium message)
+    subroutine assemble_and_factor(s, map, u, elastic, closed, sky, options, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), t
+        logical, intent(in) :: elastic, closed(:)
+        type(skyline_t), intent(out) :: sky
+        type(factor_options_t), intent(in) :: options
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        type(factor_options_t) :: lenient
+        type(factor_report_t) :: report
+        character(len=:), allocatable :: where
+        integer(i4) :: n_open
+        real(dp) :: largest
+        integer(i4) :: rigid
+        lenient = options
+        lenient%stop_singular = .false.
+        call assemble_stiffness(s, map, u, elastic, sky, st)
+        if (st%failed()) return
+        largest = 0.0_dp
+        if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
+        call skyline_factor(sky, report, st, lenient)
+        if (st%failed()) return
+        rigid = 0
+        if (sky%n > 0) rigid = findloc(abs(sky%values(sky%diag(1:sky%n))) <= &
+            RIGID_PIVOT_RATIO * largest, .true., dim=1)
+        if (report%n_flagged == 0 .and. rigid == 0) return
+        if (report%n_flagged > 0) then
+            where = describe_equation(s%dofs, s%mesh, &
+                map%free_to_eq(report%flagged_equations(1)))
+            where = where // ' (pivot lost ' // real_digits(report%flagged_digits_lost(1)) &
+                // ' digits, NPREC = ' // to_text(merge(abs(options%nprec), 8_i4, &
+                options%nprec /= 0)) // ')'
+        else
+            where = describe_equation(s%dofs, s%mesh, map%free_to_eq(rigid)) // &
+                ' (pivot ' // real_e13(sky%values(sky%diag(rigid))) // ' against a largest ' &
+                // 'diagonal term ' // real_e13(largest) // ')'
+        end if
+        n_open = count(.not. closed, kind=i4)
+        if (.not. elastic .and. n_open > 0) then
+            call set_error(st, STATUS_NO_EQUILIBRIUM, 'INST ' // real_e13(t) // &
+                ': no equilibrium: ' // to_text(n_open) // ' of ' // &
+                to_text(size(closed)) // ' DIS_CHOC springs are open and the ' // &
+                'structure is left free: rigid motion at ' // where)
+        else if (options%stop_singular) then
+            call set_error(st, STATUS_SINGULAR, 'singular matrix at ' // where // ', ' // &
+                to_text(max(report%n_flagged, 1_i4)) // ' pivot(s) flagged: a support ' // &
+                '(DDL_IMPO) or a stiffness is missing there')
+        else
+            call log_add(log, '  warning: matrix nearly singular at ' // where // ', ' // &
+                to_text(max(report%n_flagged, 1_i4)) // ' pivot(s) flagged ' // &
+                '(STOP_SINGULIER = NON)')
+        end if
+    end subroutine assemble_and_factor
+
+    !> With every spring open, an elastic-matrix iteration that does not reduce the residual
+    !> means nothing holds the structure (the elastic matrix itself is regular).
+    subroutine check_no_equilibrium(s, map, state, use, iter, resi_maxi, previous_maxi, t, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(in) :: state
+        integer(i4), intent(in) :: use, iter
+        real(dp), intent(in) :: resi_maxi, previous_maxi, t
+        type(status_t), intent(out) :: st
+        if (use /= MATRIX_ELASTIC .or. iter < 1 .or. size(state%closed) == 0) return
+        if (any(state%closed)) return
+        if (resi_maxi < 0.999_dp * previous_maxi) return
+        call set_error(st, STATUS_NO_EQUILIBRIUM, 'INST ' // real_e13(t) // &
+            ': no equilibrium: ' // to_text(size(state%closed)) // ' of ' // &
+            to_text(size(state%closed)) // ' DIS_CHOC springs are open (from ' // &
+            cell_name(s%mesh, map%springs(1)) // ') and the residual ' // &
+            real_e13(resi_maxi) // ' N no longer decreases: the structure is left free')
+    end subroutine check_no_equilibrium
+
+    !> Earliest iteration whose status set equals `now`, except the last one; -1 if none.
+    pure integer(i4) function cycle_start(history, now) result(k)
+        logical, intent(in) :: history(:, 0:), now(:)
+        integer(i4) :: j
+        k = -1
+        do j = 0, int(ubound(history, 2), i4) - 1
+            if (all(history(:, j) .eqv. now)) then
+                k = j
+                return
+            end if
+        end do
+    end function cycle_start
+
+    !> Names of the springs whose status differs between before and after (optionally only
+    !> those that ended closed / open); the list is cut after LIST_NAMES names.
+    function changed_names(s, map, before, after, want_closed) result(text)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        logical, intent(in) :: before(:), after(:)
+        logical, intent(in), optional :: want_closed
+        character(len=:), allocatable :: text
+        integer(i4) :: k, n
+        n = 0
+        text = ''
+        do k = 1, size(before)
+            if (before(k) .eqv. after(k)) cycle
+            if (present(want_closed)) then
+                if (after(k) .neqv. want_closed) cycle
+            end if
+            n = n + 1
+            if (n <= LIST_NAMES) then
+                if (n > 1) text = text // ' '
+                text = text // cell_name(s%mesh, map%springs(k))
+            end if
+        end do
+        if (n > LIST_NAMES) text = text // ' ... (' // to_text(n) // ' in all)'
+        if (n == 0) text = 'none'
+    end function changed_names
+
+    function history_text(values) result(text)
+        real(dp), intent(in) :: values(0:)
+        character(len=:), allocatable :: text
+        integer(i4) :: k
+        character(len=12) :: buf
+        text = ''
+        do k = 0, int(ubound(values, 1), i4)
+            write (buf, '(es10.3)') values(k)
+            text = text // ' ' // trim(adjustl(buf))
+        end do
+    end function history_text
+
+    function real_digits(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: text
+        character(len=8) :: buf
+        write (buf, '(f5.1)') x
+        text = trim(adjustl(buf))
+    end function real_digits
+
+    !> One row of the Newton table.
+    function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, refactored, n_closed, &
+                           changed, seconds) result(line)
+        integer(i4), intent(in) :: iter, use, n_closed, changed
+        real(dp), intent(in) :: resi_rela, resi_maxi, seconds
+        logical, intent(in) :: zero_load, refactored
+        character(len=100) :: line
+        character(len=22) :: matrix
+        character(len=14) :: rela
+        matrix = merge('ELASTIQUE', 'TANGENTE ', use == MATRIX_ELASTIC)
+        matrix = trim(matrix) // merge(' factored', ' reused  ', refactored)
+        write (rela, '(es14.6)') resi_rela
+        if (zero_load) rela = '     undefined'
+        write (line, '(i5, 2x, a14, 2x, es14.6, 2x, a22, i6, i8, f9.3)') iter, rela, &
+            resi_maxi, matrix, n_closed, changed, seconds
+    end function iteration_row
+
+end module contact_newton

@@ -1,0 +1,540 @@
+!> Global system of a static analysis: the structure (mesh, model, materials, element
+!> characteristics, DOF numbering, DIS_CHOC cells), the numbering of the free equations
+!> (imposed ones are eliminated, RCMK/METIS/SANS renumbering of the nodes), the skyline
+!> profile, assembly of the stiffness (springs at their current DIS_CHOC status or
+!> "elastic": all closed and bilateral) and the internal forces f_int(u) with the spring
+!> statuses. Vectors u, f_int, f_ext are indexed by the ORIGINAL equations of
+!> structure%dofs; the skyline is indexed by the free equations map%free_eq(eq).
+module assembly_system
+    use kinds, only: dp, i4, i8
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
+    use strings, only: to_text
+    use mesh_types, only: mesh_t, cell_label, CELL_POI1
+    use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
+        is_discrete_2d, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, ELEM_DIS_T_POI1, &
+        ELEM_2D_DIS_T_POI1, ELEM_D_PLAN_QUAD4, ELEMENT_NAMES
+    use model_material, only: material_field_t, material_t, material_of_cell
+    use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
+        ORIENT_ANGL_NAUT
+    use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
+    use element_plate, only: plate_stiffness, plate_internal_forces
+    use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
+    use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
+        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
+    use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2
+    use skyline_matrix, only: skyline_t, skyline_build_profile, skyline_add_element, &
+        skyline_profile_size, skyline_bandwidth
+    use renumbering, only: renumber_graph, graph_from_elements
+    implicit none
+    private
+
+    !> Largest element vector (DKQ: 4 nodes x 6 components).
+    integer(i4), parameter, public :: MAX_ELEMENT_DOFS = 24
+
+    !> What an analysis works on (copied once from the concepts of the deck).
+    type, public :: structure_t
+        type(mesh_t) :: mesh
+        type(model_t) :: model
+        type(material_field_t) :: materials
+        type(cara_elem_t) :: cara
+        type(dof_numbering_t) :: dofs
+        logical, allocatable :: choc(:)     !< (n_cells) COMPORTEMENT DIS_CHOC on the cell
+    end type structure_t
+
+    !> Free-equation numbering, the skyline profile and the renumbering figures.
+    type, public :: assembly_map_t
+        integer(i4) :: n_free = 0
+        integer(i4), allocatable :: free_eq(:)      !< (n_equations) free number, 0 = imposed
+        integer(i4), allocatable :: free_to_eq(:)   !< (n_free) original equation
+        logical, allocatable :: imposed(:)          !< (n_equations)
+        integer(i4), allocatable :: cells(:)        !< modelled cells with a stiffness
+        integer(i4), allocatable :: springs(:)      !< DIS_CHOC cells (result order)
+        character(len=:), allocatable :: renum      !< RCMK, METIS or SANS
+        integer(i8) :: profile_before = 0, profile_after = 0
+        integer(i4) :: bandwidth_before = 0, bandwidth_after = 0
+        type(skyline_t) :: pattern                  !< profile with zero values
+    end type assembly_map_t
+
+    public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
+        internal_forces, renumbering_lines
+
+contains
+
+    !> Checks that every modelled cell has what its element needs: ELAS (plates, plane
+    !> solids), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC springs; SEG2 only).
+    !>  st : out, STATUS_MODEL_ERROR naming the cell (and its group when given), or
+    !>       STATUS_NOT_IMPLEMENTED for DIS_CHOC on a POI1 or with COULOMB
+    subroutine structure_check(s, st, group_of)
+        type(structure_t), intent(in) :: s
+        type(status_t), intent(out) :: st
+        character(len=*), intent(in), optional :: group_of
+        integer(i4) :: c, kind, m
+        character(len=:), allocatable :: what
+        do c = 1, s%mesh%n_cells
+            kind = s%model%element(c)
+            if (kind == ELEM_NONE .or. is_plane_edge(kind)) cycle
+            m = material_of_cell(s%materials, c)
+            what = ''
+            if (is_plate(kind) .or. is_plane_solid(kind)) then
+                if (m == 0) then
+                    what = 'no material (AFFE_MATERIAU)'
+                else if (.not. s%materials%materials(m)%has_elas) then
+                    what = 'no ELAS in its material'
+                end if
+                if (is_plate(kind) .and. .not. s%cara%has_coque(c)) &
+                    what = 'no COQUE thickness (AFFE_CARA_ELEM)'
+            else if (is_discrete(kind)) then
+                if (s%cara%discrete_cara(c) == CARA_NONE) &
+                    what = 'no DISCRET stiffness (AFFE_CARA_ELEM DISCRET or RIGI_PARASOL)'
+                if (s%choc(c) .and. len(what) == 0) then
+                    if (m == 0) then
+                        what = 'DIS_CHOC but no material (AFFE_MATERIAU with DIS_CONTACT)'
+                    else if (.not. s%materials%materials(m)%has_dis_contact) then
+                        what = 'DIS_CHOC but no DIS_CONTACT in its material'
+                    else if (s%mesh%cell_type(c) == CELL_POI1) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, 'DIS_CHOC on ' // &
+                            cell_label(s%mesh, c, group_of) // ' (POI1) is not built; ' // &
+                            'use SEG2 springs')
+                        return
+                    else if (s%materials%materials(m)%dis_contact%coulomb > 0.0_dp) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, 'DIS_CONTACT COULOMB ' // &
+                            '(friction) on ' // cell_label(s%mesh, c, group_of) // &
+                            ' is not built; use COULOMB = 0')
+                        return
+                    end if
+                end if
+            end if
+            if (len(what) > 0) then
+                call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c, group_of) // &
+                    ' (' // trim(ELEMENT_NAMES(kind)) // ') has ' // what)
+                return
+            end if
+        end do
+    end subroutine structure_check
+
+    !> Original equations of a cell, node by node, its element's components in order.
+    !>  n : out, number of equations (size of the element vectors)
+    subroutine element_equations(s, c, eqs, n)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        integer(i4), intent(out) :: eqs(MAX_ELEMENT_DOFS), n
+        logical :: mask(N_COMPONENTS)
+        integer(i4) :: p, comp
+        mask = element_components(s%model%element(c))
+        n = 0
+        eqs = 0
+        do p = s%mesh%cell_ptr(c), s%mesh%cell_ptr(c + 1) - 1
+            do comp = 1, N_COMPONENTS
+                if (.not. mask(comp)) cycle
+                n = n + 1
+                eqs(n) = s%dofs%equation(comp, s%mesh%cell_nodes(p))
+            end do
+        end do
+    end subroutine element_equations
+
+    !> Numbers the free equations (nodes renumbered by `renum`, then their non-imposed
+    !> components in order) and builds the skyline profile; records profile and bandwidth
+    !> before (original node order) and after renumbering.
+    !>  imposed : in, (n_equations) .true. for the equations of DDL_IMPO
+    !>  renum   : in, 'RCMK' (default of Code_Aster LDLT), 'METIS' or 'SANS'
+    !>  st      : out, unknown method, or a renumbering/profile failure
+    subroutine build_assembly_map(s, imposed, renum, map, st)
+        type(structure_t), intent(in) :: s
+        logical, intent(in) :: imposed(:)
+        character(len=*), intent(in) :: renum
+        type(assembly_map_t), intent(out) :: map
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: identity(:), new_to_old(:), old_to_new(:), xadj(:), adjncy(:)
+        integer(i4) :: c, n_cells, k
+        type(skyline_t) :: before
+        map%imposed = imposed
+        map%renum = renum
+        n_cells = 0
+        allocate (map%cells(s%mesh%n_cells), map%springs(s%mesh%n_cells))
+        k = 0
+        do c = 1, s%mesh%n_cells
+            if (s%model%element(c) == ELEM_NONE .or. is_plane_edge(s%model%element(c))) cycle
+            n_cells = n_cells + 1
+            map%cells(n_cells) = c
+            if (s%choc(c) .and. is_discrete(s%model%element(c))) then
+                k = k + 1
+                map%springs(k) = c
+            end if
+        end do
+        map%cells = map%cells(1:n_cells)
+        map%springs = map%springs(1:k)
+        call node_graph(s, map%cells, xadj, adjncy, st)
+        if (st%failed()) return
+        call renumber_graph(renum, s%mesh%n_nodes, xadj, adjncy, new_to_old, old_to_new, st)
+        if (st%failed()) return
+        identity = [(k, k = 1, s%mesh%n_nodes)]
+        call number_free(s, imposed, identity, map)
+        call build_profile(s, map, before, st)
+        if (st%failed()) return
+        map%profile_before = skyline_profile_size(before)
+        map%bandwidth_before = skyline_bandwidth(before)
+        call number_free(s, imposed, new_to_old, map)
+        call build_profile(s, map, map%pattern, st)
+        if (st%failed()) return
+        map%profile_after = skyline_profile_size(map%pattern)
+        map%bandwidth_after = skyline_bandwidth(map%pattern)
+    end subroutine build_assembly_map
+
+    !> Node graph of the cells with a stiffness.
+    subroutine node_graph(s, cells, xadj, adjncy, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: cells(:)
+        integer(i4), allocatable, intent(out) :: xadj(:), adjncy(:)
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: ptr(:), nodes(:)
+        integer(i4) :: k, c, n
+        allocate (ptr(size(cells) + 1))
+        ptr(1) = 1
+        do k = 1, size(cells)
+            c = cells(k)
+            ptr(k + 1) = ptr(k) + s%mesh%cell_ptr(c + 1) - s%mesh%cell_ptr(c)
+        end do
+        allocate (nodes(ptr(size(cells) + 1) - 1))
+        do k = 1, size(cells)
+            c = cells(k)
+            n = s%mesh%cell_ptr(c + 1) - s%mesh%cell_ptr(c)
+            nodes(ptr(k):ptr(k + 1) - 1) = s%mesh%cell_nodes(s%mesh%cell_ptr(c): &
+                s%mesh%cell_ptr(c + 1) - 1)
+        end do
+        call graph_from_elements(s%mesh%n_nodes, ptr, nodes, xadj, adjncy, st)
+    end subroutine node_graph
+
+    !> Free equation numbers in the node order `order` (new_to_old).
+    subroutine number_free(s, imposed, order, map)
+        type(structure_t), intent(in) :: s
+        logical, intent(in) :: imposed(:)
+        integer(i4), intent(in) :: order(:)
+        type(assembly_map_t), intent(inout) :: map
+        integer(i4) :: k, comp, eq
+        if (allocated(map%free_eq)) deallocate (map%free_eq)
+        allocate (map%free_eq(s%dofs%n_equations), source=0_i4)
+        map%n_free = 0
+        do k = 1, size(order)
+            do comp = 1, N_COMPONENTS
+                eq = s%dofs%equation(comp, order(k))
+                if (eq <= 0) cycle
+                if (imposed(eq)) cycle
+                map%n_free = map%n_free + 1
+                map%free_eq(eq) = map%n_free
+            end do
+        end do
+        if (allocated(map%free_to_eq)) deallocate (map%free_to_eq)
+        allocate (map%free_to_eq(map%n_free))
+        do eq = 1, s%dofs%n_equations
+            if (map%free_eq(eq) > 0) map%free_to_eq(map%free_eq(eq)) = eq
+        end do
+    end subroutine number_free
+
+    !> Skyline profile of the free equations under the current numbering.
+    subroutine build_profile(s, map, sky, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(skyline_t), intent(out) :: sky
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: ptr(:), eqs_all(:)
+        integer(i4) :: k, n, eqs(MAX_ELEMENT_DOFS)
+        allocate (ptr(size(map%cells) + 1), eqs_all(MAX_ELEMENT_DOFS * size(map%cells)))
+        ptr(1) = 1
+        do k = 1, size(map%cells)
+            call element_equations(s, map%cells(k), eqs, n)
+            eqs_all(ptr(k):ptr(k) + n - 1) = free_of(map, eqs(1:n))
+            ptr(k + 1) = ptr(k) + n
+        end do
+        call skyline_build_profile(sky, map%n_free, ptr, eqs_all(1:ptr(size(ptr)) - 1), st)
+    end subroutine build_profile
+
+    !> Free numbers of original equations (0 for imposed or absent ones).
+    pure function free_of(map, eqs) result(free)
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(in) :: eqs(:)
+        integer(i4) :: free(size(eqs)), k
+        do k = 1, size(eqs)
+            free(k) = 0
+            if (eqs(k) > 0) free(k) = map%free_eq(eqs(k))
+        end do
+    end function free_of
+
+    !> .mess lines on the renumbering: method, equations, profile and bandwidth before/after.
+    function renumbering_lines(map) result(lines)
+        type(assembly_map_t), intent(in) :: map
+        character(len=100) :: lines(2)
+        lines(1) = 'RENUM ' // map%renum // ': ' // to_text(map%n_free) // &
+            ' free equations'
+        lines(2) = 'profile ' // to_text(map%profile_before) // ' -> ' // &
+            to_text(map%profile_after) // ' terms, bandwidth ' // &
+            to_text(map%bandwidth_before) // ' -> ' // to_text(map%bandwidth_after)
+    end function renumbering_lines
+
+    !> Element matrix and internal forces of one cell at element displacements ue.
+    !>  elastic : in, DIS_CHOC springs give the closed bilateral matrix
+    !>  closed  : out, DIS_CHOC status (.true. for other elements); fn : out, normal force
+    subroutine cell_response(s, c, ue, n, elastic, want_matrix, ke, fe, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: ue(n)
+        logical, intent(in) :: elastic, want_matrix
+        real(dp), intent(out) :: ke(n, n), fe(n), fn
+        logical, intent(out) :: closed
+        type(status_t), intent(out) :: st
+        integer(i4) :: kind, m, nn, p0
+        real(dp) :: x(3, 4), x2(2, 4), k8(8, 8)
+        kind = s%model%element(c)
+        p0 = s%mesh%cell_ptr(c)
+        nn = s%mesh%cell_ptr(c + 1) - p0
+        x(:, 1:nn) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
+        m = material_of_cell(s%materials, c)
+        closed = .true.
+        fn = 0.0_dp
+        ke = 0.0_dp
+        fe = 0.0_dp
+        if (is_plate(kind)) then
+            associate (e => s%materials%materials(m)%elas)
+                if (want_matrix) then
+                    call plate_stiffness(x(:, 1:nn), nn, e%e, e%nu, s%cara%thickness(c), &
+                        s%cara%coef_rigi_drz(c), ke, st)
+                else
+                    call plate_internal_forces(x(:, 1:nn), nn, e%e, e%nu, &
+                        s%cara%thickness(c), s%cara%coef_rigi_drz(c), &
+                        plate_deformation(x(:, 1:nn), nn, ue), fe, st)
+                end if
+            end associate
+        else if (is_plane_solid(kind)) then
+            associate (e => s%materials%materials(m)%elas)
+                x2 = x(1:2, 1:4)
+                call plane_quad4_stiffness(x2, e%e, e%nu, kind == ELEM_D_PLAN_QUAD4, k8, st)
+                ke = k8
+                if (.not. want_matrix) fe = matmul(k8, plane_deformation(x2, ue))
+            end associate
+        else
+            call discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
+        end if
+        if (st%failed()) call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // &
+            st%message)
+    end subroutine cell_response
+
+    !> Springs: linear DIS_T / 2D_DIS_T, or DIS_CHOC on SEG2.
+    subroutine discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(3, 4), ue(n)
+        logical, intent(in) :: elastic
+        real(dp), intent(out) :: ke(n, n), fe(n), fn
+        logical, intent(out) :: closed
+        type(status_t), intent(out) :: st
+        integer(i4) :: kind, m
+        real(dp) :: kv(6), angles(3), gap, k6(6, 6), k4(4, 4), k3(3, 3), k2(2, 2)
+        real(dp) :: c3(3, 2), c2(2, 2)
+        logical :: global
+        kind = s%model%element(c)
+        c3 = x(:, 1:2)
+        c2 = x(1:2, 1:2)
+        kv = s%cara%discrete_values(:, c)
+        global = s%cara%discrete_repere(c) == REPERE_GLOBAL
+        angles = 0.0_dp
+        if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
+            s%cara%orientation_values(1, c)
+        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
+        closed = .true.
+        fn = 0.0_dp
+        select case (kind)
+        case (ELEM_DIS_T_SEG2)
+            call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
+            ke = k6
+        case (ELEM_2D_DIS_T_SEG2)
+            call dis_2d_t_seg2_stiffness(c2, kv(1:2), global, k4, st)
+            ke = k4
+        case (ELEM_DIS_T_POI1)
+            call dis_t_poi1_stiffness(kv(1:3), global, angles, ke)
+        case (ELEM_2D_DIS_T_POI1)
+            call dis_2d_t_poi1_stiffness(kv(1:2), global, angles(1), ke)
+        end select
+        if (st%failed()) return
+        if (.not. s%choc(c)) then
+            fe = matmul(ke, ue)
+            return
+        end if
+        m = material_of_cell(s%materials, c)
+        associate (dc => s%materials%materials(m)%dis_contact)
+            if (kind == ELEM_DIS_T_SEG2) then
+                k3 = ke(1:3, 1:3)
+                if (dc%has_rigi_nor) then
+                    call dis_choc_seg2(c3, ue, k3, dc%dist_1, dc%dist_2, &
+                        elastic, closed, gap, fn, fe, ke, st, dc%rigi_nor, dc%rigi_tan)
+                else
+                    call dis_choc_seg2(c3, ue, k3, dc%dist_1, dc%dist_2, &
+                        elastic, closed, gap, fn, fe, ke, st, rigi_tan=dc%rigi_tan)
+                end if
+            else
+                k2 = ke(1:2, 1:2)
+                if (dc%has_rigi_nor) then
+                    call dis_choc_2d_seg2(c2, ue, k2, dc%dist_1, &
+                        dc%dist_2, elastic, closed, gap, fn, fe, ke, st, dc%rigi_nor, &
+                        dc%rigi_tan)
+                else
+                    call dis_choc_2d_seg2(c2, ue, k2, dc%dist_1, &
+                        dc%dist_2, elastic, closed, gap, fn, fe, ke, st, rigi_tan=dc%rigi_tan)
+                end if
+            end if
+        end associate
+    end subroutine discrete_response
+
+    !> Plane QUAD4 displacements minus their rigid motion (mean translation and the
+    !> rotation about Z fitted about the centroid). K times a rigid motion is zero, so f_int
+    !> is unchanged, but the round-off of K u no longer scales with the (large) rigid part:
+    !> in SSNL130 the slab is ~1e8 times stiffer than the springs and moves ~3.5e-3 rigidly.
+    pure function plane_deformation(x, ue) result(ud)
+        real(dp), intent(in) :: x(2, 4), ue(8)
+        real(dp) :: ud(8), xc(2), uc(2), d(2), num, den, omega
+        integer(i4) :: i
+        xc = sum(x, dim=2) / 4.0_dp
+        uc = [sum(ue(1:7:2)), sum(ue(2:8:2))] / 4.0_dp
+        num = 0.0_dp
+        den = 0.0_dp
+        do i = 1, 4
+            d = x(:, i) - xc
+            num = num + d(1) * (ue(2 * i) - uc(2)) - d(2) * (ue(2 * i - 1) - uc(1))
+            den = den + d(1)**2 + d(2)**2
+        end do
+        omega = 0.0_dp
+        if (den > 0.0_dp) omega = num / den
+        do i = 1, 4
+            d = x(:, i) - xc
+            ud(2 * i - 1) = ue(2 * i - 1) - uc(1) + omega * d(2)
+            ud(2 * i) = ue(2 * i) - uc(2) - omega * d(1)
+        end do
+    end function plane_deformation
+
+    !> Plate (DX..DRZ per node) displacements minus a rigid motion: the mean translation
+    !> and the mean rotation about the in-plane axes (u = t + w x (x - xc), theta = w,
+    !> w normal to the plate). That motion has zero energy in DKT/DKQ (a rotation about the
+    !> normal would load the fictitious DRZ stiffness, so it is left in); removing it keeps
+    !> the round-off of K u proportional to the deformation (see plane_deformation).
+    pure function plate_deformation(x, nn, ue) result(ud)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: x(3, nn), ue(6 * nn)
+        real(dp) :: ud(6 * nn), xc(3), t(3), w(3), n(3), d(3)
+        integer(i4) :: i
+        if (nn == 4) then
+            n = cross(x(:, 3) - x(:, 1), x(:, 4) - x(:, 2))
+        else
+            n = cross(x(:, 2) - x(:, 1), x(:, 3) - x(:, 1))
+        end if
+        ud = ue
+        if (.not. norm2(n) > 0.0_dp) return
+        n = n / norm2(n)
+        xc = sum(x, dim=2) / real(nn, dp)
+        t = 0.0_dp
+        w = 0.0_dp
+        do i = 1, nn
+            t = t + ue(6 * i - 5:6 * i - 3)
+            w = w + ue(6 * i - 2:6 * i)
+        end do
+        t = t / real(nn, dp)
+        w = w / real(nn, dp)
+        w = w - dot_product(w, n) * n
+        do i = 1, nn
+            d = x(:, i) - xc
+            ud(6 * i - 5:6 * i - 3) = ue(6 * i - 5:6 * i - 3) - t - cross(w, d)
+            ud(6 * i - 2:6 * i) = ue(6 * i - 2:6 * i) - w
+        end do
+    end function plate_deformation
+
+    pure function cross(a, b) result(c)
+        real(dp), intent(in) :: a(3), b(3)
+        real(dp) :: c(3)
+        c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
+    end function cross
+
+    !> Gathers the element displacements of a cell from u (absent equations: 0).
+    pure function gather(u, eqs, n) result(ue)
+        real(dp), intent(in) :: u(:)
+        integer(i4), intent(in) :: eqs(:), n
+        real(dp) :: ue(n)
+        integer(i4) :: k
+        do k = 1, n
+            ue(k) = 0.0_dp
+            if (eqs(k) > 0) ue(k) = u(eqs(k))
+        end do
+    end function gather
+
+    !> (Re)allocates the element matrix and vector to n equations.
+    subroutine size_element_arrays(n, ke, fe)
+        integer(i4), intent(in) :: n
+        real(dp), allocatable, intent(inout) :: ke(:, :), fe(:)
+        if (allocated(fe)) then
+            if (size(fe) == n) return
+            deallocate (ke, fe)
+        end if
+        allocate (ke(n, n), fe(n))
+    end subroutine size_element_arrays
+
+    !> Assembles the stiffness of the free equations at displacements u.
+    !>  elastic : in, .true. = every DIS_CHOC spring closed and bilateral (ELASTIQUE);
+    !>            .false. = springs at the status u gives them (TANGENTE)
+    !>  sky     : out, the assembled matrix (profile of map%pattern)
+    !>  st      : out, element failures, naming the cell
+    subroutine assemble_stiffness(s, map, u, elastic, sky, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:)
+        logical, intent(in) :: elastic
+        type(skyline_t), intent(out) :: sky
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
+        logical :: closed
+        sky = map%pattern
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
+                fn, st)
+            if (st%failed()) return
+            call skyline_add_element(sky, free_of(map, eqs(1:n)), ke, st)
+            if (st%failed()) return
+        end do
+    end subroutine assemble_stiffness
+
+    !> Internal forces f_int(u) on every original equation, and the DIS_CHOC states.
+    !>  fint   : out, (n_equations)
+    !>  closed : out, (size(map%springs)) status of each DIS_CHOC spring
+    !>  fn     : out, (size(map%springs)) normal force of each (<= 0 when closed)
+    subroutine internal_forces(s, map, u, fint, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:)
+        real(dp), intent(out) :: fint(:), fn(:)
+        logical, intent(out) :: closed(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: f
+        logical :: is_closed
+        fint = 0.0_dp
+        i_spring = 0
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
+                is_closed, f, st)
+            if (st%failed()) return
+            do j = 1, n
+                if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
+            end do
+            if (s%choc(c) .and. is_discrete(s%model%element(c))) then
+                i_spring = i_spring + 1
+                closed(i_spring) = is_closed
+                fn(i_spring) = f
+            end if
+        end do
+    end subroutine internal_forces
+
+end module assembly_system

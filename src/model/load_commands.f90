@@ -1,0 +1,254 @@
+!> Command handlers AFFE_CHAR_MECA (real values) and AFFE_CHAR_MECA_F (function values):
+!> a char_meca concept holding a load_set_t (model_loads) and the model it was made on.
+!> Function values point at function concepts owned by the run context (model_loads).
+module load_commands
+    use kinds, only: dp, i4
+    use status, only: status_t, STATUS_MODEL_ERROR
+    use strings, only: string_t, to_text
+    use deck_concept, only: concept_t
+    use deck_command, only: command_t, keyword_set_t
+    use run_context, only: run_context_t
+    use mesh_types, only: mesh_t, find_node_group, find_node, nodes_of_group, nodes_of_cells
+    use mesh_command_support, only: relocate_error, group_cells, all_cells
+    use model_types, only: is_plate, is_plane_edge
+    use model_concept, only: model_concept_t
+    use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
+        LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
+        LOAD_FORCE_CONTOUR, SLOT_PRES
+    use function_concept, only: function_concept_t
+    implicit none
+    private
+
+    !> The char_meca concept.
+    type, extends(concept_t), public :: char_meca_concept_t
+        type(load_set_t) :: loads
+        class(concept_t), pointer :: model => null()   !< MODELE (owned by the run context)
+    contains
+        procedure :: type_name => char_meca_type_name
+        procedure :: summary => char_meca_summary
+    end type char_meca_concept_t
+
+    public :: run_affe_char_meca, run_affe_char_meca_f
+
+contains
+
+    function char_meca_type_name(self) result(name)
+        class(char_meca_concept_t), intent(in) :: self
+        character(len=:), allocatable :: name
+        name = 'char_meca'
+        if (.false.) name = self%name
+    end function char_meca_type_name
+
+    function char_meca_summary(self) result(text)
+        class(char_meca_concept_t), intent(in) :: self
+        character(len=:), allocatable :: text
+        text = 'char_meca with ' // to_text(self%loads%n_items) // ' load item(s)'
+    end function char_meca_summary
+
+    !> AFFE_CHAR_MECA: DDL_IMPO, FORCE_NODALE, FORCE_COQUE, PRES_REP, FORCE_CONTOUR with reals.
+    !>  st : out, located at the keyword: unknown group/node, a load on cells of the wrong
+    !>       element kind
+    subroutine run_affe_char_meca(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        call build_char_meca(ctx, cmd, .false., result, st)
+    end subroutine run_affe_char_meca
+
+    !> AFFE_CHAR_MECA_F: the same with functions of (INST, X, Y, Z) as values.
+    subroutine run_affe_char_meca_f(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        call build_char_meca(ctx, cmd, .true., result, st)
+    end subroutine run_affe_char_meca_f
+
+    subroutine build_char_meca(ctx, cmd, functions, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        logical, intent(in) :: functions
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        type(char_meca_concept_t), allocatable :: cm
+        class(concept_t), pointer :: p
+        integer(i4) :: i
+        call cmd%get_concept('MODELE', p, st)
+        if (st%failed()) return
+        allocate (cm)
+        cm%model => p
+        select type (p)
+        type is (model_concept_t)
+            do i = 1, cmd%count('DDL_IMPO')
+                call node_item(cmd%occurrence('DDL_IMPO', i), p, LOAD_DDL_IMPO, &
+                    ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('FORCE_NODALE')
+                call node_item(cmd%occurrence('FORCE_NODALE', i), p, LOAD_FORCE_NODALE, &
+                    ['FX', 'FY', 'FZ', 'MX', 'MY', 'MZ'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('FORCE_COQUE')
+                call cell_item(cmd%occurrence('FORCE_COQUE', i), p, LOAD_FORCE_COQUE, &
+                    ['FX  ', 'FY  ', 'FZ  ', 'PRES'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('PRES_REP')
+                call cell_item(cmd%occurrence('PRES_REP', i), p, LOAD_PRES_REP, &
+                    ['____', '____', '____', 'PRES'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('FORCE_CONTOUR')
+                call cell_item(cmd%occurrence('FORCE_CONTOUR', i), p, LOAD_FORCE_CONTOUR, &
+                    ['FX', 'FY'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+        class default
+            call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
+            return
+        end select
+        call ctx%write_mess('    ' // cm%summary())
+        call move_alloc(cm, result)
+    end subroutine build_char_meca
+
+    !> DDL_IMPO / FORCE_NODALE occurrence: nodes from TOUT, GROUP_NO, GROUP_MA or NOEUD.
+    subroutine node_item(occ, mc, kind, keys, functions, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), intent(in) :: kind
+        character(len=*), intent(in) :: keys(:)
+        logical, intent(in) :: functions
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: nodes(:), cells(:)
+        type(string_t), allocatable :: names(:)
+        integer(i4) :: k, g, index
+        character(len=:), allocatable :: label
+        allocate (nodes(0))
+        label = ''
+        if (occ%has('TOUT')) then
+            nodes = nodes_of_cells(mc%mesh, all_cells(mc%mesh))
+            label = 'TOUT'
+        else if (occ%has('GROUP_MA')) then
+            call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
+            if (st%failed()) return
+            nodes = nodes_of_cells(mc%mesh, cells)
+            label = 'GROUP_MA'
+        else
+            if (occ%has('GROUP_NO')) then
+                call occ%get_texts('GROUP_NO', names, st)
+                if (st%failed()) return
+                do k = 1, size(names)
+                    g = find_node_group(mc%mesh, names(k)%s, st)
+                    if (st%failed()) then
+                        call relocate_error(occ, 'GROUP_NO', st)
+                        return
+                    end if
+                    call append(nodes, nodes_of_group(mc%mesh, g))
+                end do
+                label = names(1)%s
+            else
+                call occ%get_texts('NOEUD', names, st)
+                if (st%failed()) return
+                do k = 1, size(names)
+                    g = find_node(mc%mesh, names(k)%s, st)
+                    if (st%failed()) then
+                        call relocate_error(occ, 'NOEUD', st)
+                        return
+                    end if
+                    call append(nodes, [g])
+                end do
+                label = names(1)%s
+            end if
+        end if
+        call load_add_item(loads, kind, nodes, index, label)
+        do k = 1, size(keys)
+            call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
+            if (st%failed()) return
+        end do
+    end subroutine node_item
+
+    !> FORCE_COQUE / PRES_REP / FORCE_CONTOUR occurrence: cells from TOUT or GROUP_MA, of the
+    !> element kind the load needs.
+    subroutine cell_item(occ, mc, kind, keys, functions, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), intent(in) :: kind
+        character(len=*), intent(in) :: keys(:)
+        logical, intent(in) :: functions
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: cells(:)
+        integer(i4) :: k, index, slot
+        logical, allocatable :: fits(:)
+        if (occ%has('GROUP_MA')) then
+            call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
+            if (st%failed()) return
+        else
+            cells = all_cells(mc%mesh)
+        end if
+        if (kind == LOAD_FORCE_CONTOUR) then
+            fits = is_plane_edge(mc%model%element(cells))
+        else
+            fits = is_plate(mc%model%element(cells))
+        end if
+        if (occ%has('TOUT')) cells = pack(cells, fits)
+        if (.not. all(fits) .or. size(cells) == 0) then
+            call occ%error_at(merge('GROUP_MA', 'TOUT    ', occ%has('GROUP_MA')), &
+                merge('the load needs SEG2 edges of a D_PLAN/C_PLAN model', &
+                      'the load needs plate (DKT) cells                  ', &
+                      kind == LOAD_FORCE_CONTOUR) // '; ' // to_text(count(.not. fits)) // &
+                ' cell(s) of ' // to_text(size(fits)) // ' do not fit', st, &
+                code=STATUS_MODEL_ERROR)
+            return
+        end if
+        call load_add_item(loads, kind, cells, index)
+        do k = 1, size(keys)
+            slot = k
+            if (trim(keys(k)) == 'PRES') slot = SLOT_PRES
+            if (keys(k)(1:1) == '_') cycle
+            call set_slot(occ, trim(keys(k)), slot, index, functions, loads, st)
+            if (st%failed()) return
+        end do
+    end subroutine cell_item
+
+    !> Reads keyword `key` (if given) into slot `slot` of item `index`.
+    subroutine set_slot(occ, key, slot, index, functions, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        character(len=*), intent(in) :: key
+        integer(i4), intent(in) :: slot, index
+        logical, intent(in) :: functions
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: f
+        real(dp) :: x
+        if (.not. occ%has(key)) return
+        if (.not. functions) then
+            call occ%get_real(key, x, st)
+            if (st%ok()) call load_set_constant(loads, index, slot, x)
+            return
+        end if
+        call occ%get_concept(key, f, st)
+        if (st%failed()) return
+        select type (f)
+        class is (function_concept_t)
+            call load_set_function(loads, index, slot, f)
+        class default
+            call occ%error_at(key, 'expected a function (DEFI_CONSTANTE, DEFI_FONCTION, ' // &
+                'FORMULE), got ' // f%type_name(), st)
+        end select
+    end subroutine set_slot
+
+    subroutine append(list, more)
+        integer(i4), allocatable, intent(inout) :: list(:)
+        integer(i4), intent(in) :: more(:)
+        integer(i4), allocatable :: grown(:)
+        allocate (grown(size(list) + size(more)))
+        grown(1:size(list)) = list
+        grown(size(list) + 1:) = more
+        call move_alloc(grown, list)
+    end subroutine append
+
+end module load_commands

@@ -1,0 +1,165 @@
+!> Mechanical loads: the content of a char_meca concept (AFFE_CHAR_MECA / AFFE_CHAR_MECA_F).
+!>
+!> A load set is a list of items, each of one kind applied to nodes or cells:
+!>   DDL_IMPO      nodes, imposed components DX..DRZ
+!>   FORCE_NODALE  nodes, FX FY FZ MX MY MZ (added to the equations DX..DRZ)
+!>   FORCE_COQUE   plate cells, PRES (force = -PRES n) or FX/FY/FZ per unit area
+!>   PRES_REP      plate cells, PRES
+!>   FORCE_CONTOUR SEG2 edge cells of plane models, FX FY per unit length (unit depth)
+!> Each of the six slots of an item holds either a real constant (AFFE_CHAR_MECA) or a
+!> function of (INST, X, Y, Z) (AFFE_CHAR_MECA_F). A function slot keeps a POINTER to a
+!> function concept owned by the run context (the deck's symbol table): the load set never
+!> owns or frees it, and it must not outlive the run context. Functions are bound to the
+!> parameter names LOAD_PARAMETERS once, when the slot is set.
+!> Distributed loads are evaluated at the element's integration points (assembly layer),
+!> nodal ones at the node, always with INST = the end of the step.
+module model_loads
+    use kinds, only: dp, i4
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use function_concept, only: function_concept_t, param_binding_t
+    implicit none
+    private
+
+    integer(i4), parameter, public :: LOAD_DDL_IMPO = 1, LOAD_FORCE_NODALE = 2, &
+        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5
+    character(len=13), parameter, public :: LOAD_KIND_NAMES(5) = ['DDL_IMPO     ', &
+        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR']
+    !> Slot of PRES in FORCE_COQUE / PRES_REP items (the FX FY FZ slots are 1..3).
+    integer(i4), parameter, public :: SLOT_PRES = 4
+    !> Parameter names every load function is bound to, in the order of the value arrays.
+    character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
+        'Z   ']
+
+    !> One value: a constant or a function of (INST, X, Y, Z).
+    type, public :: load_value_t
+        logical :: given = .false.
+        real(dp) :: constant = 0.0_dp
+        class(function_concept_t), pointer :: func => null()   !< not owned (run context)
+        type(param_binding_t) :: binding
+    end type load_value_t
+
+    !> One occurrence of a load keyword.
+    type, public :: load_item_t
+        integer(i4) :: kind = 0                      !< LOAD_*
+        integer(i4), allocatable :: nodes(:)         !< DDL_IMPO, FORCE_NODALE
+        integer(i4), allocatable :: cells(:)         !< FORCE_COQUE, PRES_REP, FORCE_CONTOUR
+        type(load_value_t) :: values(6)              !< DX..DRZ / FX..MZ / FX,FY,FZ,PRES
+        character(len=:), allocatable :: group      !< group name, for messages
+    end type load_item_t
+
+    !> A char_meca concept's content.
+    type, public :: load_set_t
+        integer(i4) :: n_items = 0
+        type(load_item_t), allocatable :: items(:)
+    end type load_set_t
+
+    public :: load_add_item, load_set_constant, load_set_function, load_value_at, &
+        load_has_kind
+
+contains
+
+    !> Appends an empty item of a kind on nodes or cells; returns its index.
+    !>  set   : inout, the load set
+    !>  kind  : in, LOAD_*
+    !>  ids   : in, node numbers (DDL_IMPO, FORCE_NODALE) or cell numbers (others)
+    !>  index : out, the new item's index
+    !>  group : in, optional group name for messages
+    subroutine load_add_item(set, kind, ids, index, group)
+        type(load_set_t), intent(inout) :: set
+        integer(i4), intent(in) :: kind, ids(:)
+        integer(i4), intent(out) :: index
+        character(len=*), intent(in), optional :: group
+        type(load_item_t), allocatable :: grown(:)
+        integer(i4) :: k
+        if (.not. allocated(set%items)) allocate (set%items(4))
+        if (set%n_items == size(set%items)) then
+            allocate (grown(2 * size(set%items)))
+            do k = 1, set%n_items
+                call move_item(set%items(k), grown(k))
+            end do
+            call move_alloc(grown, set%items)
+        end if
+        set%n_items = set%n_items + 1
+        index = set%n_items
+        set%items(index)%kind = kind
+        if (kind == LOAD_DDL_IMPO .or. kind == LOAD_FORCE_NODALE) then
+            set%items(index)%nodes = ids
+            allocate (set%items(index)%cells(0))
+        else
+            set%items(index)%cells = ids
+            allocate (set%items(index)%nodes(0))
+        end if
+        set%items(index)%group = ''
+        if (present(group)) set%items(index)%group = group
+    end subroutine load_add_item
+
+    !> Moves an item component by component (no derived-type assignment of the whole).
+    subroutine move_item(from, to)
+        type(load_item_t), intent(inout) :: from
+        type(load_item_t), intent(inout) :: to
+        integer(i4) :: k
+        to%kind = from%kind
+        call move_alloc(from%nodes, to%nodes)
+        call move_alloc(from%cells, to%cells)
+        call move_alloc(from%group, to%group)
+        do k = 1, 6
+            to%values(k)%given = from%values(k)%given
+            to%values(k)%constant = from%values(k)%constant
+            to%values(k)%func => from%values(k)%func
+            if (allocated(from%values(k)%binding%slot)) &
+                call move_alloc(from%values(k)%binding%slot, to%values(k)%binding%slot)
+            if (allocated(from%values(k)%binding%names)) &
+                call move_alloc(from%values(k)%binding%names, to%values(k)%binding%names)
+            if (allocated(from%values(k)%binding%provided)) call move_alloc( &
+                from%values(k)%binding%provided, to%values(k)%binding%provided)
+        end do
+    end subroutine move_item
+
+    !> Sets slot `slot` (1..6) of item `index` to a constant.
+    subroutine load_set_constant(set, index, slot, value)
+        type(load_set_t), intent(inout) :: set
+        integer(i4), intent(in) :: index, slot
+        real(dp), intent(in) :: value
+        set%items(index)%values(slot)%given = .true.
+        set%items(index)%values(slot)%constant = value
+        set%items(index)%values(slot)%func => null()
+    end subroutine load_set_constant
+
+    !> Sets slot `slot` of item `index` to a function of (INST, X, Y, Z), bound once here.
+    !>  func : in, target owned by the run context (see the module header)
+    subroutine load_set_function(set, index, slot, func)
+        type(load_set_t), intent(inout) :: set
+        integer(i4), intent(in) :: index, slot
+        class(function_concept_t), intent(in), target :: func
+        set%items(index)%values(slot)%given = .true.
+        set%items(index)%values(slot)%func => func
+        call func%bind(LOAD_PARAMETERS, set%items(index)%values(slot)%binding)
+    end subroutine load_set_function
+
+    !> Value of a slot at time t and point x.
+    !>  st : out, the function's evaluation error, with the load kind added
+    subroutine load_value_at(value, kind, t, x, y, st)
+        type(load_value_t), intent(in) :: value
+        integer(i4), intent(in) :: kind
+        real(dp), intent(in) :: t, x(3)
+        real(dp), intent(out) :: y
+        type(status_t), intent(out) :: st
+        y = value%constant
+        if (.not. associated(value%func)) return
+        call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
+        if (st%failed()) call set_error(st, STATUS_MODEL_ERROR, LOAD_KIND_NAMES(kind) // &
+            ': ' // st%message)
+    end subroutine load_value_at
+
+    !> True when the set has an item of this kind.
+    pure logical function load_has_kind(set, kind)
+        type(load_set_t), intent(in) :: set
+        integer(i4), intent(in) :: kind
+        integer(i4) :: k
+        load_has_kind = .false.
+        do k = 1, set%n_items
+            if (set%items(k)%kind == kind) load_has_kind = .true.
+        end do
+    end function load_has_kind
+
+end module model_loads
