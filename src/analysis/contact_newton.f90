@@ -599,7 +599,9 @@ contains
                 'fewer than ' // real_digits(FREE_PIVOT_DIGITS) // ' digits lost, so the ' // &
                 'structure is held but its stiffness contrast costs that many digits; ' // &
                 'if the contrast is expected raise SOLVEUR/NPREC (Code_Aster''s SSNL130 ' // &
-                'uses NPREC = 9), or set STOP_SINGULIER = ''NON'' to go on with a warning'
+                'uses NPREC = 9)'
+            if (options%stop_singular) text = text // ', or set STOP_SINGULIER = ''NON''' &
+                // ' to go on with a warning'
         end if
         if (options%stop_singular) then
             call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': ' // text)
