@@ -14,8 +14,12 @@
 !> and no spring changed status in the last iteration. A zero denominator (no load) switches
 !> to the absolute criterion (RESI_GLOB_MAXI, or the RESI_GLOB_RELA value in N), and the
 !> .mess says so. Failures: STATUS_NO_CONVERGENCE (ITER_GLOB_MAXI exceeded, or a contact
-!> status cycle under full Newton), STATUS_NO_EQUILIBRIUM (springs open and the structure
-!> left free), STATUS_SINGULAR (a singular model with the springs closed).
+!> status cycle under full Newton), STATUS_NO_EQUILIBRIUM (the load cannot be carried: the
+!> structure stays free with springs open), STATUS_SINGULAR (a free equation in a matrix
+!> that should be regular, or ill-conditioning beyond NPREC of the converged contact
+!> status); see doc/analysis.md "Diagnosis" and check_no_equilibrium. An intermediate
+!> iterate whose tangent is free takes the elastic matrix for its correction. Plate and
+!> plane forces are accumulated from the increments (internal_forces_incremental).
 module contact_newton
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
@@ -616,7 +620,9 @@ contains
     !>    does not decrease, or
     !>  - the tangent was free for FREE_ITERATIONS_MAX consecutive iterations and the last
     !>    one changed no spring status (that contact status is a mechanism the load drives)
-    !>    or did not decrease the residual.
+    !>    or did not decrease the residual, or
+    !>  - (ELASTIQUE) the residual does not decrease, no status changed, and the tangent of
+    !>    that status (factored here, only then) is free.
     subroutine check_no_equilibrium(s, map, state, use, iter, changed, piv, resi_maxi, &
                                     previous_maxi, t, st)
         type(structure_t), intent(in) :: s
@@ -628,16 +634,35 @@ contains
         type(status_t), intent(out) :: st
         character(len=:), allocatable :: text
         logical :: stalled, all_open, stays_free
+        type(skyline_t) :: sky
+        type(pivot_diagnosis_t) :: diag
         if (size(state%closed) == 0) return
         stalled = resi_maxi >= NO_DECREASE_RATIO * previous_maxi
         all_open = use == MATRIX_ELASTIC .and. iter >= 1 .and. .not. any(state%closed)
         stays_free = piv%n_free >= FREE_ITERATIONS_MAX .and. (changed == 0 .or. stalled)
+        diag%kind = PIVOT_REGULAR
+        if (use == MATRIX_ELASTIC .and. iter >= 1 .and. stalled .and. changed == 0 .and. &
+            .not. all_open .and. .not. stays_free) then
+            ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
+            ! status is no equilibrium if that status leaves the structure free
+            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st)
+            if (st%failed()) return
+            stays_free = diag%kind == PIVOT_FREE
+        end if
         if (.not. ((all_open .and. stalled) .or. stays_free)) return
         text = 'INST ' // real_e13(t) // ': no equilibrium: ' // &
             to_text(count(.not. state%closed, kind=i4)) // ' of ' // &
             to_text(size(state%closed)) // ' DIS_CHOC springs are open (' // &
             spring_group(s, map) // ') and the structure is left free'
-        if (allocated(piv%free_where)) text = text // ': rigid motion at ' // piv%free_where
+        if (allocated(piv%free_where)) then
+            text = text // ': rigid motion at ' // piv%free_where
+        else
+            ! ELASTIQUE never factors the tangent: factor it once here to name the motion
+            if (diag%kind == PIVOT_REGULAR) call assemble_and_factor(s, map, state%u, &
+                .false., sky, state%nprec, diag, st)
+            if (st%failed()) return
+            if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
+        end if
         call set_error(st, STATUS_NO_EQUILIBRIUM, text // '; the residual ' // &
             real_e13(resi_maxi) // ' N no longer decreases')
     end subroutine check_no_equilibrium
