@@ -24,7 +24,7 @@ sys.path.insert(0, HERE)
 import run_case  # noqa: E402
 
 LOST = re.compile(r"pivot lost ([0-9.]+) digits")
-RIGID = re.compile(r"pivot (\S+) against a largest diagonal term (\S+)")
+RIGID = re.compile(r"pivot ([-0-9.E+]+) against a largest diagonal term ([-0-9.E+]+)")
 
 
 def run(parasol, deck_text, deck_dir, mesh, stem, work):
@@ -74,7 +74,7 @@ def digits(parasol, text, deck_dir, mesh, stem, work):
     m = RIGID.search(e)
     if m:
         import math
-        return f"{math.log10(float(m.group(2)) / float(m.group(1))):.1f} (rigid)", lo, hi
+        return f"{math.log10(abs(float(m.group(2)) / float(m.group(1)))):.1f} (rigid)", lo, hi
     return "-", lo, hi
 
 
@@ -100,7 +100,7 @@ def main(argv=None):
             nprec = re.search(r"NPREC=(\d+)", text).group(1)
             msg = err.split("error: ", 1)[-1][:90] if err else ""
             rows.append((stem, nprec, fig, f"{lo}-{hi}",
-                         "-" if worst is None else f"{worst:.1e}", rc, msg))
+                         "-" if worst is None else ("< 1e-12" if worst < 1e-12 else f"{worst:.1e}"), rc, msg))
             sep = " | "
             line = sep.join(str(x) for x in rows[-1])
             print(f"| {line} |" if o.markdown else line, flush=True)
