@@ -49,10 +49,6 @@ module skyline_solver
         logical :: stop_singular = .true.         !< SOLVEUR/STOP_SINGULIER = 'OUI'
         logical :: positive_definite = .false.    !< a negative pivot is then flagged
         integer(i4) :: method = FACTOR_AUTO       !< FACTOR_AUTO/REFERENCE/BLOCKED
-        !> Factor D^-1/2 A D^-1/2 (D = |diag A|) and unscale the factor (skyline_factor).
-        !> Off by default: measured to change the answers only at round-off level
-        !> (doc/stability.md, "Equilibration").
-        logical :: equilibrate = .false.
     end type factor_options_t
 
     !> What the factorization saw (for the .mess solver diagnostics).
@@ -76,7 +72,6 @@ module skyline_solver
         type(factor_options_t) :: options
         real(dp) :: scale = 1.0_dp                 !< reference when a_jj = 0
         real(dp), allocatable :: original(:)       !< a_jj before factorization
-        real(dp), allocatable :: scaling(:)        !< s_j when equilibrated (else empty)
     end type pivot_context_t
 
     !> Solve with a factored matrix: b(:) or b(:, :) (several right-hand sides).
@@ -120,8 +115,6 @@ contains
             sky%factored = .true.
             return
         end if
-        allocate (ctx%scaling(0))
-        if (ctx%options%equilibrate) call scale_symmetric(sky, ctx%scaling)
         ctx%original = sky%values(sky%diag(1:sky%n))
         ctx%scale = maxval(abs(ctx%original))
         if (ctx%scale <= 0.0_dp) ctx%scale = 1.0_dp
@@ -137,55 +130,11 @@ contains
         else
             call factor_reference_kernel(sky%n, sky%diag, sky%values, ctx, report)
         end if
-        if (ctx%options%equilibrate) call unscale_factor(sky, ctx%scaling)
         sky%factored = .true.
         if (report%n_flagged > 0 .and. ctx%options%stop_singular) then
             call set_error(st, STATUS_SINGULAR, singular_message(report, ctx%options))
         end if
     end subroutine skyline_factor
-
-    !> Symmetric diagonal equilibration (van der Sluis 1969): a_ij <- s_i a_ij s_j with
-    !> s_i = |a_ii|^-1/2 (1 where a_ii = 0), so every nonzero diagonal term becomes +-1.
-    !>  sky     : inout, the assembled matrix, scaled in place
-    !>  scaling : out, s (size n)
-    subroutine scale_symmetric(sky, scaling)
-        type(skyline_t), intent(inout) :: sky
-        real(dp), allocatable, intent(out) :: scaling(:)
-        integer(i4) :: i, j, tj
-        integer(i8) :: p0
-        allocate (scaling(sky%n))
-        do j = 1, sky%n
-            scaling(j) = 1.0_dp
-            if (abs(sky%values(sky%diag(j))) > 0.0_dp) then
-                scaling(j) = 1.0_dp / sqrt(abs(sky%values(sky%diag(j))))
-            end if
-        end do
-        do j = 1, sky%n
-            tj = j - int(sky%diag(j) - sky%diag(j - 1), i4) + 1
-            p0 = sky%diag(j - 1) + 1 - tj
-            do i = tj, j
-                sky%values(p0 + i) = scaling(i) * sky%values(p0 + i) * scaling(j)
-            end do
-        end do
-    end subroutine scale_symmetric
-
-    !> Turns the factor of S A S = U^T D U back into the factor of A: u_ij <- s_i u_ij / s_j,
-    !> d_j <- d_j / s_j^2 (A = (S^-1 U^T S)(S^-1 D S^-1)(S U S^-1)), so skyline_solve needs no
-    !> scaling. Digits lost are unchanged (a_jj and d_j carry the same factor s_j^2).
-    subroutine unscale_factor(sky, scaling)
-        type(skyline_t), intent(inout) :: sky
-        real(dp), intent(in) :: scaling(:)
-        integer(i4) :: i, j, tj
-        integer(i8) :: p0
-        do j = 1, sky%n
-            tj = j - int(sky%diag(j) - sky%diag(j - 1), i4) + 1
-            p0 = sky%diag(j - 1) + 1 - tj
-            do i = tj, j - 1
-                sky%values(p0 + i) = scaling(i) * sky%values(p0 + i) / scaling(j)
-            end do
-            sky%values(sky%diag(j)) = sky%values(sky%diag(j)) / scaling(j)**2
-        end do
-    end subroutine unscale_factor
 
     !> Digits lost by a pivot: log10(|original| / |pivot|); DIGITS_ALL_LOST when the pivot is
     !> zero relative to the original (|pivot| <= eps |original|, or subnormal); 0 when
@@ -214,13 +163,11 @@ contains
         real(dp), intent(inout) :: d
         type(pivot_context_t), intent(in) :: ctx
         type(factor_report_t), intent(inout) :: report
-        real(dp) :: lost, ref, magnitude
+        real(dp) :: lost, ref
         integer(i4) :: reason
         lost = digits_lost(d, ctx%original(j), ctx%scale)
-        magnitude = abs(d)      ! the pivot of A, also when S A S is factored
-        if (size(ctx%scaling) > 0) magnitude = magnitude / ctx%scaling(j)**2
-        report%min_abs_pivot = min(report%min_abs_pivot, magnitude)
-        report%max_abs_pivot = max(report%max_abs_pivot, magnitude)
+        report%min_abs_pivot = min(report%min_abs_pivot, abs(d))
+        report%max_abs_pivot = max(report%max_abs_pivot, abs(d))
         if (lost > report%max_digits_lost .or. report%max_digits_equation == 0) then
             report%max_digits_lost = lost
             report%max_digits_equation = j
