@@ -98,9 +98,9 @@ def main(argv=None):
             worst = worst_error(mess) if rc != 1 else None
             fig, lo, hi = digits(parasol, text, deck_dir, info["mesh"], stem, work)
             nprec = re.search(r"NPREC=(\d+)", text).group(1)
-            msg = err.split("error: ", 1)[-1][:90] if err else ""
-            rows.append((stem, nprec, fig, f"{lo}-{hi}",
-                         "-" if worst is None else ("< 1e-12" if worst < 1e-12 else f"{worst:.1e}"), rc, msg))
+            msg = err.split("error: ", 1)[-1][:110] if err else ""
+            error = "-" if worst is None else ("< 1e-12" if worst < 1e-12 else f"{worst:.1e}")
+            rows.append((stem, info.get("why", ""), nprec, fig, f"{lo}-{hi}", error, rc, msg))
             sep = " | "
             line = sep.join(str(x) for x in rows[-1])
             print(f"| {line} |" if o.markdown else line, flush=True)
