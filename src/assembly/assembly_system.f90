@@ -56,7 +56,7 @@ module assembly_system
     end type assembly_map_t
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
-        internal_forces, renumbering_lines
+        internal_forces, internal_forces_incremental, renumbering_lines
 
 contains
 
@@ -536,5 +536,63 @@ contains
             end if
         end do
     end subroutine internal_forces
+
+    !> Internal forces with the linear elements accumulated from increments:
+    !> f_lin <- f_lin + K_lin du (plates and plane solids, K_lin constant), then
+    !> f_int = f_lin + f_springs(u). The round-off of K_lin du scales with |du| (the
+    !> Newton correction, or the imposed-value increment), not with |u|, so the computed
+    !> residual can fall far below eps |K_lin| |u| (doc/analysis.md, "Residual floor").
+    !> Springs (DIS_T, DIS_CHOC: soft, and DIS_CHOC nonlinear) are evaluated at u.
+    !>  u      : in, the displacements (after the increment)
+    !>  du     : in, the increment that led to u (imposed and free equations)
+    !>  flin   : inout, (n_equations) linear-element forces, K_lin u up to round-off
+    !>  fint   : out, (n_equations) flin + spring forces
+    !>  closed, fn, st : as internal_forces
+    subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), du(:)
+        real(dp), intent(inout) :: flin(:)
+        real(dp), intent(out) :: fint(:), fn(:)
+        logical, intent(out) :: closed(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: f
+        logical :: is_closed, linear
+        i_spring = 0
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            linear = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+            if (.not. linear) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, fe, &
+                is_closed, f, st)
+            if (st%failed()) return
+            do j = 1, n
+                if (eqs(j) > 0) flin(eqs(j)) = flin(eqs(j)) + fe(j)
+            end do
+        end do
+        fint = flin
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            linear = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+            if (linear) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
+                is_closed, f, st)
+            if (st%failed()) return
+            do j = 1, n
+                if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
+            end do
+            if (s%choc(c) .and. is_discrete(s%model%element(c))) then
+                i_spring = i_spring + 1
+                closed(i_spring) = is_closed
+                fn(i_spring) = f
+            end if
+        end do
+    end subroutine internal_forces_incremental
 
 end module assembly_system
