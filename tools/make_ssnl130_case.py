@@ -202,9 +202,13 @@ def test_lines(o):
                        f"                  REFERENCE='ANALYTIQUE', VALE_REFE={value}, "
                        f"PRECISION={e(o.tolerance)}),")
     ref1 = checks[0][1]
-    return [f"# Exact discrete reference: rows 0..{ref1['n']} of {o.ny} in contact, "
-            f"DZ(y=0) = {ref1['pt01']}, DZ(y=b) = {ref1['pt03']} at t = 1.",
-            "TEST_RESU(RESU=("] + occ + ["               ),)", "", "FIN()"]
+    if o.refe_values:
+        note = [f"# References at t = 1 given by --refe-values ({o.refe_values}); the rigid "
+                f"plate would have DZ(y=0) = {ref1['pt01']}, DZ(y=b) = {ref1['pt03']}."]
+    else:
+        note = [f"# Exact discrete reference: rows 0..{ref1['n']} of {o.ny} in contact, "
+                f"DZ(y=0) = {ref1['pt01']}, DZ(y=b) = {ref1['pt03']} at t = 1."]
+    return note + ["TEST_RESU(RESU=("] + occ + ["               ),)", "", "FIN()"]
 
 
 def main(argv=None):
