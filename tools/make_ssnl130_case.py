@@ -238,7 +238,7 @@ def main(argv=None):
     ap.add_argument("--resi", type=float, default=1.0e-6, help="RESI_GLOB_RELA")
     ap.add_argument("--iter-max", type=int, default=10, help="ITER_GLOB_MAXI")
     ap.add_argument("--renum", choices=["RCMK", "METIS", "SANS"], default="RCMK")
-    ap.add_argument("--nprec", type=int, default=8)
+    ap.add_argument("--nprec", type=int, default=9, help="SOLVEUR NPREC (9 as in the SSNL130 decks)")
     ap.add_argument("--bilateral", action="store_true", help="linear springs, MECA_STATIQUE")
     ap.add_argument("--tolerance", type=float, default=1.0e-6, help="relative tolerance of checks")
     ap.add_argument("--expect-no-equilibrium", action="store_true",
