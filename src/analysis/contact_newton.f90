@@ -33,7 +33,8 @@ module contact_newton
     use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t, &
         factor_report_t
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines
+        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
+        linear_cache_t
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
@@ -110,6 +111,7 @@ module contact_newton
         real(dp), allocatable :: u(:), fint(:), fext(:), fn(:)
         real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
+        type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
         logical, allocatable :: closed(:)
         type(skyline_t) :: elastic, tangent
         logical :: have_elastic = .false., have_tangent = .false.
@@ -279,7 +281,7 @@ contains
         said_zero = .false.
         converged = .false.
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
-            state%closed, state%fn, st)
+            state%closed, state%fn, st, state%linear)
         if (st%failed()) return
         do iter = 0, options%iter_glob_maxi
             call system_clock(t0, rate)
@@ -295,7 +297,7 @@ contains
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st)
+                state%fint, state%closed, state%fn, st, state%linear)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
