@@ -454,7 +454,16 @@ contains
     pure function plate_deformation(x, nn, ue) result(ud)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: x(3, nn), ue(6 * nn)
-        real(dp) :: ud(6 * nn), xc(3), t(3), w(3), n(3), d(3)
+        real(dp) :: ud(6 * nn)
+        call remove_plate_rigid_motion(x, nn, ue, ud)
+    end function plate_deformation
+
+    !> plate_deformation as a subroutine (the caller's array, no function-result temporary).
+    pure subroutine remove_plate_rigid_motion(x, nn, ue, ud)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: x(3, nn), ue(6 * nn)
+        real(dp), intent(out) :: ud(6 * nn)
+        real(dp) :: xc(3), t(3), w(3), n(3), d(3)
         integer(i4) :: i
         if (nn == 4) then
             n = cross(x(:, 3) - x(:, 1), x(:, 4) - x(:, 2))
@@ -479,7 +488,7 @@ contains
             ud(6 * i - 5:6 * i - 3) = ue(6 * i - 5:6 * i - 3) - t - cross(w, d)
             ud(6 * i - 2:6 * i) = ue(6 * i - 2:6 * i) - w
         end do
-    end function plate_deformation
+    end subroutine remove_plate_rigid_motion
 
     pure function cross(a, b) result(c)
         real(dp), intent(in) :: a(3), b(3)
@@ -723,7 +732,7 @@ contains
         real(dp), intent(inout) :: flin(:)
         integer(i4) :: i, j, n, nn
         integer(i8) :: p, q
-        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS)
+        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS)
         do i = 1, size(cache%n)
             n = cache%n(i)
             nn = cache%nn(i)
@@ -734,9 +743,9 @@ contains
                 if (cache%eqs(j, i) > 0) ue(j) = du(cache%eqs(j, i))
             end do
             if (cache%plate(i)) then
+                call remove_plate_rigid_motion(cache%x(:, 1:nn, i), nn, ue(1:n), ud(1:n))
                 call plate_forces_from_local(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
-                    cache%k(p:q), plate_deformation(cache%x(:, 1:nn, i), nn, ue(1:n)), &
-                    fe(1:n))
+                    cache%k(p:q), ud(1:n), fe(1:n))
             else
                 call plane_forces(cache%k(p:q), cache%x(1:2, 1:4, i), ue(1:8), fe(1:8))
             end if

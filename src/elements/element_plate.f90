@@ -192,13 +192,13 @@ contains
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn), ue(6 * nn)
         real(dp), intent(out) :: fe(6 * nn)
-        real(dp) :: ul(6 * nn), fl(6 * nn)
+        real(dp) :: ul(24), fl(24)     ! fixed size (DKQ): no heap temporaries per call
         integer(i4) :: i
         do i = 1, 2 * nn
             ul(3 * i - 2:3 * i) = matmul(rot, ue(3 * i - 2:3 * i))
         end do
-        call remove_zero_energy_mode(xy, nn, ul)
-        fl = matmul(kl, ul)
+        call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
+        fl(1:6 * nn) = matmul(kl, ul(1:6 * nn))
         do i = 1, 2 * nn
             fe(3 * i - 2:3 * i) = matmul(transpose(rot), fl(3 * i - 2:3 * i))
         end do
