@@ -486,11 +486,11 @@ contains
         if (use == MATRIX_TANGENT .and. state%have_tangent) return
         if (use == MATRIX_ELASTIC) then
             call assemble_and_factor(s, map, state%u, .true., state%elastic, state%nprec, &
-                diag, st)
+                diag, st, state%linear)
             state%have_elastic = st%ok()
         else
             call assemble_and_factor(s, map, state%u, .false., state%tangent, state%nprec, &
-                diag, st)
+                diag, st, state%linear)
             state%have_tangent = st%ok()
         end if
         if (st%failed()) return
@@ -521,7 +521,8 @@ contains
     !> classifies its pivots (classify_pivots).
     !>  nprec : in, SOLVEUR/NPREC (0 = Code_Aster's default 8)
     !>  diag  : out, PIVOT_REGULAR, PIVOT_ILL_CONDITIONED or PIVOT_FREE, and where
-    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st)
+    !>  cache : in, optional, the plate/plane matrices (assemble_stiffness)
+    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -530,13 +531,14 @@ contains
         integer(i4), intent(in) :: nprec
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
+        type(linear_cache_t), intent(in), optional :: cache
         type(factor_options_t) :: lenient
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
         lenient%nprec = nprec
         lenient%stop_singular = .false.
-        call assemble_stiffness(s, map, u, elastic, sky, st)
+        call assemble_stiffness(s, map, u, elastic, sky, st, cache)
         if (st%failed()) return
         largest = 0.0_dp
         if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
@@ -647,7 +649,8 @@ contains
             .not. all_open .and. .not. stays_free) then
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
-            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st)
+            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st, &
+                state%linear)
             if (st%failed()) return
             stays_free = diag%kind == PIVOT_FREE
         end if
@@ -661,7 +664,7 @@ contains
         else
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
             if (diag%kind == PIVOT_REGULAR) call assemble_and_factor(s, map, state%u, &
-                .false., sky, state%nprec, diag, st)
+                .false., sky, state%nprec, diag, st, state%linear)
             if (st%failed()) return
             if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
         end if

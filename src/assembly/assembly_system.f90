@@ -18,7 +18,7 @@ module assembly_system
         ORIENT_ANGL_NAUT
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
-        plate_local_stiffness, plate_forces_from_local
+        plate_local_stiffness, plate_forces_from_local, rotate_to_global
     use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
@@ -68,6 +68,7 @@ module assembly_system
     !> Memory: 24 x 24 reals (4.6 kB) per DKQ cell.
     type, public :: linear_cache_t
         logical :: ready = .false.
+        integer(i4), allocatable :: slot(:)         !< (size(map%cells)) cached index, 0 = none
         integer(i4), allocatable :: n(:)            !< (n_cached) element equations
         integer(i4), allocatable :: nn(:)           !< (n_cached) nodes
         logical, allocatable :: plate(:)            !< (n_cached) DKT/DKQ, else plane QUAD4
@@ -524,14 +525,17 @@ contains
     !>            .false. = springs at the status u gives them (TANGENTE)
     !>  sky     : out, the assembled matrix (profile of map%pattern)
     !>  st      : out, element failures, naming the cell
-    subroutine assemble_stiffness(s, map, u, elastic, sky, st)
+    !>  cache   : in, optional, once built (internal_forces_incremental): the plate and
+    !>            plane matrices are taken from it (bit for bit those cell_response builds)
+    subroutine assemble_stiffness(s, map, u, elastic, sky, st, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: elastic
         type(skyline_t), intent(out) :: sky
         type(status_t), intent(out) :: st
-        integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS)
+        type(linear_cache_t), intent(in), optional :: cache
+        integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS), i
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: fn
         logical :: closed
@@ -540,9 +544,17 @@ contains
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
-                fn, st)
-            if (st%failed()) return
+            i = 0
+            if (present(cache)) then
+                if (cache%ready) i = cache%slot(k)
+            end if
+            if (i > 0) then
+                call cached_global_matrix(cache, i, ke)
+            else
+                call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, &
+                    closed, fn, st)
+                if (st%failed()) return
+            end if
             call skyline_add_element(sky, free_of(map, eqs(1:n)), ke, st)
             if (st%failed()) return
         end do
@@ -681,11 +693,13 @@ contains
             cache%x(:, 1:nn, i) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
             cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
         end do
-        allocate (cache%k(cache%k_ptr(nc + 1) - 1))
+        allocate (cache%k(cache%k_ptr(nc + 1) - 1), cache%slot(size(map%cells)))
+        cache%slot = 0
         i = 0
         do k = 1, size(map%cells)
             if (.not. linear(k)) cycle
             i = i + 1
+            cache%slot(k) = i
             call cache_cell_matrix(s, map%cells(k), cache, i, st)
             if (st%failed()) then
                 call set_error(st, st%code, cell_label(s%mesh, map%cells(k)) // ': ' // &
@@ -754,6 +768,21 @@ contains
             end do
         end do
     end subroutine add_cached_linear_forces
+
+    !> Global matrix of cached cell i, as plate_stiffness / plane_quad4_stiffness give it.
+    subroutine cached_global_matrix(cache, i, ke)
+        type(linear_cache_t), intent(in) :: cache
+        integer(i4), intent(in) :: i
+        real(dp), intent(out) :: ke(:, :)
+        integer(i8) :: p, q
+        p = cache%k_ptr(i)
+        q = cache%k_ptr(i + 1) - 1
+        if (cache%plate(i)) then
+            call rotate_to_global(cache%rot(:, :, i), 2 * cache%nn(i), cache%k(p:q), ke)
+        else
+            ke = reshape(cache%k(p:q), [8, 8])
+        end if
+    end subroutine cached_global_matrix
 
     !> Plane QUAD4 forces K u of the deformation part of ue (see plane_deformation).
     pure subroutine plane_forces(k8, x2, ue, fe)
