@@ -509,6 +509,18 @@ contains
         end do
     end function gather
 
+    !> gather as a subroutine: ue(1:n) = u(eqs(1:n)) (absent equations: 0).
+    pure subroutine gather_into(u, eqs, n, ue)
+        real(dp), intent(in) :: u(:)
+        integer(i4), intent(in) :: eqs(:), n
+        real(dp), intent(out) :: ue(:)
+        integer(i4) :: k
+        do k = 1, n
+            ue(k) = 0.0_dp
+            if (eqs(k) > 0) ue(k) = u(eqs(k))
+        end do
+    end subroutine gather_into
+
     !> (Re)allocates the element matrix and vector to n equations.
     subroutine size_element_arrays(n, ke, fe)
         integer(i4), intent(in) :: n
@@ -619,6 +631,7 @@ contains
         type(linear_cache_t), intent(inout), optional :: cache
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: ue(MAX_ELEMENT_DOFS)
         real(dp) :: f
         logical :: is_closed, linear
         i_spring = 0
@@ -648,8 +661,8 @@ contains
             if (linear) cycle
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st)
+            call gather_into(u, eqs, n, ue)     ! a local array: no function-result temporary
+            call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, is_closed, f, st)
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
