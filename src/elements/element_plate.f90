@@ -198,11 +198,26 @@ contains
             ul(3 * i - 2:3 * i) = matmul(rot, ue(3 * i - 2:3 * i))
         end do
         call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
-        fl(1:6 * nn) = matmul(kl, ul(1:6 * nn))
+        call local_matvec(6 * nn, kl, ul, fl)
         do i = 1, 2 * nn
             fe(3 * i - 2:3 * i) = matmul(transpose(rot), fl(3 * i - 2:3 * i))
         end do
     end subroutine plate_forces_from_local
+
+    !> fl(1:m) = kl ul(1:m), column by column (the sum over columns in ascending order, as
+    !> the library matmul does it), inlined: this is the inner kernel of every iteration.
+    pure subroutine local_matvec(m, kl, ul, fl)
+        integer(i4), intent(in) :: m
+        real(dp), intent(in) :: kl(m, m), ul(:)
+        real(dp), intent(out) :: fl(:)
+        integer(i4) :: i, j
+        fl(1:m) = 0.0_dp
+        do j = 1, m
+            do i = 1, m
+                fl(i) = fl(i) + kl(i, j) * ul(j)
+            end do
+        end do
+    end subroutine local_matvec
 
     !> Subtracts from local displacements ul (u, v, w, thx, thy, thz per node) a motion that
     !> the local matrix maps to zero: translations t, bending rotation (ox, oy) with
