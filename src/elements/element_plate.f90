@@ -193,14 +193,25 @@ contains
         real(dp), intent(in) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn), ue(6 * nn)
         real(dp), intent(out) :: fe(6 * nn)
         real(dp) :: ul(24), fl(24)     ! fixed size (DKQ): no heap temporaries per call
-        integer(i4) :: i
+        integer(i4) :: i, r, c
+        ! ul = T ue and fe = T^T fl by 3-vectors, sums in ascending order as matmul's
         do i = 1, 2 * nn
-            ul(3 * i - 2:3 * i) = matmul(rot, ue(3 * i - 2:3 * i))
+            do r = 1, 3
+                ul(3 * i - 3 + r) = 0.0_dp
+                do c = 1, 3
+                    ul(3 * i - 3 + r) = ul(3 * i - 3 + r) + rot(r, c) * ue(3 * i - 3 + c)
+                end do
+            end do
         end do
         call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
         call local_matvec(6 * nn, kl, ul, fl)
         do i = 1, 2 * nn
-            fe(3 * i - 2:3 * i) = matmul(transpose(rot), fl(3 * i - 2:3 * i))
+            do r = 1, 3
+                fe(3 * i - 3 + r) = 0.0_dp
+                do c = 1, 3
+                    fe(3 * i - 3 + r) = fe(3 * i - 3 + r) + rot(c, r) * fl(3 * i - 3 + c)
+                end do
+            end do
         end do
     end subroutine plate_forces_from_local
 
