@@ -759,7 +759,7 @@ contains
         real(dp), intent(inout) :: flin(:)
         integer(i4) :: i, j, n, nn
         integer(i8) :: p, q
-        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS)
+        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS), x2(2, 4)
         do i = 1, size(cache%n)
             n = cache%n(i)
             nn = cache%nn(i)
@@ -774,7 +774,8 @@ contains
                 call plate_forces_from_local(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
                     cache%k(p:q), ud(1:n), fe(1:n))
             else
-                call plane_forces(cache%k(p:q), cache%x(1:2, 1:4, i), ue(1:8), fe(1:8))
+                x2 = cache%x(1:2, 1:4, i)
+                call plane_forces(cache%k(p:q), x2, ue(1:8), fe(1:8))
             end if
             do j = 1, n
                 if (cache%eqs(j, i) > 0) flin(cache%eqs(j, i)) = flin(cache%eqs(j, i)) + fe(j)
