@@ -33,7 +33,8 @@ module contact_newton
     use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t, &
         factor_report_t
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines
+        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
+        linear_cache_t
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
@@ -110,6 +111,7 @@ module contact_newton
         real(dp), allocatable :: u(:), fint(:), fext(:), fn(:)
         real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
+        type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
         logical, allocatable :: closed(:)
         type(skyline_t) :: elastic, tangent
         logical :: have_elastic = .false., have_tangent = .false.
@@ -279,7 +281,7 @@ contains
         said_zero = .false.
         converged = .false.
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
-            state%closed, state%fn, st)
+            state%closed, state%fn, st, state%linear)
         if (st%failed()) return
         do iter = 0, options%iter_glob_maxi
             call system_clock(t0, rate)
@@ -295,7 +297,7 @@ contains
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st)
+                state%fint, state%closed, state%fn, st, state%linear)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
@@ -484,11 +486,11 @@ contains
         if (use == MATRIX_TANGENT .and. state%have_tangent) return
         if (use == MATRIX_ELASTIC) then
             call assemble_and_factor(s, map, state%u, .true., state%elastic, state%nprec, &
-                diag, st)
+                diag, st, state%linear)
             state%have_elastic = st%ok()
         else
             call assemble_and_factor(s, map, state%u, .false., state%tangent, state%nprec, &
-                diag, st)
+                diag, st, state%linear)
             state%have_tangent = st%ok()
         end if
         if (st%failed()) return
@@ -519,7 +521,8 @@ contains
     !> classifies its pivots (classify_pivots).
     !>  nprec : in, SOLVEUR/NPREC (0 = Code_Aster's default 8)
     !>  diag  : out, PIVOT_REGULAR, PIVOT_ILL_CONDITIONED or PIVOT_FREE, and where
-    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st)
+    !>  cache : in, optional, the plate/plane matrices (assemble_stiffness)
+    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -528,13 +531,14 @@ contains
         integer(i4), intent(in) :: nprec
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
+        type(linear_cache_t), intent(in), optional :: cache
         type(factor_options_t) :: lenient
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
         lenient%nprec = nprec
         lenient%stop_singular = .false.
-        call assemble_stiffness(s, map, u, elastic, sky, st)
+        call assemble_stiffness(s, map, u, elastic, sky, st, cache)
         if (st%failed()) return
         largest = 0.0_dp
         if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
@@ -645,7 +649,8 @@ contains
             .not. all_open .and. .not. stays_free) then
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
-            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st)
+            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st, &
+                state%linear)
             if (st%failed()) return
             stays_free = diag%kind == PIVOT_FREE
         end if
@@ -659,7 +664,7 @@ contains
         else
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
             if (diag%kind == PIVOT_REGULAR) call assemble_and_factor(s, map, state%u, &
-                .false., sky, state%nprec, diag, st)
+                .false., sky, state%nprec, diag, st, state%linear)
             if (st%failed()) return
             if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
         end if

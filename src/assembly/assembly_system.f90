@@ -17,7 +17,8 @@ module assembly_system
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
         ORIENT_ANGL_NAUT
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
-    use element_plate, only: plate_stiffness, plate_internal_forces
+    use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
+        plate_local_stiffness, plate_forces_from_local, rotate_to_global
     use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
@@ -57,6 +58,27 @@ module assembly_system
         integer(i8) :: rejected_rcm_profile = 0
         type(skyline_t) :: pattern                  !< profile with zero values
     end type assembly_map_t
+
+    !> What the incremental forces K_lin du need of each linear cell (plate, plane solid),
+    !> built once per analysis by the first internal_forces_incremental call that passes
+    !> it: the element equations, node coordinates and the element matrix (plates: local
+    !> frame and local matrix, plane QUAD4: the 8x8 matrix). An iteration then costs one
+    !> small matrix-vector product per cell instead of a rebuilt element stiffness
+    !> (doc/performance.md, "SSNL130 decks"); the forces are bit for bit the same.
+    !> Memory: 24 x 24 reals (4.6 kB) per DKQ cell.
+    type, public :: linear_cache_t
+        logical :: ready = .false.
+        integer(i4), allocatable :: slot(:)         !< (size(map%cells)) cached index, 0 = none
+        integer(i4), allocatable :: n(:)            !< (n_cached) element equations
+        integer(i4), allocatable :: nn(:)           !< (n_cached) nodes
+        logical, allocatable :: plate(:)            !< (n_cached) DKT/DKQ, else plane QUAD4
+        integer(i4), allocatable :: eqs(:, :)       !< (MAX_ELEMENT_DOFS, n_cached)
+        integer(i8), allocatable :: k_ptr(:)        !< (n_cached + 1) matrix start in k
+        real(dp), allocatable :: k(:)               !< the matrices, column-major
+        real(dp), allocatable :: x(:, :, :)         !< (3, 4, n_cached) node coordinates
+        real(dp), allocatable :: rot(:, :, :)       !< (3, 3, n_cached) plate local frame
+        real(dp), allocatable :: xy(:, :, :)        !< (2, 4, n_cached) plate local coords
+    end type linear_cache_t
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines
@@ -433,7 +455,16 @@ contains
     pure function plate_deformation(x, nn, ue) result(ud)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: x(3, nn), ue(6 * nn)
-        real(dp) :: ud(6 * nn), xc(3), t(3), w(3), n(3), d(3)
+        real(dp) :: ud(6 * nn)
+        call remove_plate_rigid_motion(x, nn, ue, ud)
+    end function plate_deformation
+
+    !> plate_deformation as a subroutine (the caller's array, no function-result temporary).
+    pure subroutine remove_plate_rigid_motion(x, nn, ue, ud)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: x(3, nn), ue(6 * nn)
+        real(dp), intent(out) :: ud(6 * nn)
+        real(dp) :: xc(3), t(3), w(3), n(3), d(3)
         integer(i4) :: i
         if (nn == 4) then
             n = cross(x(:, 3) - x(:, 1), x(:, 4) - x(:, 2))
@@ -458,7 +489,7 @@ contains
             ud(6 * i - 5:6 * i - 3) = ue(6 * i - 5:6 * i - 3) - t - cross(w, d)
             ud(6 * i - 2:6 * i) = ue(6 * i - 2:6 * i) - w
         end do
-    end function plate_deformation
+    end subroutine remove_plate_rigid_motion
 
     pure function cross(a, b) result(c)
         real(dp), intent(in) :: a(3), b(3)
@@ -478,6 +509,18 @@ contains
         end do
     end function gather
 
+    !> gather as a subroutine: ue(1:n) = u(eqs(1:n)) (absent equations: 0).
+    pure subroutine gather_into(u, eqs, n, ue)
+        real(dp), intent(in) :: u(:)
+        integer(i4), intent(in) :: eqs(:), n
+        real(dp), intent(out) :: ue(:)
+        integer(i4) :: k
+        do k = 1, n
+            ue(k) = 0.0_dp
+            if (eqs(k) > 0) ue(k) = u(eqs(k))
+        end do
+    end subroutine gather_into
+
     !> (Re)allocates the element matrix and vector to n equations.
     subroutine size_element_arrays(n, ke, fe)
         integer(i4), intent(in) :: n
@@ -494,14 +537,17 @@ contains
     !>            .false. = springs at the status u gives them (TANGENTE)
     !>  sky     : out, the assembled matrix (profile of map%pattern)
     !>  st      : out, element failures, naming the cell
-    subroutine assemble_stiffness(s, map, u, elastic, sky, st)
+    !>  cache   : in, optional, once built (internal_forces_incremental): the plate and
+    !>            plane matrices are taken from it (bit for bit those cell_response builds)
+    subroutine assemble_stiffness(s, map, u, elastic, sky, st, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: elastic
         type(skyline_t), intent(out) :: sky
         type(status_t), intent(out) :: st
-        integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS)
+        type(linear_cache_t), intent(in), optional :: cache
+        integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS), i
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: fn
         logical :: closed
@@ -510,9 +556,17 @@ contains
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
-                fn, st)
-            if (st%failed()) return
+            i = 0
+            if (present(cache)) then
+                if (cache%ready) i = cache%slot(k)
+            end if
+            if (i > 0) then
+                call cached_global_matrix(cache, i, ke)
+            else
+                call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, &
+                    closed, fn, st)
+                if (st%failed()) return
+            end if
             call skyline_add_element(sky, free_of(map, eqs(1:n)), ke, st)
             if (st%failed()) return
         end do
@@ -564,7 +618,9 @@ contains
     !>  flin   : inout, (n_equations) linear-element forces, K_lin u up to round-off
     !>  fint   : out, (n_equations) flin + spring forces
     !>  closed, fn, st : as internal_forces
-    subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st)
+    !>  cache  : inout, optional, the linear cells' matrices (built on the first call that
+    !>           passes it, then reused: the structure and map must stay the same)
+    subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:), du(:)
@@ -572,24 +628,32 @@ contains
         real(dp), intent(out) :: fint(:), fn(:)
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
+        type(linear_cache_t), intent(inout), optional :: cache
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: ue(MAX_ELEMENT_DOFS)
         real(dp) :: f
         logical :: is_closed, linear
         i_spring = 0
-        do k = 1, size(map%cells)
-            c = map%cells(k)
-            linear = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
-            if (.not. linear) cycle
-            call element_equations(s, c, eqs, n)
-            call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st)
+        if (present(cache)) then
+            if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
             if (st%failed()) return
-            do j = 1, n
-                if (eqs(j) > 0) flin(eqs(j)) = flin(eqs(j)) + fe(j)
+            call add_cached_linear_forces(cache, du, flin)
+        else
+            do k = 1, size(map%cells)
+                c = map%cells(k)
+                linear = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+                if (.not. linear) cycle
+                call element_equations(s, c, eqs, n)
+                call size_element_arrays(n, ke, fe)
+                call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, fe, &
+                    is_closed, f, st)
+                if (st%failed()) return
+                do j = 1, n
+                    if (eqs(j) > 0) flin(eqs(j)) = flin(eqs(j)) + fe(j)
+                end do
             end do
-        end do
+        end if
         fint = flin
         do k = 1, size(map%cells)
             c = map%cells(k)
@@ -597,8 +661,8 @@ contains
             if (linear) cycle
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st)
+            call gather_into(u, eqs, n, ue)     ! a local array: no function-result temporary
+            call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, is_closed, f, st)
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
@@ -610,5 +674,135 @@ contains
             end if
         end do
     end subroutine internal_forces_incremental
+
+    !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
+    !>  st : out, element failures (material, geometry), naming the cell
+    subroutine build_linear_cache(s, map, cache, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, i, nc, nn, p0
+        logical :: linear(size(map%cells))
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            linear(k) = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+        end do
+        nc = count(linear, kind=i4)
+        allocate (cache%n(nc), cache%nn(nc), cache%plate(nc), cache%k_ptr(nc + 1), &
+            cache%eqs(MAX_ELEMENT_DOFS, nc))
+        allocate (cache%x(3, 4, nc), cache%rot(3, 3, nc), cache%xy(2, 4, nc), source=0.0_dp)
+        i = 0
+        cache%k_ptr(1) = 1
+        do k = 1, size(map%cells)
+            if (.not. linear(k)) cycle
+            i = i + 1
+            c = map%cells(k)
+            call element_equations(s, c, cache%eqs(:, i), cache%n(i))
+            cache%plate(i) = is_plate(s%model%element(c))
+            p0 = s%mesh%cell_ptr(c)
+            nn = s%mesh%cell_ptr(c + 1) - p0
+            cache%nn(i) = nn
+            cache%x(:, 1:nn, i) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
+            cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
+        end do
+        allocate (cache%k(cache%k_ptr(nc + 1) - 1), cache%slot(size(map%cells)))
+        cache%slot = 0
+        i = 0
+        do k = 1, size(map%cells)
+            if (.not. linear(k)) cycle
+            i = i + 1
+            cache%slot(k) = i
+            call cache_cell_matrix(s, map%cells(k), cache, i, st)
+            if (st%failed()) then
+                call set_error(st, st%code, cell_label(s%mesh, map%cells(k)) // ': ' // &
+                    st%message)
+                return
+            end if
+        end do
+        cache%ready = .true.
+    end subroutine build_linear_cache
+
+    !> Element matrix of cached cell i (mesh cell c): plates keep their local frame and
+    !> local matrix (plate_internal_forces works in the local frame), plane QUAD4 the
+    !> global 8x8 matrix (as cell_response).
+    subroutine cache_cell_matrix(s, c, cache, i, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, i
+        type(linear_cache_t), intent(inout) :: cache
+        type(status_t), intent(out) :: st
+        integer(i4) :: m, nn
+        integer(i8) :: p, q
+        m = material_of_cell(s%materials, c)
+        nn = cache%nn(i)
+        p = cache%k_ptr(i)
+        q = cache%k_ptr(i + 1) - 1
+        associate (e => s%materials%materials(m)%elas)
+            if (cache%plate(i)) then
+                call plate_local_frame(cache%x(:, 1:nn, i), nn, cache%rot(:, :, i), &
+                    cache%xy(:, 1:nn, i), st)
+                if (st%failed()) return
+                call plate_local_stiffness(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
+                    s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
+            else
+                call plane_quad4_stiffness(cache%x(1:2, 1:4, i), e%e, e%nu, &
+                    s%model%element(c) == ELEM_D_PLAN_QUAD4, cache%k(p:q), st)
+            end if
+        end associate
+    end subroutine cache_cell_matrix
+
+    !> flin <- flin + K_lin du from the cached matrices, cell by cell in the order of
+    !> map%cells, with the rigid motion of each cell removed first (as cell_response).
+    subroutine add_cached_linear_forces(cache, du, flin)
+        type(linear_cache_t), intent(in) :: cache
+        real(dp), intent(in) :: du(:)
+        real(dp), intent(inout) :: flin(:)
+        integer(i4) :: i, j, n, nn
+        integer(i8) :: p, q
+        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS), x2(2, 4)
+        do i = 1, size(cache%n)
+            n = cache%n(i)
+            nn = cache%nn(i)
+            p = cache%k_ptr(i)
+            q = cache%k_ptr(i + 1) - 1
+            do j = 1, n
+                ue(j) = 0.0_dp
+                if (cache%eqs(j, i) > 0) ue(j) = du(cache%eqs(j, i))
+            end do
+            if (cache%plate(i)) then
+                call remove_plate_rigid_motion(cache%x(:, 1:nn, i), nn, ue(1:n), ud(1:n))
+                call plate_forces_from_local(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
+                    cache%k(p:q), ud(1:n), fe(1:n))
+            else
+                x2 = cache%x(1:2, 1:4, i)
+                call plane_forces(cache%k(p:q), x2, ue(1:8), fe(1:8))
+            end if
+            do j = 1, n
+                if (cache%eqs(j, i) > 0) flin(cache%eqs(j, i)) = flin(cache%eqs(j, i)) + fe(j)
+            end do
+        end do
+    end subroutine add_cached_linear_forces
+
+    !> Global matrix of cached cell i, as plate_stiffness / plane_quad4_stiffness give it.
+    subroutine cached_global_matrix(cache, i, ke)
+        type(linear_cache_t), intent(in) :: cache
+        integer(i4), intent(in) :: i
+        real(dp), intent(out) :: ke(:, :)
+        integer(i8) :: p, q
+        p = cache%k_ptr(i)
+        q = cache%k_ptr(i + 1) - 1
+        if (cache%plate(i)) then
+            call rotate_to_global(cache%rot(:, :, i), 2 * cache%nn(i), cache%k(p:q), ke)
+        else
+            ke = reshape(cache%k(p:q), [8, 8])
+        end if
+    end subroutine cached_global_matrix
+
+    !> Plane QUAD4 forces K u of the deformation part of ue (see plane_deformation).
+    pure subroutine plane_forces(k8, x2, ue, fe)
+        real(dp), intent(in) :: k8(8, 8), x2(2, 4), ue(8)
+        real(dp), intent(out) :: fe(8)
+        fe = matmul(k8, plane_deformation(x2, ue))
+    end subroutine plane_forces
 
 end module assembly_system

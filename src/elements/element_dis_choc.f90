@@ -30,6 +30,9 @@ module element_dis_choc
 
     public :: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_poi1, dis_choc_2d_poi1
 
+    !> Largest space dimension (size of the work arrays of the law).
+    integer(i4), parameter :: MAX_DIM = 3
+
 contains
 
     !> DIS_CHOC on a DIS_T SEG2.
@@ -112,28 +115,29 @@ contains
         real(dp), intent(out) :: gap, fn, fe(2 * n), ke(2 * n, 2 * n)
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: rigi_nor, rigi_tan
-        real(dp) :: e(n), length, f2(n), kc(n, n)
+        real(dp) :: e(MAX_DIM), r(MAX_DIM), length, f2(MAX_DIM), kc(MAX_DIM, MAX_DIM)
         fe = 0.0_dp
         ke = 0.0_dp
         closed = .false.
         gap = 0.0_dp
         fn = 0.0_dp
-        e = coords(:, 2) - coords(:, 1)
-        length = norm2(e)
+        e(1:n) = coords(:, 2) - coords(:, 1)
+        length = norm2(e(1:n))
         if (.not. length > 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, 'DIS_CHOC on a SEG2 of zero length: ' // &
                 'no contact normal (the two nodes must be distinct)')
             return
         end if
-        e = e / length
-        call choc_law(n, e, ue(n + 1:2 * n) - ue(1:n), length - (dist1 + dist2), length, &
-            kdisc, elastic, closed, gap, fn, f2, kc, rigi_nor, rigi_tan)
-        fe(1:n) = -f2
-        fe(n + 1:2 * n) = f2
-        ke(1:n, 1:n) = kc
-        ke(n + 1:2 * n, n + 1:2 * n) = kc
-        ke(1:n, n + 1:2 * n) = -kc
-        ke(n + 1:2 * n, 1:n) = -kc
+        e(1:n) = e(1:n) / length
+        r(1:n) = ue(n + 1:2 * n) - ue(1:n)
+        call choc_law(n, e(1:n), r(1:n), length - (dist1 + dist2), length, &
+            kdisc, elastic, closed, gap, fn, f2(1:n), kc(1:n, 1:n), rigi_nor, rigi_tan)
+        fe(1:n) = -f2(1:n)
+        fe(n + 1:2 * n) = f2(1:n)
+        ke(1:n, 1:n) = kc(1:n, 1:n)
+        ke(n + 1:2 * n, n + 1:2 * n) = kc(1:n, 1:n)
+        ke(1:n, n + 1:2 * n) = -kc(1:n, 1:n)
+        ke(n + 1:2 * n, 1:n) = -kc(1:n, 1:n)
     end subroutine choc_segment
 
     !> POI1 in n dimensions: node 1 of a virtual SEG2 whose node 2 is the fixed obstacle.
@@ -146,7 +150,7 @@ contains
         real(dp), intent(out) :: gap, fn, fe(n), ke(n, n)
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: rigi_nor, rigi_tan
-        real(dp) :: e(n), f2(n)
+        real(dp) :: e(MAX_DIM), f2(MAX_DIM), r(MAX_DIM)
         fe = 0.0_dp
         ke = 0.0_dp
         closed = .false.
@@ -157,15 +161,19 @@ contains
                 '(contact normal) is zero')
             return
         end if
-        e = ex / norm2(ex)
-        call choc_law(n, e, -ue, jeu - dist1, abs(jeu) + abs(dist1), kdisc, elastic, &
-            closed, gap, fn, f2, ke, rigi_nor, rigi_tan)
-        fe = -f2
+        e(1:n) = ex / norm2(ex)
+        r(1:n) = -ue
+        call choc_law(n, e(1:n), r(1:n), jeu - dist1, abs(jeu) + abs(dist1), kdisc, elastic, &
+            closed, gap, fn, f2(1:n), ke, rigi_nor, rigi_tan)
+        fe = -f2(1:n)
     end subroutine choc_point
 
     !> The law itself. d = d0 + r . e, with |d0| <= eps * scale taken as 0; closed iff d <= 0.
     !>  f2 : out, force on the "node 2" side (FN e + K_t r when closed)
     !>  kc : out, K_c = k_n e e^T + K_t when closed or elastic, else 0
+    !> Explicit loops on fixed-size work arrays (n <= MAX_DIM): no heap temporaries in this
+    !> per-spring, per-iteration kernel; the sums run in the order of the matmul/dot_product
+    !> expressions they replace (ascending index), so the results are unchanged.
     pure subroutine choc_law(n, e, r, d0, scale, kdisc, elastic, closed, gap, fn, f2, kc, &
                              rigi_nor, rigi_tan)
         integer(i4), intent(in) :: n
@@ -174,29 +182,71 @@ contains
         logical, intent(out) :: closed
         real(dp), intent(out) :: gap, fn, f2(n), kc(n, n)
         real(dp), intent(in), optional :: rigi_nor, rigi_tan
-        real(dp) :: p(n, n), kt(n, n), kn
-        integer(i4) :: i
-        p = -spread(e, 2, n) * spread(e, 1, n)
-        do i = 1, n
-            p(i, i) = p(i, i) + 1.0_dp
+        real(dp) :: p(MAX_DIM, MAX_DIM), kt(MAX_DIM, MAX_DIM), w(MAX_DIM, MAX_DIM), kn, t
+        integer(i4) :: i, j, k
+        do j = 1, n
+            do i = 1, n
+                p(i, j) = -e(i) * e(j)
+            end do
+            p(j, j) = p(j, j) + 1.0_dp
         end do
-        kn = dot_product(e, matmul(kdisc, e))
+        kn = 0.0_dp
+        do i = 1, n
+            t = 0.0_dp
+            do k = 1, n
+                t = t + kdisc(i, k) * e(k)
+            end do
+            kn = kn + e(i) * t
+        end do
         if (present(rigi_nor)) kn = rigi_nor
-        kt = matmul(p, matmul(kdisc, p))
-        if (present(rigi_tan)) kt = kt + rigi_tan * p
+        call small_matmul(n, kdisc, p, w)
+        call small_matmul(n, p, w, kt)
+        if (present(rigi_tan)) kt(1:n, 1:n) = kt(1:n, 1:n) + rigi_tan * p(1:n, 1:n)
+        t = 0.0_dp
+        do i = 1, n
+            t = t + r(i) * e(i)
+        end do
         if (abs(d0) <= epsilon(1.0_dp) * scale) then
-            gap = dot_product(r, e)
+            gap = t
         else
-            gap = d0 + dot_product(r, e)
+            gap = d0 + t
         end if
         closed = gap <= 0.0_dp
         fn = 0.0_dp
         f2 = 0.0_dp
         kc = 0.0_dp
-        if (closed .or. elastic) kc = kn * spread(e, 2, n) * spread(e, 1, n) + kt
+        if (closed .or. elastic) then
+            do j = 1, n
+                do i = 1, n
+                    kc(i, j) = kn * e(i) * e(j) + kt(i, j)
+                end do
+            end do
+        end if
         if (.not. closed) return
         fn = kn * gap
-        f2 = fn * e + matmul(kt, r)
+        do i = 1, n
+            t = 0.0_dp
+            do k = 1, n
+                t = t + kt(i, k) * r(k)
+            end do
+            f2(i) = fn * e(i) + t
+        end do
     end subroutine choc_law
+
+    !> c(1:n, 1:n) = a b for n x n matrices (n <= MAX_DIM), sums in ascending order.
+    pure subroutine small_matmul(n, a, b, c)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: a(:, :), b(:, :)
+        real(dp), intent(out) :: c(MAX_DIM, MAX_DIM)
+        integer(i4) :: i, j, k
+        c = 0.0_dp
+        do j = 1, n
+            do i = 1, n
+                do k = 1, n
+                    c(i, j) = c(i, j) + a(i, k) * b(k, j)
+                end do
+            end do
+        end do
+    end subroutine small_matmul
 
 end module element_dis_choc

@@ -26,7 +26,7 @@ module element_plate
     real(dp), parameter, public :: PLATE_COEF_RIGI_DRZ = 1.0e-5_dp
 
     public :: plate_local_frame, plate_local_stiffness, plate_stiffness
-    public :: plate_internal_forces, rotate_to_global
+    public :: plate_internal_forces, plate_forces_from_local, rotate_to_global
     public :: dkq_stiffness, dkt_stiffness
 
 contains
@@ -169,8 +169,7 @@ contains
         real(dp), intent(in) :: coords(3, nn), young, nu, thickness, coef_drz, ue(6 * nn)
         real(dp), intent(out) :: fe(6 * nn)
         type(status_t), intent(out) :: st
-        real(dp) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn), ul(6 * nn), fl(6 * nn)
-        integer(i4) :: i
+        real(dp) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn)
         fe = 0.0_dp
         if (nn /= 3 .and. nn /= 4) then
             call set_error(st, STATUS_MODEL_ERROR, 'DKT plates need TRIA3 or QUAD4 cells')
@@ -180,15 +179,56 @@ contains
         if (st%failed()) return
         call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
         if (st%failed()) return
-        do i = 1, 2 * nn
-            ul(3 * i - 2:3 * i) = matmul(rot, ue(3 * i - 2:3 * i))
-        end do
-        call remove_zero_energy_mode(xy, nn, ul)
-        fl = matmul(kl, ul)
-        do i = 1, 2 * nn
-            fe(3 * i - 2:3 * i) = matmul(transpose(rot), fl(3 * i - 2:3 * i))
-        end do
+        call plate_forces_from_local(rot, xy, nn, kl, ue, fe)
     end subroutine plate_internal_forces
+
+    !> The second half of plate_internal_forces, for callers that keep the local frame and
+    !> matrix of an element (computed once by plate_local_frame and plate_local_stiffness):
+    !> f = T^T K_l (T u - u_0), bit for bit what plate_internal_forces gives.
+    !>  rot, xy : in, from plate_local_frame; nn : in, 3 or 4
+    !>  kl : in, kl(6nn, 6nn) from plate_local_stiffness
+    !>  ue : in, ue(6nn) global displacements; fe : out, fe(6nn) global forces
+    pure subroutine plate_forces_from_local(rot, xy, nn, kl, ue, fe)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn), ue(6 * nn)
+        real(dp), intent(out) :: fe(6 * nn)
+        real(dp) :: ul(24), fl(24)     ! fixed size (DKQ): no heap temporaries per call
+        integer(i4) :: i, r, c
+        ! ul = T ue and fe = T^T fl by 3-vectors, sums in ascending order as matmul's
+        do i = 1, 2 * nn
+            do r = 1, 3
+                ul(3 * i - 3 + r) = 0.0_dp
+                do c = 1, 3
+                    ul(3 * i - 3 + r) = ul(3 * i - 3 + r) + rot(r, c) * ue(3 * i - 3 + c)
+                end do
+            end do
+        end do
+        call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
+        call local_matvec(6 * nn, kl, ul, fl)
+        do i = 1, 2 * nn
+            do r = 1, 3
+                fe(3 * i - 3 + r) = 0.0_dp
+                do c = 1, 3
+                    fe(3 * i - 3 + r) = fe(3 * i - 3 + r) + rot(c, r) * fl(3 * i - 3 + c)
+                end do
+            end do
+        end do
+    end subroutine plate_forces_from_local
+
+    !> fl(1:m) = kl ul(1:m), column by column (the sum over columns in ascending order, as
+    !> the library matmul does it), inlined: this is the inner kernel of every iteration.
+    pure subroutine local_matvec(m, kl, ul, fl)
+        integer(i4), intent(in) :: m
+        real(dp), intent(in) :: kl(m, m), ul(:)
+        real(dp), intent(out) :: fl(:)
+        integer(i4) :: i, j
+        fl(1:m) = 0.0_dp
+        do j = 1, m
+            do i = 1, m
+                fl(i) = fl(i) + kl(i, j) * ul(j)
+            end do
+        end do
+    end subroutine local_matvec
 
     !> Subtracts from local displacements ul (u, v, w, thx, thy, thz per node) a motion that
     !> the local matrix maps to zero: translations t, bending rotation (ox, oy) with
