@@ -123,7 +123,7 @@ def run_ccx_case(ccx, nx, ny, workdir):
                       wall, cpu, rss, dz)
 
 
-def run_parasol_case(parasol, nx, ny, workdir, nprec=PARASOL_NPREC):
+def run_parasol_case(parasol, nx, ny, workdir, nprec=PARASOL_NPREC, renum="RCMK"):
     """Run parasol on the deck equivalent to make_ccx_bed.py's for nx x ny; return a CSV row.
 
     The deck comes from tools/make_ssnl130_case.py (through ../study/parasol_case.py): the
@@ -131,7 +131,7 @@ def run_parasol_case(parasol, nx, ny, workdir, nprec=PARASOL_NPREC):
     each plate node to a ground node L below, DIS_CHOC, the pressure p (y - b)^2 as
     FORCE_COQUE (integrated at Gauss points: exact, like the ccx deck's consistent forces),
     one step to INST 1, full Newton (MATRICE = TANGENTE, REAC_ITER = 1), RESI_GLOB_RELA =
-    1e-6, RENUM = RCMK, NPREC = nprec. It runs single-threaded (OMP_NUM_THREADS =
+    1e-6, RENUM = renum (RCMK: the default), NPREC = nprec. It runs single-threaded (OMP_NUM_THREADS =
     OPENBLAS_NUM_THREADS = 1) and is timed like ccx (wall; CPU and peak RSS from os.wait4).
     DZ of PT01..PT04 at INST 1 are read from the TEST_RESU blocks of the .resu (13 digits).
     'equations' is parasol's count of free equations (after the imposed DOFs are removed);
@@ -142,7 +142,7 @@ def run_parasol_case(parasol, nx, ny, workdir, nprec=PARASOL_NPREC):
     gives a row, whose errors show it.
     """
     name = f"parasol_{nx}x{ny}"
-    args = parasol_case.case_args("a", nx, ny, "tangente", 1e-6, "RCMK", nprec, 10)
+    args = parasol_case.case_args("a", nx, ny, "tangente", 1e-6, renum, nprec, 10)
     try:
         r = parasol_case.run_case(parasol, workdir, name, args, model="a", ny=ny)
     except parasol_case.CaseError as exc:
@@ -248,6 +248,8 @@ def main(argv=None):
     ap.add_argument("--parasol", help="parasol executable: also run parasol on the "
                     "equivalent deck and write the side-by-side table")
     ap.add_argument("--side-by-side", help="Markdown table file (default <csv stem>_side.md)")
+    ap.add_argument("--parasol-renum", choices=["RCMK", "METIS", "SANS"], default="RCMK",
+                    help="SOLVEUR/RENUM of the parasol decks (default RCMK, the default)")
     ap.add_argument("--parasol-only", action="store_true",
                     help="with --parasol: skip ccx (e.g. to re-time parasol alone)")
     ap.add_argument("--keep", action="store_true", help="keep the work directories")
@@ -290,7 +292,8 @@ def main(argv=None):
                             last = ((nx, ny), float(row["cpu_s"]))
                             out = row
                         else:
-                            prow = run_parasol_case(o.parasol, nx, ny, workdir)
+                            prow = run_parasol_case(o.parasol, nx, ny, workdir,
+                                                    renum=o.parasol_renum)
                             out = prow
                             if o.parasol_only:
                                 last = ((nx, ny), float(prow["cpu_s"]))

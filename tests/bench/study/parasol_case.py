@@ -108,7 +108,7 @@ def parse_mess(path):
     out = dict(equations=None, free_equations=None, renum=None, profile_before=None,
                profile_after=None, band_before=None, band_after=None, iterations=None,
                factorizations=None, steps=None, final_resi=None, iteration_lines=0,
-               solve_s=0.0, error=None)
+               solve_s=0.0, factored_s=0.0, reused_s=0.0, error=None)
     with open(path, encoding="utf-8", errors="replace") as f:
         for line in f:
             if (m := _RE_EQUATIONS.search(line)):
@@ -125,6 +125,8 @@ def parse_mess(path):
                 out["final_resi"] = float(m.group(2))
                 out["iteration_lines"] += 1
                 out["solve_s"] += float(m.group(8))
+                out["factored_s" if m.group(5) == "factored" else "reused_s"] += \
+                    float(m.group(8))
             elif out["error"] is None and (m := _RE_ERROR.search(line)):
                 out["error"] = m.group(1).strip()
     return out

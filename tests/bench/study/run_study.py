@@ -59,8 +59,8 @@ TIME_EXPONENT = {"a": 2.0, "b": 1.0}
 COLUMNS = ["study", "knob_mesh", "model", "nx", "ny", "newton", "resi", "renum", "nprec",
            "status", "rc", "wall_s", "cpu_s", "maxrss_mb", "equations", "free_equations",
            "profile_after", "band_after", "profile_before", "band_before", "iterations",
-           "factorizations", "final_resi", "solve_s", "dz_y0", "dz_yb", "err_disc_y0",
-           "err_disc_yb", "err_disc_max", "err_cont_y0", "err_cont_yb", "err_cont_max",
+           "factorizations", "final_resi", "solve_s", "factored_s", "reused_s", "dz_y0",
+           "dz_yb", "err_disc_y0", "err_disc_yb", "err_disc_max", "err_cont_y0", "err_cont_yb", "err_cont_max",
            "message"]
 
 
@@ -154,7 +154,7 @@ def fmt(v, spec):
 
 def write_csv(path, rows):
     """study.csv: one row per (study, case), numbers with enough digits."""
-    specs = dict(wall_s=".4f", cpu_s=".4f", maxrss_mb=".1f", final_resi=".3e", solve_s=".3f",
+    specs = dict(wall_s=".4f", cpu_s=".4f", maxrss_mb=".1f", final_resi=".3e", solve_s=".3f", factored_s=".3f", reused_s=".3f",
                  dz_y0=".12e", dz_yb=".12e", err_disc_y0=".3e", err_disc_yb=".3e",
                  err_disc_max=".3e", err_cont_y0=".3e", err_cont_yb=".3e",
                  err_cont_max=".3e", resi=".0e")
@@ -310,7 +310,7 @@ def plot_all(rows, outdir, fits, o):
         if slope is not None:
             big = [(x, r["wall_s"]) for x, r in zip(n, pts) if r["wall_s"] >= o.fit_min_time]
             x0, t0 = big[-1]
-            xs = [min(n), max(n)]
+            xs = [big[0][0], big[-1][0]]
             ax1.loglog(xs, [t0 * (x / x0) ** slope for x in xs], "k--", lw=0.8, alpha=0.6)
         ax2.loglog(n, [r["maxrss_mb"] for r in pts], marker + "-",
                    label=f"model {model.upper()} peak RSS")
