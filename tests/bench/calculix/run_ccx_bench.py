@@ -131,8 +131,9 @@ def run_parasol_case(parasol, nx, ny, workdir, nprec=PARASOL_NPREC, renum="RCMK"
     each plate node to a ground node L below, DIS_CHOC, the pressure p (y - b)^2 as
     FORCE_COQUE (integrated at Gauss points: exact, like the ccx deck's consistent forces),
     one step to INST 1, full Newton (MATRICE = TANGENTE, REAC_ITER = 1), RESI_GLOB_RELA =
-    1e-6, RENUM = renum (RCMK: the default), NPREC = nprec. It runs single-threaded (OMP_NUM_THREADS =
-    OPENBLAS_NUM_THREADS = 1) and is timed like ccx (wall; CPU and peak RSS from os.wait4).
+    1e-6, RENUM = renum (RCMK: the default), NPREC = nprec. It runs single-threaded
+    (OMP_NUM_THREADS = OPENBLAS_NUM_THREADS = 1) and is timed like ccx (wall; CPU and peak
+    RSS from os.wait4).
     DZ of PT01..PT04 at INST 1 are read from the TEST_RESU blocks of the .resu (13 digits).
     'equations' is parasol's count of free equations (after the imposed DOFs are removed);
     'iterations' its Newton iterations after the prediction.
