@@ -14,14 +14,18 @@
 !> and no spring changed status in the last iteration. A zero denominator (no load) switches
 !> to the absolute criterion (RESI_GLOB_MAXI, or the RESI_GLOB_RELA value in N), and the
 !> .mess says so. Failures: STATUS_NO_CONVERGENCE (ITER_GLOB_MAXI exceeded, or a contact
-!> status cycle under full Newton), STATUS_NO_EQUILIBRIUM (springs open and the structure
-!> left free), STATUS_SINGULAR (a singular model with the springs closed).
+!> status cycle under full Newton), STATUS_NO_EQUILIBRIUM (the load cannot be carried: the
+!> structure stays free with springs open), STATUS_SINGULAR (a free equation in a matrix
+!> that should be regular, or ill-conditioning beyond NPREC of the converged contact
+!> status); see doc/analysis.md "Diagnosis" and check_no_equilibrium. An intermediate
+!> iterate whose tangent is free takes the elastic matrix for its correction. Plate and
+!> plane forces are accumulated from the increments (internal_forces_incremental).
 module contact_newton
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
         STATUS_SINGULAR
     use strings, only: to_text, real_e13
-    use mesh_types, only: cell_name
+    use mesh_types, only: cell_name, cell_group_name, cells_of_group, n_cell_groups
     use model_dof_numbering, only: describe_equation
     use model_loads, only: load_set_t
     use function_concept, only: function_concept_t, param_binding_t
@@ -29,7 +33,7 @@ module contact_newton
     use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t, &
         factor_report_t
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        assemble_stiffness, internal_forces, renumbering_lines
+        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
@@ -47,6 +51,27 @@ module contact_newton
     !> equation's own diagonal is small enough for NPREC not to flag it (e.g. a DX left free
     !> under a plate 1e8 times stiffer than its springs).
     real(dp), parameter :: RIGID_PIVOT_RATIO = 1.0e-12_dp
+    !> A pivot that lost at least this many of the ~16 significant digits is at round-off
+    !> level: the equation is free (a rigid motion or mechanism), whatever NPREC says. A
+    !> pivot that only exceeds NPREC (8 by default, Code_Aster SOLVEUR/NPREC) is an
+    !> ill-conditioned but regular matrix: SSNL130's plate ~1e10 N/m on springs ~1e2 N/m
+    !> loses ~8-9 digits, which is why Code_Aster's SSNL130 sets NPREC = 9.
+    real(dp), parameter :: FREE_PIVOT_DIGITS = 12.0_dp
+    !> Pivot classes (classify_pivots).
+    integer(i4), parameter :: PIVOT_REGULAR = 0, PIVOT_ILL_CONDITIONED = 1, PIVOT_FREE = 2
+    !> Consecutive iterations with a free tangent (and a residual that does not decrease)
+    !> after which full Newton declares that the load cannot be carried.
+    integer(i4), parameter :: FREE_ITERATIONS_MAX = 2
+    !> "Does not decrease": the residual stays above this fraction of the previous one.
+    real(dp), parameter :: NO_DECREASE_RATIO = 0.999_dp
+
+    !> What the factorization of a matrix says about its pivots.
+    type :: pivot_diagnosis_t
+        integer(i4) :: kind = PIVOT_REGULAR
+        character(len=:), allocatable :: where     !< node, component and digits lost
+        integer(i4) :: n_flagged = 0
+        integer(i4) :: nprec = 8
+    end type pivot_diagnosis_t
 
     !> NEWTON, CONVERGENCE and SOLVEUR options.
     type, public :: newton_options_t
@@ -83,13 +108,25 @@ module contact_newton
     !> The analysis state carried from iteration to iteration and step to step.
     type :: newton_state_t
         real(dp), allocatable :: u(:), fint(:), fext(:), fn(:)
+        real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
+        real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
         logical, allocatable :: closed(:)
         type(skyline_t) :: elastic, tangent
         logical :: have_elastic = .false., have_tangent = .false.
         integer(i4) :: current = MATRIX_NONE
         integer(i4) :: factorizations = 0
         logical :: refactored = .false.
+        integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
     end type newton_state_t
+
+    !> Pivot findings of one step (matrix_for_iteration).
+    type :: step_pivots_t
+        integer(i4) :: n_free = 0                      !< consecutive free-tangent iterations
+        logical :: free_now = .false.
+        character(len=:), allocatable :: free_where    !< last free pivot
+        type(pivot_diagnosis_t) :: ill                 !< last ill-conditioned tangent ...
+        logical, allocatable :: ill_closed(:)          !< ... and its contact status
+    end type step_pivots_t
 
     public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear
 
@@ -130,8 +167,10 @@ contains
         call log_add(log, lines(1))
         call log_add(log, lines(2))
         call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
-        allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), source=0.0_dp)
+        allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
+            state%du(n_eq), source=0.0_dp)
         allocate (state%closed(size(map%springs)), state%fn(size(map%springs)))
+        state%nprec = options%factor%nprec
         call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
         if (st%failed()) return
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
@@ -223,12 +262,15 @@ contains
         integer(i4) :: iter, changed, use, repeat_of
         integer(i8) :: t0, t1, rate
         logical :: zero_load, converged, said_zero
+        type(step_pivots_t) :: piv
         call log_add(log, '')
         call log_add(log, 'INST ' // real_e13(t) // ' (step ' // to_text(step) // ')')
         call log_add(log, ' ITER  RESI_GLOB_RELA  RESI_GLOB_MAXI  MATRIX                ' // &
             'CLOSED CHANGED  TIME(s)')
+        state%du = state%u
         call loads_at(s, excit, t, state%u, state%fext, st)
         if (st%failed()) return
+        state%du = state%u - state%du
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
             resi_history(0:options%iter_glob_maxi), r(map%n_free))
@@ -236,20 +278,24 @@ contains
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
-        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+        call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
+            state%closed, state%fn, st)
         if (st%failed()) return
         do iter = 0, options%iter_glob_maxi
             call system_clock(t0, rate)
             use = choose_matrix(options, iter, step, state)
-            call factor_and_diagnose(s, map, state, use, options%factor, t, log, st)
+            call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)
             if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
             if (use == MATRIX_ELASTIC) call skyline_solve(state%elastic, r, st)
             if (use == MATRIX_TANGENT) call skyline_solve(state%tangent, r, st)
             if (st%failed()) return
+            state%du = 0.0_dp
+            state%du(map%free_to_eq) = r
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
             history(:, iter) = state%closed
-            call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+            call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
+                state%fint, state%closed, state%fn, st)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
@@ -268,8 +314,8 @@ contains
             converged = changed == 0 .and. criteria_met(options, resi_rela, resi_maxi, &
                 zero_load)
             if (converged) exit
-            call check_no_equilibrium(s, map, state, use, iter, resi_maxi, previous_maxi, &
-                t, st)
+            call check_no_equilibrium(s, map, state, use, iter, changed, piv, resi_maxi, &
+                previous_maxi, t, st)
             if (st%failed()) return
             previous_maxi = resi_maxi
             repeat_of = cycle_start(history(:, 0:iter), state%closed)
@@ -293,6 +339,13 @@ contains
                 '; springs still changing: ' // changed_names(s, map, &
                 history(:, options%iter_glob_maxi), state%closed))
             return
+        end if
+        ! an ill-conditioned tangent of the converged contact status is the model's own
+        if (allocated(piv%ill_closed)) then
+            if (all(piv%ill_closed .eqv. state%closed)) then
+                call report_pivots(piv%ill, options%factor, t, log, st)
+                if (st%failed()) return
+            end if
         end if
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
@@ -364,34 +417,90 @@ contains
         state%current = use
     end function choose_matrix
 
-    !> Assembles and factors the matrix `use` if it is not ready (see assemble_and_factor).
-    subroutine factor_and_diagnose(s, map, state, use, options, t, log, st)
+    !> The matrix of one iteration, with the pivot rules of doc/analysis.md:
+    !>  - tangent with springs open and a FREE pivot (an overshooting iterate, or no
+    !>    equilibrium): this correction uses the elastic matrix (every spring closed,
+    !>    regular when the supports exist) and piv%n_free counts such iterations;
+    !>  - tangent with springs open and an ILL-CONDITIONED pivot: used; judged at
+    !>    convergence (newton_step) if the converged status is the same;
+    !>  - otherwise a flagged matrix goes to report_pivots (STATUS_SINGULAR or a warning).
+    !>  use : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
+    subroutine matrix_for_iteration(s, map, state, use, options, t, log, piv, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(inout) :: use
+        type(factor_options_t), intent(in) :: options
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        type(status_t), intent(out) :: st
+        type(pivot_diagnosis_t) :: diag
+        logical :: open_springs
+        call factor_and_diagnose(s, map, state, use, t, log, diag, st)
+        if (st%failed()) return
+        open_springs = .not. all(state%closed)
+        piv%free_now = .false.
+        if (diag%kind == PIVOT_FREE .and. use == MATRIX_TANGENT .and. open_springs) then
+            call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
+                to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
+                'correction with the elastic matrix')
+            state%have_tangent = .false.
+            piv%free_now = .true.
+            piv%free_where = diag%where
+            use = MATRIX_ELASTIC
+            call factor_and_diagnose(s, map, state, use, t, log, diag, st)
+            if (st%failed()) return
+            if (diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, t, log, st)
+        else if (diag%kind == PIVOT_ILL_CONDITIONED .and. use == MATRIX_TANGENT .and. &
+                 open_springs) then
+            call log_add(log, '  tangent matrix ill-conditioned at ' // diag%where // &
+                ' (judged if this contact status converges)')
+            piv%ill = diag
+            piv%ill_closed = state%closed
+        else if (diag%kind /= PIVOT_REGULAR) then
+            call report_pivots(diag, options, t, log, st)
+        end if
+        if (piv%free_now) then
+            piv%n_free = piv%n_free + 1
+        else
+            piv%n_free = 0
+        end if
+    end subroutine matrix_for_iteration
+
+    !> Assembles and factors the matrix `use` if it is not ready (see assemble_and_factor);
+    !> diag is PIVOT_REGULAR when the matrix was reused.
+    subroutine factor_and_diagnose(s, map, state, use, t, log, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(in) :: use
-        type(factor_options_t), intent(in) :: options
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
+        type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         state%refactored = .false.
         if (use == MATRIX_ELASTIC .and. state%have_elastic) return
         if (use == MATRIX_TANGENT .and. state%have_tangent) return
         if (use == MATRIX_ELASTIC) then
-            call assemble_and_factor(s, map, state%u, .true., state%closed, state%elastic, &
-                options, t, log, st)
+            call assemble_and_factor(s, map, state%u, .true., state%elastic, state%nprec, &
+                diag, st)
             state%have_elastic = st%ok()
         else
-            call assemble_and_factor(s, map, state%u, .false., state%closed, state%tangent, &
-                options, t, log, st)
+            call assemble_and_factor(s, map, state%u, .false., state%tangent, state%nprec, &
+                diag, st)
             state%have_tangent = st%ok()
         end if
         if (st%failed()) return
+        if (diag%kind /= PIVOT_REGULAR) call log_add(log, '  INST ' // real_e13(t) // &
+            ': pivot ' // trim(merge('free           ', 'ill-conditioned', &
+            diag%kind == PIVOT_FREE)) // ' at ' // diag%where)
         state%refactored = .true.
         state%factorizations = state%factorizations + 1
     end subroutine factor_and_diagnose
 
-    !> MECA_STATIQUE: assembles and factors the (linear) stiffness at u.
+    !> MECA_STATIQUE: assembles and factors the (linear) stiffness at u; a flagged matrix
+    !> is STATUS_SINGULAR or a warning (report_pivots).
     subroutine factor_and_diagnose_linear(s, map, u, sky, options, log, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -400,30 +509,30 @@ contains
         type(factor_options_t), intent(in) :: options
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
-        logical :: none(0)
-        call assemble_and_factor(s, map, u, .false., none, sky, options, 0.0_dp, log, st)
+        type(pivot_diagnosis_t) :: diag
+        call assemble_and_factor(s, map, u, .false., sky, options%nprec, diag, st)
+        if (st%ok() .and. diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, &
+            0.0_dp, log, st)
     end subroutine factor_and_diagnose_linear
 
-    !> Assembles the matrix at u (elastic or tangent) and factors it. A flagged pivot
-    !> becomes STATUS_NO_EQUILIBRIUM (tangent with open springs: the structure is left free),
-    !> STATUS_SINGULAR (STOP_SINGULIER = OUI) naming node and component, or a warning line.
-    !>  closed : in, the spring statuses (for the no-equilibrium message)
-    subroutine assemble_and_factor(s, map, u, elastic, closed, sky, options, t, log, st)
+    !> Assembles the matrix at u (elastic or tangent), factors it without stopping, and
+    !> classifies its pivots (classify_pivots).
+    !>  nprec : in, SOLVEUR/NPREC (0 = Code_Aster's default 8)
+    !>  diag  : out, PIVOT_REGULAR, PIVOT_ILL_CONDITIONED or PIVOT_FREE, and where
+    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
-        real(dp), intent(in) :: u(:), t
-        logical, intent(in) :: elastic, closed(:)
+        real(dp), intent(in) :: u(:)
+        logical, intent(in) :: elastic
         type(skyline_t), intent(out) :: sky
-        type(factor_options_t), intent(in) :: options
-        type(analysis_log_t), intent(inout) :: log
+        integer(i4), intent(in) :: nprec
+        type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         type(factor_options_t) :: lenient
         type(factor_report_t) :: report
-        character(len=:), allocatable :: where
-        integer(i4) :: n_open
         real(dp) :: largest
-        integer(i4) :: rigid
-        lenient = options
+        real(dp), allocatable :: pivots(:)
+        lenient%nprec = nprec
         lenient%stop_singular = .false.
         call assemble_stiffness(s, map, u, elastic, sky, st)
         if (st%failed()) return
@@ -431,56 +540,156 @@ contains
         if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
         call skyline_factor(sky, report, st, lenient)
         if (st%failed()) return
-        rigid = 0
-        if (sky%n > 0) rigid = findloc(abs(sky%values(sky%diag(1:sky%n))) <= &
-            RIGID_PIVOT_RATIO * largest, .true., dim=1)
-        if (report%n_flagged == 0 .and. rigid == 0) return
-        if (report%n_flagged > 0) then
-            where = describe_equation(s%dofs, s%mesh, &
-                map%free_to_eq(report%flagged_equations(1)))
-            where = where // ' (pivot lost ' // real_digits(report%flagged_digits_lost(1)) &
-                // ' digits, NPREC = ' // to_text(merge(abs(options%nprec), 8_i4, &
-                options%nprec /= 0)) // ')'
-        else
-            where = describe_equation(s%dofs, s%mesh, map%free_to_eq(rigid)) // &
-                ' (pivot ' // real_e13(sky%values(sky%diag(rigid))) // ' against a largest ' &
-                // 'diagonal term ' // real_e13(largest) // ')'
-        end if
-        n_open = count(.not. closed, kind=i4)
-        if (.not. elastic .and. n_open > 0) then
-            call set_error(st, STATUS_NO_EQUILIBRIUM, 'INST ' // real_e13(t) // &
-                ': no equilibrium: ' // to_text(n_open) // ' of ' // &
-                to_text(size(closed)) // ' DIS_CHOC springs are open and the ' // &
-                'structure is left free: rigid motion at ' // where)
-        else if (options%stop_singular) then
-            call set_error(st, STATUS_SINGULAR, 'singular matrix at ' // where // ', ' // &
-                to_text(max(report%n_flagged, 1_i4)) // ' pivot(s) flagged: a support ' // &
-                '(DDL_IMPO) or a stiffness is missing there')
-        else
-            call log_add(log, '  warning: matrix nearly singular at ' // where // ', ' // &
-                to_text(max(report%n_flagged, 1_i4)) // ' pivot(s) flagged ' // &
-                '(STOP_SINGULIER = NON)')
-        end if
+        pivots = sky%values(sky%diag(1:sky%n))
+        call classify_pivots(report, pivots, largest, nprec, diag)
+        if (diag%kind /= PIVOT_REGULAR) diag%where = describe_equation(s%dofs, s%mesh, &
+            map%free_to_eq(diag%n_flagged)) // diag%where
+        diag%n_flagged = report%n_flagged
     end subroutine assemble_and_factor
 
-    !> With every spring open, an elastic-matrix iteration that does not reduce the residual
-    !> means nothing holds the structure (the elastic matrix itself is regular).
-    subroutine check_no_equilibrium(s, map, state, use, iter, resi_maxi, previous_maxi, t, st)
+    !> Classifies a factorization (doc/analysis.md, "Diagnosis"): PIVOT_FREE when a pivot
+    !> lost >= FREE_PIVOT_DIGITS digits (zero included) or is below RIGID_PIVOT_RATIO of
+    !> the largest diagonal term (round-off level: a free motion); PIVOT_ILL_CONDITIONED
+    !> when pivots only exceed NPREC; PIVOT_REGULAR otherwise. On return diag%n_flagged
+    !> holds the equation to name (free numbering) and diag%where the pivot text after it.
+    subroutine classify_pivots(report, pivots, largest, nprec, diag)
+        type(factor_report_t), intent(in) :: report
+        real(dp), intent(in) :: pivots(:), largest
+        integer(i4), intent(in) :: nprec
+        type(pivot_diagnosis_t), intent(inout) :: diag
+        integer(i4) :: rigid, eq
+        diag%nprec = merge(abs(nprec), 8_i4, nprec /= 0)
+        diag%kind = PIVOT_REGULAR
+        rigid = 0
+        if (size(pivots) > 0) rigid = findloc(abs(pivots) <= RIGID_PIVOT_RATIO * largest, &
+            .true., dim=1)
+        eq = report%max_digits_equation
+        if (report%max_digits_lost >= FREE_PIVOT_DIGITS .and. eq > 0) then
+            diag%kind = PIVOT_FREE
+        else if (rigid > 0) then
+            diag%kind = PIVOT_FREE
+            diag%n_flagged = rigid
+            diag%where = ' (pivot ' // real_e13(pivots(rigid)) // ' against a largest ' // &
+                'diagonal term ' // real_e13(largest) // ')'
+            return
+        else if (report%n_flagged > 0) then
+            diag%kind = PIVOT_ILL_CONDITIONED
+            if (.not. report%max_digits_lost > real(diag%nprec, dp)) &
+                eq = report%flagged_equations(1)
+        else
+            return
+        end if
+        diag%n_flagged = eq
+        diag%where = ' (pivot lost ' // real_digits(max(report%max_digits_lost, 0.0_dp)) // &
+            ' digits, NPREC = ' // to_text(diag%nprec) // ')'
+    end subroutine classify_pivots
+
+    !> A flagged matrix that is not an iterate's overshoot: STATUS_SINGULAR (STOP_SINGULIER
+    !> = OUI) or a warning line (NON). A free pivot means a missing support or stiffness;
+    !> an ill-conditioned one means the model's stiffness contrast exceeds NPREC.
+    subroutine report_pivots(diag, options, t, log, st)
+        type(pivot_diagnosis_t), intent(in) :: diag
+        type(factor_options_t), intent(in) :: options
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: text
+        if (diag%kind == PIVOT_FREE) then
+            text = 'singular matrix at ' // diag%where // ', ' // to_text(max(diag%n_flagged, &
+                1_i4)) // ' pivot(s) flagged: the equation is free (round-off pivot); a ' // &
+                'support (DDL_IMPO) or a stiffness is missing there'
+        else
+            text = 'ill-conditioned matrix at ' // diag%where // ': more than NPREC but ' // &
+                'fewer than ' // real_digits(FREE_PIVOT_DIGITS) // ' digits lost, so the ' // &
+                'structure is held but its stiffness contrast costs that many digits; ' // &
+                'if the contrast is expected raise SOLVEUR/NPREC (Code_Aster''s SSNL130 ' // &
+                'uses NPREC = 9)'
+            if (options%stop_singular) text = text // ', or set STOP_SINGULIER = ''NON''' &
+                // ' to go on with a warning'
+        end if
+        if (options%stop_singular) then
+            call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': ' // text)
+        else
+            call log_add(log, '  warning (STOP_SINGULIER = NON): ' // text)
+        end if
+    end subroutine report_pivots
+
+    !> No equilibrium (the load cannot be carried, the iterate is not converged), declared
+    !> when
+    !>  - every DIS_CHOC spring is open after an elastic-matrix correction and the residual
+    !>    does not decrease, or
+    !>  - the tangent was free for FREE_ITERATIONS_MAX consecutive iterations and the last
+    !>    one changed no spring status (that contact status is a mechanism the load drives)
+    !>    or did not decrease the residual, or
+    !>  - (ELASTIQUE) the residual does not decrease, no status changed, and the tangent of
+    !>    that status (factored here, only then) is free.
+    subroutine check_no_equilibrium(s, map, state, use, iter, changed, piv, resi_maxi, &
+                                    previous_maxi, t, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(in) :: state
-        integer(i4), intent(in) :: use, iter
+        integer(i4), intent(in) :: use, iter, changed
+        type(step_pivots_t), intent(in) :: piv
         real(dp), intent(in) :: resi_maxi, previous_maxi, t
         type(status_t), intent(out) :: st
-        if (use /= MATRIX_ELASTIC .or. iter < 1 .or. size(state%closed) == 0) return
-        if (any(state%closed)) return
-        if (resi_maxi < 0.999_dp * previous_maxi) return
-        call set_error(st, STATUS_NO_EQUILIBRIUM, 'INST ' // real_e13(t) // &
-            ': no equilibrium: ' // to_text(size(state%closed)) // ' of ' // &
-            to_text(size(state%closed)) // ' DIS_CHOC springs are open (from ' // &
-            cell_name(s%mesh, map%springs(1)) // ') and the residual ' // &
-            real_e13(resi_maxi) // ' N no longer decreases: the structure is left free')
+        character(len=:), allocatable :: text
+        logical :: stalled, all_open, stays_free
+        type(skyline_t) :: sky
+        type(pivot_diagnosis_t) :: diag
+        if (size(state%closed) == 0) return
+        stalled = resi_maxi >= NO_DECREASE_RATIO * previous_maxi
+        all_open = use == MATRIX_ELASTIC .and. iter >= 1 .and. .not. any(state%closed)
+        stays_free = piv%n_free >= FREE_ITERATIONS_MAX .and. (changed == 0 .or. stalled)
+        diag%kind = PIVOT_REGULAR
+        if (use == MATRIX_ELASTIC .and. iter >= 1 .and. stalled .and. changed == 0 .and. &
+            .not. all_open .and. .not. stays_free) then
+            ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
+            ! status is no equilibrium if that status leaves the structure free
+            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st)
+            if (st%failed()) return
+            stays_free = diag%kind == PIVOT_FREE
+        end if
+        if (.not. ((all_open .and. stalled) .or. stays_free)) return
+        text = 'INST ' // real_e13(t) // ': no equilibrium: ' // &
+            to_text(count(.not. state%closed, kind=i4)) // ' of ' // &
+            to_text(size(state%closed)) // ' DIS_CHOC springs are open (' // &
+            spring_group(s, map) // ') and the structure is left free'
+        if (allocated(piv%free_where)) then
+            text = text // ': rigid motion at ' // piv%free_where
+        else
+            ! ELASTIQUE never factors the tangent: factor it once here to name the motion
+            if (diag%kind == PIVOT_REGULAR) call assemble_and_factor(s, map, state%u, &
+                .false., sky, state%nprec, diag, st)
+            if (st%failed()) return
+            if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
+        end if
+        call set_error(st, STATUS_NO_EQUILIBRIUM, text // '; the residual ' // &
+            real_e13(resi_maxi) // ' N no longer decreases')
     end subroutine check_no_equilibrium
+
+    !> The cell group made of exactly the DIS_CHOC springs ("group G"), else the first
+    !> spring's name ("from cell C").
+    function spring_group(s, map) result(text)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        character(len=:), allocatable :: text
+        integer(i4), allocatable :: cells(:)
+        integer(i4) :: g, k
+        logical :: all_in
+        do g = 1, n_cell_groups(s%mesh)
+            cells = cells_of_group(s%mesh, g)
+            if (size(cells) /= size(map%springs)) cycle
+            all_in = .true.
+            do k = 1, size(map%springs)
+                all_in = all_in .and. any(cells == map%springs(k))
+            end do
+            if (all_in) then
+                text = 'group ' // cell_group_name(s%mesh, g)
+                return
+            end if
+        end do
+        text = 'from cell ' // cell_name(s%mesh, map%springs(1))
+    end function spring_group
 
     !> Earliest iteration whose status set equals `now`, except the last one; -1 if none.
     pure integer(i4) function cycle_start(history, now) result(k)

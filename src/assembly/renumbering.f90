@@ -100,11 +100,9 @@ contains
         integer(i4), intent(out) :: new_to_old(:)
         integer(i4), allocatable :: degree(:), mark(:), level_ptr(:), order(:)
         logical, allocatable :: numbered(:)
-        integer(i4) :: count, seed, root, i, stamp
+        integer(i4) :: count, seed, root, stamp
         allocate (degree(n), mark(n), level_ptr(n + 1), order(n), numbered(n))
-        do i = 1, n
-            degree(i) = count_neighbours(i)
-        end do
+        call vertex_degrees(n, xadj, adjncy, degree)
         numbered = .false.
         mark = 0
         stamp = 0
@@ -114,109 +112,156 @@ contains
             do while (numbered(seed))
                 seed = seed + 1
             end do
-            call find_pseudo_peripheral(seed, root)
-            call cuthill_mckee(root)
+            call find_pseudo_peripheral(seed, xadj, adjncy, degree, numbered, mark, stamp, &
+                                        order, level_ptr, root)
+            call cuthill_mckee_component(root, xadj, adjncy, degree, numbered, new_to_old, &
+                                         count)
         end do
+        ! The reversal (George 1971): same bandwidth, never a larger profile.
         new_to_old(1:n) = new_to_old(n:1:-1)
-    contains
-        integer(i4) function count_neighbours(v)
-            integer(i4), intent(in) :: v
-            integer(i4) :: k
-            count_neighbours = 0
+    end subroutine renumber_rcm
+
+    !> Degree of every vertex, self loops not counted.
+    !>  n, xadj, adjncy : in, a valid graph;  degree : out, size n
+    pure subroutine vertex_degrees(n, xadj, adjncy, degree)
+        integer(i4), intent(in) :: n, xadj(:), adjncy(:)
+        integer(i4), intent(out) :: degree(:)
+        integer(i4) :: v, k
+        do v = 1, n
+            degree(v) = 0
             do k = xadj(v), xadj(v + 1) - 1
-                if (adjncy(k) /= v) count_neighbours = count_neighbours + 1
+                if (adjncy(k) /= v) degree(v) = degree(v) + 1
             end do
-        end function count_neighbours
+        end do
+    end subroutine vertex_degrees
 
-        !> Rooted level structure of the unnumbered component of `from`: order(1:m) by
-        !> levels, level l = order(level_ptr(l) : level_ptr(l+1)-1).
-        subroutine level_structure(from, m, n_levels)
-            integer(i4), intent(in) :: from
-            integer(i4), intent(out) :: m, n_levels
-            integer(i4) :: head, v, k, w, level_end
-            stamp = stamp + 1
-            order(1) = from
-            mark(from) = stamp
-            m = 1
-            head = 1
-            n_levels = 0
-            do while (head <= m)
-                n_levels = n_levels + 1
-                level_ptr(n_levels) = head
-                level_end = m
-                do while (head <= level_end)
-                    v = order(head)
-                    head = head + 1
-                    do k = xadj(v), xadj(v + 1) - 1
-                        w = adjncy(k)
-                        if (mark(w) == stamp .or. numbered(w)) cycle
-                        mark(w) = stamp
-                        m = m + 1
-                        order(m) = w
-                    end do
-                end do
-            end do
-            level_ptr(n_levels + 1) = m + 1
-        end subroutine level_structure
-
-        !> George-Liu: move to a minimum-degree vertex of the last level while the
-        !> eccentricity grows.
-        subroutine find_pseudo_peripheral(start, best)
-            integer(i4), intent(in) :: start
-            integer(i4), intent(out) :: best
-            integer(i4) :: m, depth, new_depth, k, x
-            best = start
-            call level_structure(best, m, depth)
-            do
-                x = order(level_ptr(depth))
-                do k = level_ptr(depth) + 1, level_ptr(depth + 1) - 1
-                    if (degree(order(k)) < degree(x)) x = order(k)
-                end do
-                call level_structure(x, m, new_depth)
-                if (new_depth <= depth) exit
-                best = x
-                depth = new_depth
-            end do
-        end subroutine find_pseudo_peripheral
-
-        !> Cuthill-McKee breadth-first numbering of root's component.
-        subroutine cuthill_mckee(start)
-            integer(i4), intent(in) :: start
-            integer(i4) :: head, v, k, w, first, a, b, tmp
-            count = count + 1
-            new_to_old(count) = start
-            numbered(start) = .true.
-            head = count
-            do while (head <= count)
-                v = new_to_old(head)
+    !> Rooted level structure (breadth-first levels) of the component of `from` among the
+    !> vertices not yet numbered: order(1:m) by levels, level l being
+    !> order(level_ptr(l) : level_ptr(l+1)-1).
+    !>  from            : in, the root
+    !>  xadj, adjncy    : in, a valid graph;  numbered : in, vertices already ordered
+    !>  mark, stamp     : inout, visit marks: a vertex is seen when mark = stamp; the stamp
+    !>                    is advanced so the marks never need clearing
+    !>  order, level_ptr: out, sizes n and n+1, the structure
+    !>  m, n_levels     : out, vertices reached (with from) and number of levels
+    pure subroutine level_structure(from, xadj, adjncy, numbered, mark, stamp, order, &
+                                    level_ptr, m, n_levels)
+        integer(i4), intent(in) :: from, xadj(:), adjncy(:)
+        logical, intent(in) :: numbered(:)
+        integer(i4), intent(inout) :: mark(:), stamp
+        integer(i4), intent(inout) :: order(:), level_ptr(:)
+        integer(i4), intent(out) :: m, n_levels
+        integer(i4) :: head, v, k, w, level_end
+        stamp = stamp + 1
+        order(1) = from
+        mark(from) = stamp
+        m = 1
+        head = 1
+        n_levels = 0
+        do while (head <= m)
+            n_levels = n_levels + 1
+            level_ptr(n_levels) = head
+            level_end = m
+            do while (head <= level_end)
+                v = order(head)
                 head = head + 1
-                first = count + 1
                 do k = xadj(v), xadj(v + 1) - 1
                     w = adjncy(k)
-                    if (numbered(w)) cycle
-                    numbered(w) = .true.
-                    count = count + 1
-                    new_to_old(count) = w
-                end do
-                ! Insertion sort of the new vertices by (degree, number): lists are short.
-                do a = first + 1, count
-                    tmp = new_to_old(a)
-                    b = a - 1
-                    do while (b >= first)
-                        if (.not. precedes(tmp, new_to_old(b))) exit
-                        new_to_old(b + 1) = new_to_old(b)
-                        b = b - 1
-                    end do
-                    new_to_old(b + 1) = tmp
+                    if (mark(w) == stamp .or. numbered(w)) cycle
+                    mark(w) = stamp
+                    m = m + 1
+                    order(m) = w
                 end do
             end do
-        end subroutine cuthill_mckee
+        end do
+        level_ptr(n_levels + 1) = m + 1
+    end subroutine level_structure
 
-        logical function precedes(p, q)
+    !> Pseudo-peripheral vertex of start's unnumbered component (George & Liu 1979): move
+    !> to a minimum-degree vertex of the last level (the first one met) while the
+    !> eccentricity grows.
+    !>  start           : in, the vertex to search from
+    !>  degree          : in, vertex degrees (vertex_degrees)
+    !>  numbered, mark, stamp, order, level_ptr : as in level_structure (work arrays)
+    !>  best            : out, the vertex found
+    pure subroutine find_pseudo_peripheral(start, xadj, adjncy, degree, numbered, mark, stamp, &
+                                           order, level_ptr, best)
+        integer(i4), intent(in) :: start, xadj(:), adjncy(:), degree(:)
+        logical, intent(in) :: numbered(:)
+        integer(i4), intent(inout) :: mark(:), stamp, order(:), level_ptr(:)
+        integer(i4), intent(out) :: best
+        integer(i4) :: m, depth, new_depth, k, x
+        best = start
+        call level_structure(best, xadj, adjncy, numbered, mark, stamp, order, level_ptr, &
+                             m, depth)
+        do
+            x = order(level_ptr(depth))
+            do k = level_ptr(depth) + 1, level_ptr(depth + 1) - 1
+                if (degree(order(k)) < degree(x)) x = order(k)
+            end do
+            call level_structure(x, xadj, adjncy, numbered, mark, stamp, order, level_ptr, &
+                                 m, new_depth)
+            if (new_depth <= depth) exit
+            best = x
+            depth = new_depth
+        end do
+    end subroutine find_pseudo_peripheral
+
+    !> Cuthill-McKee breadth-first numbering of root's unnumbered component (Cuthill &
+    !> McKee 1969): the unnumbered neighbours of each numbered vertex, in turn, get the next
+    !> numbers by increasing (degree, vertex number).
+    !>  root         : in, first vertex of the component (pseudo-peripheral)
+    !>  degree       : in, vertex degrees;  numbered : inout, set for the vertices numbered
+    !>  new_to_old   : inout, new_to_old(count+1:) receives the component
+    !>  count        : inout, vertices numbered so far
+    pure subroutine cuthill_mckee_component(root, xadj, adjncy, degree, numbered, new_to_old, &
+                                            count)
+        integer(i4), intent(in) :: root, xadj(:), adjncy(:), degree(:)
+        logical, intent(inout) :: numbered(:)
+        integer(i4), intent(inout) :: new_to_old(:), count
+        integer(i4) :: head, v, k, w, first
+        count = count + 1
+        new_to_old(count) = root
+        numbered(root) = .true.
+        head = count
+        do while (head <= count)
+            v = new_to_old(head)
+            head = head + 1
+            first = count + 1
+            do k = xadj(v), xadj(v + 1) - 1
+                w = adjncy(k)
+                if (numbered(w)) cycle
+                numbered(w) = .true.
+                count = count + 1
+                new_to_old(count) = w
+            end do
+            call sort_by_degree(new_to_old(first:count), degree)
+        end do
+    end subroutine cuthill_mckee_component
+
+    !> Insertion sort of vertices by (degree, vertex number): the lists (new neighbours of
+    !> one vertex) are short.
+    !>  list   : inout, vertices;  degree : in, vertex degrees
+    pure subroutine sort_by_degree(list, degree)
+        integer(i4), intent(inout) :: list(:)
+        integer(i4), intent(in) :: degree(:)
+        integer(i4) :: a, b, tmp
+        do a = 2, size(list)
+            tmp = list(a)
+            b = a - 1
+            do while (b >= 1)
+                if (.not. precedes(tmp, list(b))) exit
+                list(b + 1) = list(b)
+                b = b - 1
+            end do
+            list(b + 1) = tmp
+        end do
+    contains
+        pure logical function precedes(p, q)
             integer(i4), intent(in) :: p, q
             precedes = degree(p) < degree(q) .or. (degree(p) == degree(q) .and. p < q)
         end function precedes
-    end subroutine renumber_rcm
+    end subroutine sort_by_degree
 
     !> Nested-dissection ordering by METIS_NodeND (default options, C numbering). Self loops
     !> are dropped (METIS requires none); graphs without edges keep the identity.

@@ -10,6 +10,7 @@
 !> (it is the run's story) and the .resu is discarded (an older one is left untouched).
 module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use, intrinsic :: iso_c_binding, only: c_char, c_size_t, c_intptr_t, c_null_char
     use kinds, only: i4
     use strings, only: string_t, to_text, starts_with
     use status, only: status_t, format_status, set_error, STATUS_DECK_ERROR
@@ -27,8 +28,8 @@ module cli
     integer, parameter, public :: EXIT_OK = 0, EXIT_ERROR = 1, EXIT_NOOK = 2
 
     !> The bundled deck run when no DECK is given, relative to the folder of the parasol
-    !> executable (<prefix>/bin/parasol -> <prefix>/decks/ssnl130a.comm). Not used yet: until
-    !> the SSNL130 issue lands, parasol without a deck prints its version and usage.
+    !> executable (<prefix>/bin/parasol -> <prefix>/decks/ssnl130a.comm; in a build tree,
+    !> build/parasol -> decks/ssnl130a.comm). Its mesh is found beside it (unit 20 default).
     character(len=*), parameter, public :: BUNDLED_DECK = '../decks/ssnl130a.comm'
 
     !> Parsed command line.
@@ -51,14 +52,68 @@ contains
         call parse_options(args, opts, exit_status, done)
         if (done) return
         if (.not. allocated(opts%deck)) then
-            ! Later (SSNL130 issue): opts%deck = bundled_deck_path(), then run it.
-            write (output_unit, '(a)') 'parasol ' // parasol_version_string
-            call print_usage(output_unit)
-            exit_status = EXIT_OK
+            call run_bundled(opts, exit_status)
             return
         end if
         call run_deck(opts, exit_status)
     end subroutine run_parasol
+
+    !> No deck on the command line: run the bundled SSNL130 model A deck (the demonstration
+    !> and smoke test of an installation), then show its TEST_RESU table on the terminal so
+    !> the verdict is visible without opening the .resu. Exit status as for any deck.
+    subroutine run_bundled(opts, exit_status)
+        type(options_t), intent(inout) :: opts
+        integer, intent(out) :: exit_status
+        logical :: exists
+        opts%deck = bundled_deck_path()
+        inquire (file=opts%deck, exist=exists)
+        if (.not. exists) then
+            write (error_unit, '(a)') 'parasol: error: no DECK given and the bundled deck ' // &
+                opts%deck // ' is missing (give a deck: parasol [options] DECK)'
+            call print_usage(error_unit)
+            exit_status = EXIT_ERROR
+            return
+        end if
+        write (output_unit, '(a)') 'parasol ' // parasol_version_string // ': no deck given ' // &
+            '(usage: parasol [options] [DECK]; parasol --help), running the bundled SSNL130 ' // &
+            'model A deck ' // opts%deck
+        call run_deck(opts, exit_status)
+        if (exit_status /= EXIT_ERROR) call echo_test_resu(opts, exit_status)
+    end subroutine run_bundled
+
+    !> Copies the TEST_RESU blocks of the run's .resu (identification lines, table header,
+    !> OK/NOOK check lines; listings.md) to standard output, then the verdict line.
+    subroutine echo_test_resu(opts, exit_status)
+        type(options_t), intent(in) :: opts
+        integer, intent(in) :: exit_status
+        type(run_context_t) :: ctx
+        character(len=1024) :: line
+        integer :: u, ios
+        logical :: echo_next
+        call init_context(ctx, opts%deck, opts%outdir)
+        open (newunit=u, file=ctx%output_path('.resu'), status='old', action='read', &
+              iostat=ios)
+        if (ios /= 0) return
+        echo_next = .false.
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (echo_next .or. (starts_with(line, ' ---- ') .and. index(line, 'NOM_CMP') > 0) &
+                .or. starts_with(line, '      REFERENCE') .or. starts_with(line, ' OK   ') &
+                .or. starts_with(line, 'NOOK  ')) then
+                write (output_unit, '(a)') trim(line)
+            end if
+            echo_next = starts_with(line, ' ---- ') .and. index(line, 'NOM_CMP') > 0
+        end do
+        close (u)
+        if (exit_status == EXIT_OK) then
+            write (output_unit, '(a)') 'parasol: every TEST_RESU check is OK (listings: ' // &
+                ctx%output_path('.mess') // ', ' // ctx%output_path('.resu') // ')'
+        else
+            write (output_unit, '(a)') 'parasol: some TEST_RESU checks are NOOK (see ' // &
+                ctx%output_path('.mess') // ')'
+        end if
+    end subroutine echo_test_resu
 
     !> Options: --unit N=PATH, --outdir DIR, --check, --help, --version, then DECK.
     subroutine parse_options(args, opts, exit_status, done)
@@ -222,8 +277,9 @@ contains
         end if
     end subroutine finish
 
-    !> The bundled deck: BUNDLED_DECK resolved against the folder of the running executable
-    !> (argument 0), e.g. build/parasol -> build/../decks/ssnl130a.comm.
+    !> The bundled deck: BUNDLED_DECK resolved against the folder of the running executable,
+    !> e.g. build/parasol -> build/../decks/ssnl130a.comm. The executable is argument 0 when it
+    !> holds a folder; otherwise (parasol found through PATH) the link /proc/self/exe (Linux).
     function bundled_deck_path() result(path)
         character(len=:), allocatable :: path
         character(len=:), allocatable :: exe
@@ -231,9 +287,36 @@ contains
         call get_command_argument(0, length=length)
         allocate (character(len=length) :: exe)
         call get_command_argument(0, exe)
+        if (index(exe, '/') == 0) call read_link('/proc/self/exe', exe)
         slash = index(exe, '/', back=.true.)
         path = exe(1:slash) // BUNDLED_DECK
     end function bundled_deck_path
+
+    !> Target of the symbolic link `link` (POSIX readlink); `target` is left unchanged when the
+    !> link cannot be read.
+    subroutine read_link(link, target)
+        character(len=*), intent(in) :: link
+        character(len=:), allocatable, intent(inout) :: target
+        interface
+            function c_readlink(pathname, buf, bufsiz) result(n) bind(c, name='readlink')
+                import :: c_char, c_size_t, c_intptr_t
+                character(kind=c_char), intent(in) :: pathname(*)
+                character(kind=c_char), intent(out) :: buf(*)
+                integer(c_size_t), value :: bufsiz
+                integer(c_intptr_t) :: n  ! ssize_t
+            end function c_readlink
+        end interface
+        integer, parameter :: BUF_LEN = 4096
+        character(kind=c_char) :: buf(BUF_LEN)
+        integer(c_intptr_t) :: n
+        integer :: k
+        n = c_readlink(link // c_null_char, buf, int(BUF_LEN, c_size_t))
+        if (n <= 0 .or. n >= BUF_LEN) return
+        target = repeat(' ', int(n))
+        do k = 1, int(n)
+            target(k:k) = buf(k)
+        end do
+    end subroutine read_link
 
     !> Writes the usage text.
     subroutine print_usage(unit)

@@ -25,6 +25,25 @@ module deck_lexer
         integer(i4) :: col = 0
     end type token_t
 
+    !> State of one tokenize call: the read position (byte i of n, at line/col), the open
+    !> brackets (where each was opened, for the unbalanced-bracket message), the indentation
+    !> widths of the enclosing blocks, and the tokens made so far, tokens(1:ntok).
+    type :: lexer_t
+        integer :: n = 0
+        integer :: i = 1
+        integer :: line = 1
+        integer :: col = 1
+        integer :: depth = 0
+        integer :: open_line(MAX_BRACKETS) = 0
+        integer :: open_col(MAX_BRACKETS) = 0
+        integer :: nind = 1
+        integer :: indents(MAX_INDENT_LEVELS) = 0
+        logical :: at_line_start = .true.
+        integer :: ntok = 0
+        type(token_t), allocatable :: tokens(:)
+        character(len=:), allocatable :: file
+    end type lexer_t
+
     public :: tokenize, check_bytes
 
 contains
@@ -77,7 +96,9 @@ contains
         end do
     end subroutine check_bytes
 
-    !> Splits `text` into tokens.
+    !> Splits `text` into tokens. The work is done by one procedure per token family
+    !> (lex_indentation, lex_token and the lex_* readers it dispatches to, finish_tokens);
+    !> they share the read position and the token list through a lexer_t.
     !>  text   : in, deck text (any of LF, CRLF line ends; tabs count as indentation)
     !>  file   : in, file name used in messages
     !>  tokens : out, the tokens, ending with NEWLINE, DEDENTs and EOF
@@ -89,315 +110,428 @@ contains
         type(token_t), allocatable, intent(out) :: tokens(:)
         type(status_t), intent(out) :: st
         integer, intent(in), optional :: line0, col0
-        integer :: i, n, line, col, depth, ntok, nind, indents(MAX_INDENT_LEVELS)
-        integer :: open_line(MAX_BRACKETS), open_col(MAX_BRACKETS)
-        logical :: at_line_start
-        character :: ch
-        allocate (tokens(64))
-        ntok = 0; n = len(text); i = 1
-        line = 1; col = 1
-        if (present(line0)) line = line0
-        if (present(col0)) col = col0
-        depth = 0; nind = 1; indents(1) = 0; at_line_start = .true.
-        do while (i <= n)
-            if (at_line_start .and. depth == 0) then
-                call handle_indent()
-                if (st%failed()) return
-                if (i > n) exit
+        type(lexer_t) :: lx
+        allocate (lx%tokens(64))
+        lx%n = len(text)
+        lx%file = file
+        if (present(line0)) lx%line = line0
+        if (present(col0)) lx%col = col0
+        do while (lx%i <= lx%n)
+            if (lx%at_line_start .and. lx%depth == 0) then
+                call lex_indentation(lx, text, st)
+                if (st%failed()) exit
+                if (lx%i > lx%n) exit
             end if
-            ch = text(i:i)
-            select case (ch)
-            case (' ', achar(9), achar(12), achar(13))
-                i = i + 1; col = col + 1
-            case ('#')
-                do while (i <= n)
-                    if (text(i:i) == achar(10)) exit
-                    i = i + 1
-                end do
-            case (achar(10))
-                if (depth == 0) call newline_token(line, col)
-                i = i + 1; line = line + 1; col = 1
-                at_line_start = .true.
-            case ('\')
-                if (i < n .and. text(min(i + 1, n):min(i + 1, n)) == achar(10)) then
-                    i = i + 2; line = line + 1; col = 1
-                else if (i + 1 < n .and. &
-                         text(min(i + 1, n):min(i + 2, n)) == achar(13) // achar(10)) then
-                    i = i + 3; line = line + 1; col = 1
-                else
-                    call fail('unexpected character "\"', line, col); return
-                end if
-            case ("'", '"')
-                call lex_string()
-                if (st%failed()) return
-            case ('0':'9', '.')
-                if (ch == '.' .and. .not. next_is_digit(i + 1)) then
-                    call push(TOK_OP, '.', line, col)
-                    i = i + 1; col = col + 1
-                else
-                    call lex_number()
-                    if (st%failed()) return
-                end if
-            case ('a':'z', 'A':'Z', '_')
-                call lex_name()
-            case ('(', '[', '{')
-                if (depth >= MAX_BRACKETS) then
-                    call fail('brackets nested deeper than ' // to_text(MAX_BRACKETS) // &
-                        ' levels (simplify the expression)', line, col); return
-                end if
-                depth = depth + 1
-                open_line(depth) = line; open_col(depth) = col
-                call push(TOK_OP, ch, line, col)
-                i = i + 1; col = col + 1
-            case (')', ']', '}')
-                if (depth == 0) then
-                    call fail('unmatched "' // ch // '"', line, col); return
-                end if
-                depth = depth - 1
-                call push(TOK_OP, ch, line, col)
-                i = i + 1; col = col + 1
-            case default
-                call lex_operator()
-                if (st%failed()) return
-            end select
+            call lex_token(lx, text, st)
+            if (st%failed()) exit
         end do
-        if (depth > 0) then
-            call fail('unbalanced bracket: "' // '(' // '" opened here is never closed ' // &
-                '(add the missing closing bracket)', open_line(depth), open_col(depth))
+        if (.not. st%failed()) call finish_tokens(lx, st)
+        if (.not. st%failed()) lx%tokens = lx%tokens(1:lx%ntok)
+        call move_alloc(lx%tokens, tokens)
+    end subroutine tokenize
+
+    !> Reads the token (or skips the blank, comment or line continuation) that starts at
+    !> text(lx%i), choosing the reader by its first character.
+    !>  lx : inout, lexer state, advanced past what was read
+    !>  st : out, STATUS_DECK_ERROR from the reader, located
+    subroutine lex_token(lx, text, st)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        character :: ch
+        ch = text(lx%i:lx%i)
+        select case (ch)
+        case (' ', achar(9), achar(12), achar(13))
+            lx%i = lx%i + 1; lx%col = lx%col + 1
+        case ('#')
+            call skip_comment(lx, text)
+        case (achar(10))
+            call lex_line_end(lx)
+        case ('\')
+            call skip_line_continuation(lx, text, st)
+        case ("'", '"')
+            call lex_string(lx, text, st)
+        case ('0':'9', '.')
+            ! A dot not followed by a digit is the attribute operator (`a.b`), not `.5`.
+            if (ch == '.' .and. .not. next_is_digit(text, lx%i + 1)) then
+                call push_token(lx, TOK_OP, '.', lx%line, lx%col)
+                lx%i = lx%i + 1; lx%col = lx%col + 1
+            else
+                call lex_number(lx, text, st)
+            end if
+        case ('a':'z', 'A':'Z', '_')
+            call lex_name(lx, text)
+        case ('(', '[', '{', ')', ']', '}')
+            call lex_bracket(lx, ch, st)
+        case default
+            call lex_operator(lx, text, st)
+        end select
+    end subroutine lex_token
+
+    !> Ends the token list at the end of the text: refuses a bracket still open (located
+    !> where it was opened), then adds the last NEWLINE, a DEDENT per open block and EOF.
+    !>  lx : inout, lexer state at the end of the text
+    !>  st : out, STATUS_DECK_ERROR for an unbalanced bracket
+    subroutine finish_tokens(lx, st)
+        type(lexer_t), intent(inout) :: lx
+        type(status_t), intent(out) :: st
+        if (lx%depth > 0) then
+            call lex_fail(lx, st, 'unbalanced bracket: "' // '(' // '" opened here is never ' &
+                // 'closed (add the missing closing bracket)', lx%open_line(lx%depth), &
+                lx%open_col(lx%depth))
             return
         end if
-        call newline_token(line, col)
-        do while (nind > 1)
-            call push(TOK_DEDENT, '', line, col)
-            nind = nind - 1
+        call push_newline(lx, lx%line, lx%col)
+        do while (lx%nind > 1)
+            call push_token(lx, TOK_DEDENT, '', lx%line, lx%col)
+            lx%nind = lx%nind - 1
         end do
-        call push(TOK_EOF, '', line, col)
-        tokens = tokens(1:ntok)
+        call push_token(lx, TOK_EOF, '', lx%line, lx%col)
+    end subroutine finish_tokens
 
-    contains
+    !> Sets a STATUS_DECK_ERROR at line l, column c of the lexer's file.
+    subroutine lex_fail(lx, st, message, l, c)
+        type(lexer_t), intent(in) :: lx
+        type(status_t), intent(out) :: st
+        character(len=*), intent(in) :: message
+        integer, intent(in) :: l, c
+        call set_error(st, STATUS_DECK_ERROR, message, file=lx%file, line=l, column=c)
+    end subroutine lex_fail
 
-        subroutine fail(message, l, c)
-            character(len=*), intent(in) :: message
-            integer, intent(in) :: l, c
-            call set_error(st, STATUS_DECK_ERROR, message, file=file, line=l, column=c)
-        end subroutine fail
+    !> Appends a token (kind, text, line l, column c), doubling the list when it is full.
+    subroutine push_token(lx, kind, txt, l, c)
+        type(lexer_t), intent(inout) :: lx
+        integer, intent(in) :: kind, l, c
+        character(len=*), intent(in) :: txt
+        type(token_t), allocatable :: bigger(:)
+        if (lx%ntok == size(lx%tokens)) then
+            allocate (bigger(2 * size(lx%tokens)))
+            bigger(1:lx%ntok) = lx%tokens(1:lx%ntok)
+            call move_alloc(bigger, lx%tokens)
+        end if
+        lx%ntok = lx%ntok + 1
+        lx%tokens(lx%ntok)%kind = kind
+        lx%tokens(lx%ntok)%text = txt
+        lx%tokens(lx%ntok)%line = l
+        lx%tokens(lx%ntok)%col = c
+    end subroutine push_token
 
-        subroutine push(kind, txt, l, c)
-            integer, intent(in) :: kind, l, c
-            character(len=*), intent(in) :: txt
-            type(token_t), allocatable :: bigger(:)
-            if (ntok == size(tokens)) then
-                allocate (bigger(2 * size(tokens)))
-                bigger(1:ntok) = tokens(1:ntok)
-                call move_alloc(bigger, tokens)
+    !> A NEWLINE token, not repeated, not right after INDENT/DEDENT and not at the start.
+    subroutine push_newline(lx, l, c)
+        type(lexer_t), intent(inout) :: lx
+        integer, intent(in) :: l, c
+        if (lx%ntok == 0) return
+        if (lx%tokens(lx%ntok)%kind == TOK_NEWLINE .or. lx%tokens(lx%ntok)%kind == TOK_INDENT &
+            .or. lx%tokens(lx%ntok)%kind == TOK_DEDENT) return
+        call push_token(lx, TOK_NEWLINE, '', l, c)
+    end subroutine push_newline
+
+    !> Newlines and indentation: a line end gives a NEWLINE outside brackets (inside them the
+    !> logical line goes on) and makes the next line start with an indentation check.
+    subroutine lex_line_end(lx)
+        type(lexer_t), intent(inout) :: lx
+        if (lx%depth == 0) call push_newline(lx, lx%line, lx%col)
+        lx%i = lx%i + 1; lx%line = lx%line + 1; lx%col = 1
+        lx%at_line_start = .true.
+    end subroutine lex_line_end
+
+    !> Newlines and indentation: measures the indentation of a logical line (tabs to the next
+    !> multiple of 8, as Python) and emits INDENT/DEDENT tokens. Blank and comment-only lines
+    !> do not count.
+    !>  lx : inout, lexer state at the start of a line, left at its first non-blank
+    !>  st : out, STATUS_DECK_ERROR for too many nested blocks or a dedent to a width that
+    !>       no enclosing block has
+    subroutine lex_indentation(lx, text, st)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        integer :: width, j, c
+        width = 0; j = lx%i; c = lx%col
+        do while (j <= lx%n)
+            if (text(j:j) == ' ') then
+                width = width + 1
+            else if (text(j:j) == achar(9)) then
+                width = (width / 8 + 1) * 8
+            else if (text(j:j) /= achar(12)) then
+                exit
             end if
-            ntok = ntok + 1
-            tokens(ntok)%kind = kind
-            tokens(ntok)%text = txt
-            tokens(ntok)%line = l
-            tokens(ntok)%col = c
-        end subroutine push
-
-        !> A NEWLINE token, not repeated and not at the start.
-        subroutine newline_token(l, c)
-            integer, intent(in) :: l, c
-            if (ntok == 0) return
-            if (tokens(ntok)%kind == TOK_NEWLINE .or. tokens(ntok)%kind == TOK_INDENT .or. &
-                tokens(ntok)%kind == TOK_DEDENT) return
-            call push(TOK_NEWLINE, '', l, c)
-        end subroutine newline_token
-
-        !> Measures the indentation of a logical line and emits INDENT/DEDENT tokens.
-        !> Blank and comment-only lines do not count.
-        subroutine handle_indent()
-            integer :: width, j, c
-            width = 0; j = i; c = col
-            do while (j <= n)
-                if (text(j:j) == ' ') then
-                    width = width + 1
-                else if (text(j:j) == achar(9)) then
-                    width = (width / 8 + 1) * 8
-                else if (text(j:j) /= achar(12)) then
-                    exit
-                end if
-                j = j + 1; c = c + 1
+            j = j + 1; c = c + 1
+        end do
+        lx%i = j; lx%col = c
+        lx%at_line_start = .false.
+        if (j > lx%n) return
+        if (text(j:j) == '#' .or. text(j:j) == achar(10) .or. text(j:j) == achar(13)) then
+            lx%at_line_start = .true.
+            return
+        end if
+        if (width > lx%indents(lx%nind)) then
+            if (lx%nind == MAX_INDENT_LEVELS) then
+                call lex_fail(lx, st, 'blocks nested too deeply', lx%line, lx%col); return
+            end if
+            lx%nind = lx%nind + 1; lx%indents(lx%nind) = width
+            call push_token(lx, TOK_INDENT, '', lx%line, lx%col)
+        else
+            do while (width < lx%indents(lx%nind))
+                lx%nind = lx%nind - 1
+                call push_token(lx, TOK_DEDENT, '', lx%line, lx%col)
             end do
-            i = j; col = c
-            at_line_start = .false.
-            if (j > n) return
-            if (text(j:j) == '#' .or. text(j:j) == achar(10) .or. text(j:j) == achar(13)) then
-                at_line_start = .true.
+            if (width /= lx%indents(lx%nind)) then
+                call lex_fail(lx, st, 'inconsistent indentation (align with an enclosing ' // &
+                              'block)', lx%line, lx%col)
+            end if
+        end if
+    end subroutine lex_indentation
+
+    !> Comments: skips from `#` to the end of the line (the line end itself is a token).
+    subroutine skip_comment(lx, text)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        do while (lx%i <= lx%n)
+            if (text(lx%i:lx%i) == achar(10)) exit
+            lx%i = lx%i + 1
+        end do
+    end subroutine skip_comment
+
+    !> Newlines: a backslash right before a line end (LF or CRLF) joins the two lines.
+    !>  st : out, STATUS_DECK_ERROR for a backslash anywhere else
+    subroutine skip_line_continuation(lx, text, st)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        integer :: i, n
+        i = lx%i; n = lx%n
+        if (i < n .and. text(min(i + 1, n):min(i + 1, n)) == achar(10)) then
+            lx%i = i + 2; lx%line = lx%line + 1; lx%col = 1
+        else if (i + 1 < n .and. &
+                 text(min(i + 1, n):min(i + 2, n)) == achar(13) // achar(10)) then
+            lx%i = i + 3; lx%line = lx%line + 1; lx%col = 1
+        else
+            call lex_fail(lx, st, 'unexpected character "\"', lx%line, lx%col)
+        end if
+    end subroutine skip_line_continuation
+
+    !> Brackets: ( [ { and ) ] } are OP tokens; the nesting depth is tracked (newlines
+    !> inside brackets are not tokens) and where each open bracket was, for messages.
+    !>  ch : in, the bracket at text(lx%i)
+    !>  st : out, STATUS_DECK_ERROR for nesting deeper than MAX_BRACKETS or a closing bracket
+    !>       with none open
+    subroutine lex_bracket(lx, ch, st)
+        type(lexer_t), intent(inout) :: lx
+        character, intent(in) :: ch
+        type(status_t), intent(out) :: st
+        select case (ch)
+        case ('(', '[', '{')
+            if (lx%depth >= MAX_BRACKETS) then
+                call lex_fail(lx, st, 'brackets nested deeper than ' // to_text(MAX_BRACKETS) &
+                    // ' levels (simplify the expression)', lx%line, lx%col)
                 return
             end if
-            if (width > indents(nind)) then
-                if (nind == MAX_INDENT_LEVELS) then
-                    call fail('blocks nested too deeply', line, col); return
-                end if
-                nind = nind + 1; indents(nind) = width
-                call push(TOK_INDENT, '', line, col)
-            else
-                do while (width < indents(nind))
-                    nind = nind - 1
-                    call push(TOK_DEDENT, '', line, col)
-                end do
-                if (width /= indents(nind)) then
-                    call fail('inconsistent indentation (align with an enclosing block)', &
-                              line, col)
-                end if
+            lx%depth = lx%depth + 1
+            lx%open_line(lx%depth) = lx%line; lx%open_col(lx%depth) = lx%col
+        case default
+            if (lx%depth == 0) then
+                call lex_fail(lx, st, 'unmatched "' // ch // '"', lx%line, lx%col)
+                return
             end if
-        end subroutine handle_indent
+            lx%depth = lx%depth - 1
+        end select
+        call push_token(lx, TOK_OP, ch, lx%line, lx%col)
+        lx%i = lx%i + 1; lx%col = lx%col + 1
+    end subroutine lex_bracket
 
-        logical function next_is_digit(j)
-            integer, intent(in) :: j
-            next_is_digit = .false.
-            if (j > n) return
-            next_is_digit = index('0123456789', text(j:j)) > 0
-        end function next_is_digit
+    !> Names and keywords: [A-Za-z_][A-Za-z0-9_]* is a NAME token (the parser tells the
+    !> keywords apart).
+    subroutine lex_name(lx, text)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        integer :: j
+        j = lx%i
+        do while (j <= lx%n)
+            if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_', &
+                      text(j:j)) == 0) exit
+            j = j + 1
+        end do
+        call push_token(lx, TOK_NAME, text(lx%i:j - 1), lx%line, lx%col)
+        lx%col = lx%col + (j - lx%i); lx%i = j
+    end subroutine lex_name
 
-        subroutine lex_name()
-            integer :: j
-            j = i
-            do while (j <= n)
-                if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_', &
-                          text(j:j)) == 0) exit
-                j = j + 1
-            end do
-            call push(TOK_NAME, text(i:j - 1), line, col)
-            col = col + (j - i); i = j
-        end subroutine lex_name
-
-        subroutine lex_number()
-            integer :: j, kind
-            logical :: is_real
-            j = i; is_real = .false.
-            do while (j <= n)
-                if (index('0123456789', text(j:j)) == 0) exit
-                j = j + 1
-            end do
-            if (j <= n) then
-                if (text(j:j) == '.') then
-                    is_real = .true.; j = j + 1
-                    do while (j <= n)
-                        if (index('0123456789', text(j:j)) == 0) exit
-                        j = j + 1
-                    end do
-                end if
+    !> Numbers: digits [. digits] [(e|E) [+|-] digits] is an INT token, or a REAL one when
+    !> it has a dot or an exponent; the token text is the spelling.
+    !>  st : out, STATUS_DECK_ERROR for an exponent without digits or a letter glued to the
+    !>       number (`12abc`)
+    subroutine lex_number(lx, text, st)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        integer :: i, j, n, kind
+        logical :: is_real
+        i = lx%i; n = lx%n
+        is_real = .false.
+        j = end_of_digits(text, i)
+        if (j <= n) then
+            if (text(j:j) == '.') then
+                is_real = .true.
+                j = end_of_digits(text, j + 1)
             end if
-            if (j <= n) then
-                if (text(j:j) == 'e' .or. text(j:j) == 'E') then
-                    is_real = .true.; j = j + 1
-                    if (j <= n) then
-                        if (text(j:j) == '+' .or. text(j:j) == '-') j = j + 1
-                    end if
-                    if (.not. next_is_digit(j)) then
-                        call fail('malformed number "' // text(i:j - 1) // &
-                            '" (an exponent needs digits, e.g. 1.0E+03)', line, col)
-                        return
-                    end if
-                    do while (j <= n)
-                        if (index('0123456789', text(j:j)) == 0) exit
-                        j = j + 1
-                    end do
+        end if
+        if (j <= n) then
+            if (text(j:j) == 'e' .or. text(j:j) == 'E') then
+                is_real = .true.; j = j + 1
+                if (j <= n) then
+                    if (text(j:j) == '+' .or. text(j:j) == '-') j = j + 1
                 end if
-            end if
-            if (j <= n) then
-                if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_', &
-                          text(j:j)) > 0) then
-                    call fail('malformed number "' // text(i:j) // '"', line, col)
+                if (.not. next_is_digit(text, j)) then
+                    call lex_fail(lx, st, 'malformed number "' // text(i:j - 1) // &
+                        '" (an exponent needs digits, e.g. 1.0E+03)', lx%line, lx%col)
                     return
                 end if
+                j = end_of_digits(text, j)
             end if
-            kind = TOK_INT
-            if (is_real) kind = TOK_REAL
-            call push(kind, text(i:j - 1), line, col)
-            col = col + (j - i); i = j
-        end subroutine lex_number
+        end if
+        if (j <= n) then
+            if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_', &
+                      text(j:j)) > 0) then
+                call lex_fail(lx, st, 'malformed number "' // text(i:j) // '"', lx%line, lx%col)
+                return
+            end if
+        end if
+        kind = TOK_INT
+        if (is_real) kind = TOK_REAL
+        call push_token(lx, kind, text(i:j - 1), lx%line, lx%col)
+        lx%col = lx%col + (j - i); lx%i = j
+    end subroutine lex_number
 
-        !> Strings: '...', "...", '''...''', """...""" with \\ \' \" \n \t escapes.
-        subroutine lex_string()
-            character :: q
-            logical :: triple
-            character(len=:), allocatable :: buf
-            integer :: l0, c0, nb
-            q = text(i:i); l0 = line; c0 = col
-            triple = .false.
-            if (i + 2 <= n) triple = text(i:i + 2) == q // q // q
+    !> Strings: '...', "...", '''...''', """...""" with \\ \' \" \n \t escapes (decoded by
+    !> decode_escape); a STRING token holding the decoded value, located at its opening
+    !> quote. Only triple-quoted strings may span lines; CR bytes are dropped.
+    !>  st : out, STATUS_DECK_ERROR at the opening quote for an unterminated string
+    subroutine lex_string(lx, text, st)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        character :: q
+        logical :: triple
+        character(len=:), allocatable :: buf
+        integer :: i, n, line, col, nb
+        i = lx%i; n = lx%n; line = lx%line; col = lx%col
+        q = text(i:i)
+        triple = .false.
+        if (i + 2 <= n) triple = text(i:i + 2) == q // q // q
+        if (triple) then
+            i = i + 3; col = col + 3
+        else
+            i = i + 1; col = col + 1
+        end if
+        allocate (character(len=64) :: buf)
+        nb = 0
+        do
+            if (i > n) then
+                call lex_fail(lx, st, 'unterminated string: the quote opened here is never ' &
+                              // 'closed', lx%line, lx%col)
+                return
+            end if
             if (triple) then
-                i = i + 3; col = col + 3
-            else
-                i = i + 1; col = col + 1
-            end if
-            allocate (character(len=64) :: buf)
-            nb = 0
-            do
-                if (i > n) then
-                    call fail('unterminated string: the quote opened here is never closed', &
-                              l0, c0)
-                    return
-                end if
-                if (triple) then
-                    if (i + 2 <= n) then
-                        if (text(i:i + 2) == q // q // q) then
-                            i = i + 3; col = col + 3; exit
-                        end if
+                if (i + 2 <= n) then
+                    if (text(i:i + 2) == q // q // q) then
+                        i = i + 3; col = col + 3; exit
                     end if
-                else if (text(i:i) == q) then
-                    i = i + 1; col = col + 1; exit
-                else if (text(i:i) == achar(10)) then
-                    call fail('unterminated string: a quoted string ends at the end of ' // &
-                        'its line (use triple quotes for several lines)', l0, c0)
-                    return
                 end if
-                if (text(i:i) == '\' .and. i < n) then
-                    select case (text(i + 1:i + 1))
-                    case ('n')
-                        call append_text(buf, nb, achar(10))
-                    case ('t')
-                        call append_text(buf, nb, achar(9))
-                    case ("'", '"', '\')
-                        call append_text(buf, nb, text(i + 1:i + 1))
-                    case (achar(10))
-                        line = line + 1; col = -1
-                    case default
-                        call append_text(buf, nb, text(i:i + 1))
-                    end select
-                    i = i + 2; col = col + 2
-                    cycle
-                end if
-                if (text(i:i) == achar(10)) then
-                    line = line + 1; col = 0
-                end if
-                if (text(i:i) /= achar(13)) call append_text(buf, nb, text(i:i))
-                i = i + 1; col = col + 1
-            end do
-            call push(TOK_STRING, buf(1:nb), l0, c0)
-        end subroutine lex_string
-
-        subroutine lex_operator()
-            character(len=2) :: two
-            two = '  '
-            if (i + 1 <= n) two = text(i:i + 1)
-            select case (two)
-            case ('**', '//', '<=', '>=', '==', '!=', '->', '+=', '-=', '*=', '/=')
-                call push(TOK_OP, two, line, col)
-                i = i + 2; col = col + 2
+            else if (text(i:i) == q) then
+                i = i + 1; col = col + 1; exit
+            else if (text(i:i) == achar(10)) then
+                call lex_fail(lx, st, 'unterminated string: a quoted string ends at the end ' &
+                    // 'of its line (use triple quotes for several lines)', lx%line, lx%col)
                 return
-            end select
-            select case (text(i:i))
-            case ('+', '-', '*', '/', '%', '<', '>', '=', ',', ':', ';', '@', '&', '|', '^', '~')
-                call push(TOK_OP, text(i:i), line, col)
-                i = i + 1; col = col + 1
-            case default
-                if (iachar(text(i:i)) >= 128) then
-                    call fail('non-ASCII character outside a string or comment ' // &
-                              '(names are ASCII)', line, col)
-                else
-                    call fail('unexpected character "' // text(i:i) // '"', line, col)
-                end if
-            end select
-        end subroutine lex_operator
+            end if
+            if (text(i:i) == '\' .and. i < n) then
+                call decode_escape(text(i + 1:i + 1), buf, nb, line, col)
+                i = i + 2; col = col + 2
+                cycle
+            end if
+            if (text(i:i) == achar(10)) then
+                line = line + 1; col = 0
+            end if
+            if (text(i:i) /= achar(13)) call append_text(buf, nb, text(i:i))
+            i = i + 1; col = col + 1
+        end do
+        call push_token(lx, TOK_STRING, buf(1:nb), lx%line, lx%col)
+        lx%i = i; lx%line = line; lx%col = col
+    end subroutine lex_string
 
-    end subroutine tokenize
+    !> Strings: appends the value of the escape `\c` to buf(1:nb); unknown escapes are kept
+    !> as written. A backslash before a line end joins the lines: line is advanced and col
+    !> set so that the caller's col + 2 is column 1 of the next line.
+    pure subroutine decode_escape(c, buf, nb, line, col)
+        character, intent(in) :: c
+        character(len=:), allocatable, intent(inout) :: buf
+        integer, intent(inout) :: nb, line, col
+        select case (c)
+        case ('n')
+            call append_text(buf, nb, achar(10))
+        case ('t')
+            call append_text(buf, nb, achar(9))
+        case ("'", '"', '\')
+            call append_text(buf, nb, c)
+        case (achar(10))
+            line = line + 1; col = -1
+        case default
+            call append_text(buf, nb, '\' // c)
+        end select
+    end subroutine decode_escape
+
+    !> Operators: the two-character operators first (** // <= >= == != -> += -= *= /=),
+    !> then the one-character ones; anything else is refused.
+    !>  st : out, STATUS_DECK_ERROR for a character that starts no token (non-ASCII bytes
+    !>       get their own message)
+    subroutine lex_operator(lx, text, st)
+        type(lexer_t), intent(inout) :: lx
+        character(len=*), intent(in) :: text
+        type(status_t), intent(out) :: st
+        character(len=2) :: two
+        integer :: i
+        i = lx%i
+        two = '  '
+        if (i + 1 <= lx%n) two = text(i:i + 1)
+        select case (two)
+        case ('**', '//', '<=', '>=', '==', '!=', '->', '+=', '-=', '*=', '/=')
+            call push_token(lx, TOK_OP, two, lx%line, lx%col)
+            lx%i = i + 2; lx%col = lx%col + 2
+            return
+        end select
+        select case (text(i:i))
+        case ('+', '-', '*', '/', '%', '<', '>', '=', ',', ':', ';', '@', '&', '|', '^', '~')
+            call push_token(lx, TOK_OP, text(i:i), lx%line, lx%col)
+            lx%i = i + 1; lx%col = lx%col + 1
+        case default
+            if (iachar(text(i:i)) >= 128) then
+                call lex_fail(lx, st, 'non-ASCII character outside a string or comment ' // &
+                              '(names are ASCII)', lx%line, lx%col)
+            else
+                call lex_fail(lx, st, 'unexpected character "' // text(i:i) // '"', lx%line, &
+                              lx%col)
+            end if
+        end select
+    end subroutine lex_operator
+
+    !> True when text(j:j) exists and is a decimal digit.
+    pure logical function next_is_digit(text, j)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: j
+        next_is_digit = .false.
+        if (j > len(text)) return
+        next_is_digit = index('0123456789', text(j:j)) > 0
+    end function next_is_digit
+
+    !> Index of the first non-digit at or after j (len(text) + 1 if none).
+    pure integer function end_of_digits(text, j)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: j
+        end_of_digits = j
+        do while (end_of_digits <= len(text))
+            if (index('0123456789', text(end_of_digits:end_of_digits)) == 0) exit
+            end_of_digits = end_of_digits + 1
+        end do
+    end function end_of_digits
 
     !> Appends `s` to buf(1:nb), growing buf geometrically.
     pure subroutine append_text(buf, nb, s)

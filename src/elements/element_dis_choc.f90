@@ -6,9 +6,12 @@
 !> POI1, e = the local x axis of the discrete (an obstacle at distance JEU ahead of the node
 !> along +e; the node closes the gap by moving along +e):
 !>   gap d = JEU - DIST_1 - u . e
-!> Closed iff d <= eps * L (one machine epsilon relative to the length L = |x2 - x1| for a
-!> SEG2, JEU + DIST_1 for a POI1: round-off counts toward "closed", so a spring with
-!> L = DIST_1 starts just closed).
+!> Closed iff d <= 0, where the round-off margin of one machine epsilon toward "closed"
+!> applies to the initial gap d0 (the geometry): |d0| <= eps * L is taken as 0 (L = |x2 - x1|
+!> for a SEG2, JEU + DIST_1 for a POI1), so a spring with L = DIST_1 starts just closed. The
+!> displacement part is not subject to the margin: it is exact relative to itself, so an
+!> opening of 1e-20 m is seen as open, and the status is homogeneous in the load down to the
+!> smallest loads (doc/stability.md).
 !> Closed: normal force FN = k_n d (negative = compression), k_n = RIGI_NOR if given, else
 !> e^T K e (the discrete's own stiffness along e); tangential stiffness
 !> K_t = P K P + RIGI_TAN P with P = I - e e^T (the discrete's stiffness across e; the
@@ -160,7 +163,7 @@ contains
         fe = -f2
     end subroutine choc_point
 
-    !> The law itself. d = d0 + r . e; closed iff d <= eps * scale.
+    !> The law itself. d = d0 + r . e, with |d0| <= eps * scale taken as 0; closed iff d <= 0.
     !>  f2 : out, force on the "node 2" side (FN e + K_t r when closed)
     !>  kc : out, K_c = k_n e e^T + K_t when closed or elastic, else 0
     pure subroutine choc_law(n, e, r, d0, scale, kdisc, elastic, closed, gap, fn, f2, kc, &
@@ -181,8 +184,12 @@ contains
         if (present(rigi_nor)) kn = rigi_nor
         kt = matmul(p, matmul(kdisc, p))
         if (present(rigi_tan)) kt = kt + rigi_tan * p
-        gap = d0 + dot_product(r, e)
-        closed = gap <= epsilon(1.0_dp) * scale
+        if (abs(d0) <= epsilon(1.0_dp) * scale) then
+            gap = dot_product(r, e)
+        else
+            gap = d0 + dot_product(r, e)
+        end if
+        closed = gap <= 0.0_dp
         fn = 0.0_dp
         f2 = 0.0_dp
         kc = 0.0_dp

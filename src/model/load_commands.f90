@@ -8,7 +8,9 @@ module load_commands
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node_group, find_node, nodes_of_group, nodes_of_cells
+    use mesh_types, only: mesh_t, find_node_group, find_node, nodes_of_group, nodes_of_cells, &
+        node_name
+    use model_dof_numbering, only: component_index, COMPONENT_NAMES
     use mesh_command_support, only: relocate_error, group_cells, all_cells
     use model_types, only: is_plate, is_plane_edge
     use model_concept, only: model_concept_t
@@ -167,8 +169,37 @@ contains
         do k = 1, size(keys)
             call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
             if (st%failed()) return
+            if (kind == LOAD_DDL_IMPO .and. occ%has(trim(keys(k)))) then
+                call check_component(occ, mc, nodes, trim(keys(k)), st)
+                if (st%failed()) return
+            end if
         end do
     end subroutine node_item
+
+    !> DDL_IMPO on a component a node does not have (its elements do not use it) is an
+    !> error at the keyword: imposing it would silently do nothing.
+    subroutine check_component(occ, mc, nodes, key, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), intent(in) :: nodes(:)
+        character(len=*), intent(in) :: key
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, comp, c
+        character(len=:), allocatable :: has
+        comp = component_index(key)
+        do k = 1, size(nodes)
+            if (mc%dofs%equation(comp, nodes(k)) /= 0) cycle
+            has = ''
+            do c = 1, size(COMPONENT_NAMES)
+                if (mc%dofs%equation(c, nodes(k)) /= 0) has = has // ' ' // trim(COMPONENT_NAMES(c))
+            end do
+            if (len(has) == 0) has = ' none'
+            call occ%error_at(key, 'node ' // node_name(mc%mesh, nodes(k)) // &
+                ' has no component ' // key // ' in the model (its elements give it:' // has // &
+                '); remove ' // key // ' or model the node with an element that has it', st)
+            return
+        end do
+    end subroutine check_component
 
     !> FORCE_COQUE / PRES_REP / FORCE_CONTOUR occurrence: cells from TOUT or GROUP_MA, of the
     !> element kind the load needs.

@@ -1,0 +1,182 @@
+#!/usr/bin/python3
+"""Generate the meshes (.mail, Code_Aster ASTER format) of parasol's verification decks.
+
+Every mesh is committed beside its deck in tests/verification/, so the tests never need
+Python at run time; `make_meshes.py --check` regenerates them in memory and fails when a
+committed file differs (CTest `verification.meshes_reproducible`).
+
+Meshes (node names N1.., cell names M1.., in the order written):
+  patch_dkq.mail   distorted 5-QUAD4 patch on the unit square in z = 0 (MacNeal & Harder
+                   1985, their 0.24 x 0.12 patch scaled to 1 x 1): boundary corners N1 (0,0),
+                   N2 (1,0), N3 (1,1), N4 (0,1); interior N5 (1/6,1/6), N6 (3/4,1/4),
+                   N7 (2/3,2/3), N8 (1/3,2/3). GROUP_MA PATCH; GROUP_NO BORD (N1-N4),
+                   INTER (N5-N8).
+  patch_dkt.mail   the same 8 nodes, 10 TRIA3 (each patch quadrilateral cut in two).
+  patch_plan.mail  the QUAD4 patch as a 2D mesh (COOR_2D) for D_PLAN / C_PLAN.
+  plate_dkq_N.mail square plate a = 1 in z = 0, N x N QUAD4 (N = 4, 8, 16, 32);
+  plate_dkt_N.mail the same grid, each square cut into 2 TRIA3 with the diagonal pointing
+                   to the plate centre (N = 8, 16, 32), so the mesh keeps both symmetries.
+                   Plate groups: GROUP_MA PLAQUE; GROUP_NO BORD (the 4N edge nodes),
+                   CENTRE (a/2, a/2), PT_A (0,0), PT_B (a,0).
+  cantilever_NXxNY.mail plane-strain cantilever L = 10 x h = 1 (2D), NX x NY QUAD4
+                   (20x2, 40x4, 80x8, 160x16): GROUP_MA POUTRE (QUAD4), EXTREM (the NY
+                   SEG2 of the tip edge x = L); GROUP_NO ENCAST (x = 0), PTIP (L, h/2),
+                   PTIP_B (L, 0).
+
+usage: make_meshes.py [--outdir DIR] [--check]
+"""
+import argparse
+import os
+import sys
+from fractions import Fraction
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PLATE_SIZES_DKQ = (4, 8, 16, 32)
+PLATE_SIZES_DKT = (8, 16, 32)
+CANTILEVERS = ((20, 2), (40, 4), (80, 8), (160, 16))
+CANTILEVER_L, CANTILEVER_H = 10.0, 1.0
+
+
+class Mesh:
+    """Nodes, cells grouped by type (one cell group per list), node groups."""
+
+    def __init__(self, dim, title):
+        self.dim, self.title = dim, title
+        self.nodes, self.cells, self.node_groups = [], [], {}
+
+    def node(self, *xyz):
+        self.nodes.append(tuple(float(v) for v in xyz))
+        return len(self.nodes)
+
+    def cell(self, ctype, nodes, group):
+        self.cells.append((ctype, list(nodes), group))
+
+
+def patch(kind, dim):
+    """MacNeal-Harder interior positions (0.04,0.02) (0.18,0.03) (0.16,0.08) (0.08,0.08)
+    of the 0.24 x 0.12 patch, scaled to the unit square."""
+    mesh = Mesh(dim, f"Distorted patch on the unit square ({kind}), MacNeal-Harder 1985")
+    corners = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    inner = [(Fraction(1, 6), Fraction(1, 6)), (Fraction(3, 4), Fraction(1, 4)),
+             (Fraction(2, 3), Fraction(2, 3)), (Fraction(1, 3), Fraction(2, 3))]
+    for x, y in corners + inner:
+        mesh.node(x, y, 0)
+    quads = [(1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8), (5, 6, 7, 8)]
+    for q in quads:
+        if kind == "QUAD4":
+            mesh.cell("QUAD4", q, "PATCH")
+        else:
+            mesh.cell("TRIA3", (q[0], q[1], q[2]), "PATCH")
+            mesh.cell("TRIA3", (q[0], q[2], q[3]), "PATCH")
+    mesh.node_groups = {"BORD": [1, 2, 3, 4], "INTER": [5, 6, 7, 8]}
+    return mesh
+
+
+def plate(n, kind, a=1.0):
+    mesh = Mesh(3, f"Square plate a={a}, {n} x {n} {kind}")
+    grid = [[mesh.node(a * i / n, a * j / n, 0) for i in range(n + 1)] for j in range(n + 1)]
+    for j in range(n):
+        for i in range(n):
+            n1, n2, n3, n4 = grid[j][i], grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]
+            if kind == "QUAD4":
+                mesh.cell("QUAD4", (n1, n2, n3, n4), "PLAQUE")
+            elif (i < n // 2) == (j < n // 2):   # diagonal n1-n3 points to the centre
+                mesh.cell("TRIA3", (n1, n2, n3), "PLAQUE")
+                mesh.cell("TRIA3", (n1, n3, n4), "PLAQUE")
+            else:                                # diagonal n2-n4 points to the centre
+                mesh.cell("TRIA3", (n1, n2, n4), "PLAQUE")
+                mesh.cell("TRIA3", (n2, n3, n4), "PLAQUE")
+    edge = [grid[j][i] for j in range(n + 1) for i in range(n + 1)
+            if i in (0, n) or j in (0, n)]
+    mesh.node_groups = {"BORD": edge, "CENTRE": [grid[n // 2][n // 2]],
+                        "PT_A": [grid[0][0]], "PT_B": [grid[0][n]]}
+    return mesh
+
+
+def cantilever(nx, ny, length=CANTILEVER_L, h=CANTILEVER_H):
+    mesh = Mesh(2, f"Plane strain cantilever L={length} h={h}, {nx} x {ny} QUAD4")
+    grid = [[mesh.node(length * i / nx, h * j / ny) for i in range(nx + 1)]
+            for j in range(ny + 1)]
+    for j in range(ny):
+        for i in range(nx):
+            mesh.cell("QUAD4", (grid[j][i], grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]),
+                      "POUTRE")
+    for j in range(ny):
+        mesh.cell("SEG2", (grid[j][nx], grid[j + 1][nx]), "EXTREM")
+    mesh.node_groups = {"ENCAST": [grid[j][0] for j in range(ny + 1)],
+                        "PTIP": [grid[ny // 2][nx]], "PTIP_B": [grid[0][nx]]}
+    return mesh
+
+
+def number(x):
+    return repr(float(x))
+
+
+def names(prefix, numbers):
+    items = [f"{prefix}{k}" for k in numbers]
+    return "".join(" ".join(items[s:s + 8]) + "\n" for s in range(0, len(items), 8))
+
+
+def to_aster(mesh):
+    out = [f"TITRE\n{mesh.title}\nFINSF\n%\nCOOR_{mesh.dim}D\n"]
+    for k, xyz in enumerate(mesh.nodes, start=1):
+        out.append(f"N{k} " + " ".join(number(v) for v in xyz[:mesh.dim]) + "\n")
+    out.append("FINSF\n%\n")
+    previous = None
+    groups = {}
+    for k, (ctype, nodes, group) in enumerate(mesh.cells, start=1):
+        if ctype != previous:
+            if previous is not None:
+                out.append("FINSF\n%\n")
+            out.append(f"{ctype}\n")
+            previous = ctype
+        out.append(f"M{k} " + " ".join(f"N{n}" for n in nodes) + "\n")
+        groups.setdefault(group, []).append(k)
+    out.append("FINSF\n%\n")
+    for name, cells in groups.items():
+        out.append(f"GROUP_MA NOM={name}\n" + names("M", cells) + "FINSF\n%\n")
+    for name, nodes in mesh.node_groups.items():
+        out.append(f"GROUP_NO\n{name}\n" + names("N", nodes) + "FINSF\n%\n")
+    out.append("FIN\n")
+    return "".join(out)
+
+
+def all_meshes():
+    meshes = {"patch_dkq.mail": patch("QUAD4", 3), "patch_dkt.mail": patch("TRIA3", 3),
+              "patch_plan.mail": patch("QUAD4", 2)}
+    for n in PLATE_SIZES_DKQ:
+        meshes[f"plate_dkq_{n}.mail"] = plate(n, "QUAD4")
+    for n in PLATE_SIZES_DKT:
+        meshes[f"plate_dkt_{n}.mail"] = plate(n, "TRIA3")
+    for nx, ny in CANTILEVERS:
+        meshes[f"cantilever_{nx}x{ny}.mail"] = cantilever(nx, ny)
+    return {name: to_aster(mesh) for name, mesh in meshes.items()}
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--outdir", default=HERE, help="where to write (default: beside me)")
+    parser.add_argument("--check", action="store_true",
+                        help="write nothing; exit 1 if a file in OUTDIR differs")
+    args = parser.parse_args(argv)
+    status = 0
+    for name, text in all_meshes().items():
+        path = os.path.join(args.outdir, name)
+        if args.check:
+            try:
+                with open(path, encoding="ascii", newline="") as f:
+                    same = f.read() == text
+            except OSError as err:
+                print(f"{path}: cannot read: {err}", file=sys.stderr)
+                same = False
+            if not same:
+                print(f"{path}: differs from what make_meshes.py generates", file=sys.stderr)
+                status = 1
+        else:
+            with open(path, "w", encoding="ascii", newline="\n") as f:
+                f.write(text)
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
