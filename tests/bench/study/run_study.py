@@ -189,8 +189,9 @@ def ran(rows, **match):
 
 
 def mesh_series(rows, model):
-    """The mesh study rows of a model, by ny."""
-    return sorted(ran(rows, study="mesh", model=model), key=lambda r: r["ny"])
+    """The mesh study rows of a model that ran to the end (ok or nook), by ny."""
+    return sorted([r for r in ran(rows, study="mesh", model=model) if r["status"] != "error"],
+                  key=lambda r: r["ny"])
 
 
 def summary_markdown(rows, o, fits):
@@ -316,6 +317,12 @@ def plot_all(rows, outdir, fits, o):
             ax1.loglog(xs, [t0 * (x / x0) ** slope for x in xs], "k--", lw=0.8, alpha=0.6)
         ax2.loglog(n, [r["maxrss_mb"] for r in pts], marker + "-",
                    label=f"model {model.upper()} peak RSS")
+        bad = [r for r in ran(rows, study="mesh", model=model) if r["status"] == "error"]
+        if bad:
+            ax1.loglog([r["free_equations"] for r in bad], [r["wall_s"] for r in bad], "x",
+                       color="red", ms=10, label=f"model {model.upper()} stopped (error)")
+            ax2.loglog([r["free_equations"] for r in bad], [r["maxrss_mb"] for r in bad], "x",
+                       color="red", ms=10, label=f"model {model.upper()} stopped (error)")
     ax1.set_xlabel("free equations")
     ax1.set_ylabel("time (s)")
     ax1.set_title("time vs problem size (full Newton, RESI 1e-6, RCMK)")
