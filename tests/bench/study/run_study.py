@@ -223,7 +223,8 @@ def summary_markdown(rows, o, fits):
            f"load average before/after {o.load_before} / {o.load_after}; parasol = "
            f"`{o.parasol}`; NPREC = {o.nprec}; one thread; best of {o.repeat} for runs "
            f"under {o.repeat_below:g} s. err_disc = largest |relative error| of the corners "
-           "against the exact discrete answer; err_cont = against the continuous bed (-4/1125, 4/3375).", ""]
+           "against the exact discrete answer; err_cont = against the continuous bed "
+           "(-4/1125, 4/3375).", ""]
     head = ("| case | status | eqs (free) | profile | wall s | CPU s | RSS MB | iter | fact | "
             "last RESI | err_disc | err_cont |")
     sep = "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
