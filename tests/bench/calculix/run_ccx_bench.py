@@ -251,6 +251,8 @@ def main(argv=None):
     ap.add_argument("--side-by-side", help="Markdown table file (default <csv stem>_side.md)")
     ap.add_argument("--parasol-renum", choices=["RCMK", "METIS", "SANS"], default="RCMK",
                     help="SOLVEUR/RENUM of the parasol decks (default RCMK, the default)")
+    ap.add_argument("--ccx-csv", help="reuse the ccx rows of this earlier CSV (same meshes) "
+                    "instead of running ccx, e.g. to re-time parasol alone after a change")
     ap.add_argument("--parasol-only", action="store_true",
                     help="with --parasol: skip ccx (e.g. to re-time parasol alone)")
     ap.add_argument("--keep", action="store_true", help="keep the work directories")
@@ -258,8 +260,13 @@ def main(argv=None):
                     help="fail (exit 1) if |err_pt01| or |err_pt03| of a run exceeds this")
     o = ap.parse_args(argv)
 
+    earlier = {}
+    if o.ccx_csv:
+        with open(o.ccx_csv, newline="", encoding="ascii") as f:
+            earlier = {(int(r["nx"]), int(r["ny"])): r for r in csv.DictReader(f)
+                       if r["program"] == "ccx"}
     ccx = shutil.which(o.ccx)
-    if ccx is None and not o.parasol_only:
+    if ccx is None and not o.parasol_only and not earlier:
         print(f"SKIP: CalculiX executable {o.ccx!r} not found in PATH; install calculix-ccx "
               "or pass --ccx PATH", file=sys.stderr)
         return SKIP_CODE
@@ -288,7 +295,12 @@ def main(argv=None):
                 for program in (["parasol"] if o.parasol_only else ["ccx"]) + \
                         (["parasol"] if o.parasol and not o.parasol_only else []):
                     try:
-                        if program == "ccx":
+                        if program == "ccx" and (nx, ny) in earlier:
+                            row = earlier[(nx, ny)]
+                            print(f"ccx {nx}x{ny}: row reused from {o.ccx_csv}")
+                            last = ((nx, ny), float(row["cpu_s"]))
+                            out = row
+                        elif program == "ccx":
                             row = run_ccx_case(ccx, nx, ny, workdir)
                             last = ((nx, ny), float(row["cpu_s"]))
                             out = row
