@@ -733,6 +733,7 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: m, nn
         integer(i8) :: p, q
+        real(dp) :: x2(2, 4)
         m = material_of_cell(s%materials, c)
         nn = cache%nn(i)
         p = cache%k_ptr(i)
@@ -745,7 +746,8 @@ contains
                 call plate_local_stiffness(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
                     s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             else
-                call plane_quad4_stiffness(cache%x(1:2, 1:4, i), e%e, e%nu, &
+                x2 = cache%x(1:2, 1:4, i)    ! contiguous copy: no array temporary
+                call plane_quad4_stiffness(x2, e%e, e%nu, &
                     s%model%element(c) == ELEM_D_PLAN_QUAD4, cache%k(p:q), st)
             end if
         end associate

@@ -115,7 +115,8 @@ contains
         real(dp), intent(out) :: gap, fn, fe(2 * n), ke(2 * n, 2 * n)
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: rigi_nor, rigi_tan
-        real(dp) :: e(MAX_DIM), r(MAX_DIM), length, f2(MAX_DIM), kc(MAX_DIM, MAX_DIM)
+        real(dp) :: e(MAX_DIM), r(MAX_DIM), length, f2(MAX_DIM)
+        real(dp) :: kc(n, n)    ! contiguous for choc_law (a 2x2 section of 3x3 is not)
         fe = 0.0_dp
         ke = 0.0_dp
         closed = .false.
@@ -131,13 +132,13 @@ contains
         e(1:n) = e(1:n) / length
         r(1:n) = ue(n + 1:2 * n) - ue(1:n)
         call choc_law(n, e(1:n), r(1:n), length - (dist1 + dist2), length, &
-            kdisc, elastic, closed, gap, fn, f2(1:n), kc(1:n, 1:n), rigi_nor, rigi_tan)
+            kdisc, elastic, closed, gap, fn, f2(1:n), kc, rigi_nor, rigi_tan)
         fe(1:n) = -f2(1:n)
         fe(n + 1:2 * n) = f2(1:n)
-        ke(1:n, 1:n) = kc(1:n, 1:n)
-        ke(n + 1:2 * n, n + 1:2 * n) = kc(1:n, 1:n)
-        ke(1:n, n + 1:2 * n) = -kc(1:n, 1:n)
-        ke(n + 1:2 * n, 1:n) = -kc(1:n, 1:n)
+        ke(1:n, 1:n) = kc
+        ke(n + 1:2 * n, n + 1:2 * n) = kc
+        ke(1:n, n + 1:2 * n) = -kc
+        ke(n + 1:2 * n, 1:n) = -kc
     end subroutine choc_segment
 
     !> POI1 in n dimensions: node 1 of a virtual SEG2 whose node 2 is the fixed obstacle.
