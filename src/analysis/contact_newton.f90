@@ -48,10 +48,12 @@ module contact_newton
     integer(i4), parameter :: LIST_NAMES = 6
     integer(i4), parameter :: MATRIX_NONE = 0, MATRIX_ELASTIC = 1, MATRIX_TANGENT = 2
     !> A pivot below this fraction of the largest diagonal term is at the round-off level
-    !> of the stiffest terms (~1e4 machine epsilons): a free rigid motion, even when the
+    !> of the stiffest terms (~45 machine epsilons): a free rigid motion, even when the
     !> equation's own diagonal is small enough for NPREC not to flag it (e.g. a DX left free
-    !> under a plate 1e8 times stiffer than its springs).
-    real(dp), parameter :: RIGID_PIVOT_RATIO = 1.0e-12_dp
+    !> under a plate 1e8 times stiffer than its springs). Not larger: on fine plates the
+    !> rotation diagonals (~D/h) are legitimately far below the membrane ones (~E h); the
+    !> 128 x 512 SSNL130 plate has regular DRY pivots at 9.3e-13 of the largest term.
+    real(dp), parameter :: RIGID_PIVOT_RATIO = 1.0e-14_dp
     !> A pivot that lost at least this many of the ~16 significant digits is at round-off
     !> level: the equation is free (a rigid motion or mechanism), whatever NPREC says. A
     !> pivot that only exceeds NPREC (8 by default, Code_Aster SOLVEUR/NPREC) is an
