@@ -21,7 +21,7 @@ module analysis_commands
     use real_list, only: real_list_t
     use assembly_system, only: structure_t, structure_check
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
-        newton_summary_t
+        newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
     use analysis_result, only: result_concept_t, RESULT_INST_PRECISION
     use analysis_log, only: analysis_log_t
@@ -67,6 +67,7 @@ contains
         call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
             ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
             ' factorization(s) in ' // to_text(summary%n_steps) // ' step(s)')
+        call ctx%write_mess('    ' // solver_diagnostics_line(summary, options%factor%nprec))
         call move_alloc(res, result)
     end subroutine run_stat_non_line
 

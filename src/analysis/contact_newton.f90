@@ -24,7 +24,7 @@ module contact_newton
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
         STATUS_SINGULAR
-    use strings, only: to_text, real_e13
+    use strings, only: to_text, real_e13, real_short
     use mesh_types, only: cell_name, cell_group_name, cells_of_group, n_cell_groups
     use model_dof_numbering, only: describe_equation
     use model_loads, only: load_set_t
@@ -74,6 +74,10 @@ module contact_newton
         character(len=:), allocatable :: where     !< node, component and digits lost
         integer(i4) :: n_flagged = 0
         integer(i4) :: nprec = 8
+        !> solver diagnostics of the factorization (style.md: digits lost, pivot range)
+        real(dp) :: digits = 0.0_dp                !< largest digits lost
+        character(len=:), allocatable :: digits_at !< node and component of that pivot
+        real(dp) :: min_pivot = 0.0_dp, max_pivot = 0.0_dp   !< range of |pivot|
     end type pivot_diagnosis_t
 
     !> NEWTON, CONVERGENCE and SOLVEUR options.
@@ -106,6 +110,10 @@ module contact_newton
         integer(i4), allocatable :: iterations(:)      !< Newton iterations (excl. prediction)
         integer(i4), allocatable :: factorizations(:)
         real(dp), allocatable :: resi_rela(:), resi_maxi(:)
+        !> over every factorization: the largest loss of digits, where, and the |pivot| range
+        real(dp) :: max_digits_lost = 0.0_dp
+        character(len=:), allocatable :: digits_at
+        real(dp) :: min_pivot = huge(1.0_dp), max_pivot = 0.0_dp
     end type newton_summary_t
 
     !> The analysis state carried from iteration to iteration and step to step.
@@ -121,6 +129,7 @@ module contact_newton
         integer(i4) :: factorizations = 0
         logical :: refactored = .false.
         integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
+        type(newton_summary_t) :: pivots    !< solver diagnostics over the factorizations
     end type newton_state_t
 
     !> Pivot findings of one step (matrix_for_iteration).
@@ -132,7 +141,8 @@ module contact_newton
         logical, allocatable :: ill_closed(:)          !< ... and its contact status
     end type step_pivots_t
 
-    public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear
+    public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear, &
+        solver_diagnostics_line
 
 contains
 
@@ -360,6 +370,10 @@ contains
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.false.))
         summary%n_steps = step
+        summary%max_digits_lost = state%pivots%max_digits_lost
+        if (allocated(state%pivots%digits_at)) summary%digits_at = state%pivots%digits_at
+        summary%min_pivot = state%pivots%min_pivot
+        summary%max_pivot = state%pivots%max_pivot
         summary%inst(step) = t
         summary%iterations(step) = iter
         summary%factorizations(step) = state%factorizations
@@ -496,6 +510,7 @@ contains
             state%have_tangent = st%ok()
         end if
         if (st%failed()) return
+        call accumulate_pivots(diag, state%pivots)
         if (diag%kind /= PIVOT_REGULAR) call log_add(log, '  INST ' // real_e13(t) // &
             ': pivot ' // trim(merge('free           ', 'ill-conditioned', &
             diag%kind == PIVOT_FREE)) // ' at ' // diag%where)
@@ -514,9 +529,12 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         type(pivot_diagnosis_t) :: diag
+        type(newton_summary_t) :: one
         call assemble_and_factor(s, map, u, .false., sky, options%nprec, diag, st)
-        if (st%ok() .and. diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, &
-            0.0_dp, log, st)
+        if (st%failed()) return
+        call accumulate_pivots(diag, one)
+        call log_add(log, solver_diagnostics_line(one, options%nprec))
+        if (diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, 0.0_dp, log, st)
     end subroutine factor_and_diagnose_linear
 
     !> Assembles the matrix at u (elastic or tangent), factors it without stopping, and
@@ -548,6 +566,12 @@ contains
         if (st%failed()) return
         pivots = sky%values(sky%diag(1:sky%n))
         call classify_pivots(report, pivots, largest, nprec, diag)
+        diag%digits = max(report%max_digits_lost, 0.0_dp)
+        diag%digits_at = ''
+        if (report%max_digits_equation > 0) diag%digits_at = describe_equation(s%dofs, &
+            s%mesh, map%free_to_eq(report%max_digits_equation))
+        diag%min_pivot = report%min_abs_pivot
+        diag%max_pivot = report%max_abs_pivot
         if (diag%kind /= PIVOT_REGULAR) diag%where = describe_equation(s%dofs, s%mesh, &
             map%free_to_eq(diag%n_flagged)) // diag%where
         diag%n_flagged = report%n_flagged
@@ -773,5 +797,32 @@ contains
         write (line, '(i5, 2x, a14, 2x, es14.6, 2x, a22, i6, i8, f9.3)') iter, rela, &
             resi_maxi, matrix, n_closed, changed, seconds
     end function iteration_row
+
+    !> Folds one factorization's diagnostics into the running ones.
+    subroutine accumulate_pivots(diag, acc)
+        type(pivot_diagnosis_t), intent(in) :: diag
+        type(newton_summary_t), intent(inout) :: acc
+        if (diag%digits >= acc%max_digits_lost .or. .not. allocated(acc%digits_at)) then
+            acc%max_digits_lost = diag%digits
+            acc%digits_at = diag%digits_at
+        end if
+        acc%min_pivot = min(acc%min_pivot, diag%min_pivot)
+        acc%max_pivot = max(acc%max_pivot, diag%max_pivot)
+    end subroutine accumulate_pivots
+
+    !> The .mess line of solver diagnostics (style.md): the largest loss of significant
+    !> digits over the factorizations, where, against NPREC, and the range of |pivot|.
+    function solver_diagnostics_line(acc, nprec) result(text)
+        type(newton_summary_t), intent(in) :: acc
+        integer(i4), intent(in) :: nprec
+        character(len=:), allocatable :: text
+        text = 'solver: largest loss ' // real_digits(acc%max_digits_lost) // ' digits'
+        if (allocated(acc%digits_at)) then
+            if (len(acc%digits_at) > 0) text = text // ' at ' // acc%digits_at
+        end if
+        text = text // ' (NPREC ' // to_text(merge(abs(nprec), 8_i4, nprec /= 0)) // &
+            '), |pivot| from ' // real_short(acc%min_pivot) // ' to ' // &
+            real_short(acc%max_pivot)
+    end function solver_diagnostics_line
 
 end module contact_newton
