@@ -274,6 +274,7 @@ contains
         real(dp), allocatable :: r(:), resi_history(:)
         real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds
         integer(i4) :: iter, changed, use, repeat_of
+        character(len=:), allocatable :: seen
         integer(i8) :: t0, t1, rate
         logical :: zero_load, converged, said_zero
         type(step_pivots_t) :: piv
@@ -332,14 +333,18 @@ contains
                 previous_maxi, t, st)
             if (st%failed()) return
             previous_maxi = resi_maxi
+            ! history(:, k) is the status at the start of iteration k, i.e. the one shown
+            ! on row k - 1 of the table (or the step's starting status for k = 0)
             repeat_of = cycle_start(history(:, 0:iter), state%closed)
             if (repeat_of >= 0 .and. changed > 0) then
+                seen = 'the start of the step'
+                if (repeat_of > 0) seen = 'iteration ' // to_text(repeat_of - 1)
                 call log_add(log, '  contact status of iteration ' // to_text(iter) // &
-                    ' repeats iteration ' // to_text(repeat_of) // ' (cycling)')
+                    ' repeats ' // seen // ' (cycling)')
                 if (.not. options%matrix_elastic .and. options%reac_iter == 1) then
                     call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
                         ': the contact status cycles (iteration ' // to_text(iter) // &
-                        ' repeats iteration ' // to_text(repeat_of) // '); springs ' // &
+                        ' repeats ' // seen // '); springs ' // &
                         'changing: ' // changed_names(s, map, history(:, iter), &
                         state%closed))
                     return
