@@ -10,7 +10,7 @@ module load_commands
     use run_context, only: run_context_t
     use mesh_types, only: mesh_t, find_node_group, find_node, nodes_of_group, nodes_of_cells, &
         node_name
-    use model_dof_numbering, only: component_index, COMPONENT_NAMES
+    use model_dof_numbering, only: COMPONENT_NAMES
     use mesh_command_support, only: relocate_error, group_cells, all_cells
     use model_types, only: is_plate, is_plane_edge
     use model_concept, only: model_concept_t
@@ -169,24 +169,25 @@ contains
         do k = 1, size(keys)
             call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
             if (st%failed()) return
-            if (kind == LOAD_DDL_IMPO .and. occ%has(trim(keys(k)))) then
-                call check_component(occ, mc, nodes, trim(keys(k)), st)
+            if (occ%has(trim(keys(k)))) then
+                call check_component(occ, mc, nodes, trim(keys(k)), k, st)
                 if (st%failed()) return
             end if
         end do
     end subroutine node_item
 
-    !> DDL_IMPO on a component a node does not have (its elements do not use it) is an
-    !> error at the keyword: imposing it would silently do nothing.
-    subroutine check_component(occ, mc, nodes, key, st)
+    !> A DDL_IMPO or FORCE_NODALE value on a component a node does not have (its elements do
+    !> not use it) is an error at the keyword: it would silently do nothing.
+    !>  comp : the component (DOF_DX..DOF_DRZ) of the keyword: DX or FX = 1, ..., DRZ or MZ = 6
+    subroutine check_component(occ, mc, nodes, key, comp, st)
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
         integer(i4), intent(in) :: nodes(:)
         character(len=*), intent(in) :: key
+        integer(i4), intent(in) :: comp
         type(status_t), intent(out) :: st
-        integer(i4) :: k, comp, c
+        integer(i4) :: k, c
         character(len=:), allocatable :: has
-        comp = component_index(key)
         do k = 1, size(nodes)
             if (mc%dofs%equation(comp, nodes(k)) /= 0) cycle
             has = ''
@@ -195,8 +196,9 @@ contains
             end do
             if (len(has) == 0) has = ' none'
             call occ%error_at(key, 'node ' // node_name(mc%mesh, nodes(k)) // &
-                ' has no component ' // key // ' in the model (its elements give it:' // has // &
-                '); remove ' // key // ' or model the node with an element that has it', st)
+                ' has no component ' // trim(COMPONENT_NAMES(comp)) // ' in the model (its ' // &
+                'elements give it:' // has // '); remove ' // key // &
+                ' or model the node with an element that has it', st)
             return
         end do
     end subroutine check_component
