@@ -128,6 +128,22 @@ contains
         type(status_t), intent(out) :: st
         real(dp) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn)
         ke = 0.0_dp
+        call plate_frame_and_local_stiffness(coords, nn, young, nu, thickness, coef_drz, &
+            rot, xy, kl, st)
+        if (st%failed()) return
+        call rotate_to_global(rot, 2 * nn, kl, ke)
+    end subroutine plate_stiffness
+
+    !> The element frame and the local stiffness of a DKT/DKQ plate (the common first half of
+    !> plate_stiffness and plate_internal_forces).
+    !>  rot, xy : out, as plate_local_frame; kl : out, kl(6nn, 6nn) in the local frame
+    !>  st : out, a cell that is not TRIA3/QUAD4, or a geometry/material error
+    subroutine plate_frame_and_local_stiffness(coords, nn, young, nu, thickness, coef_drz, &
+                                               rot, xy, kl, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn), young, nu, thickness, coef_drz
+        real(dp), intent(out) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn)
+        type(status_t), intent(out) :: st
         if (nn /= 3 .and. nn /= 4) then
             call set_error(st, STATUS_MODEL_ERROR, 'DKT plates need TRIA3 or QUAD4 cells')
             return
@@ -136,8 +152,7 @@ contains
         if (st%failed()) return
         call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
         if (st%failed()) return
-        call rotate_to_global(rot, 2 * nn, kl, ke)
-    end subroutine plate_stiffness
+    end subroutine plate_frame_and_local_stiffness
 
     !> DKQ (QUAD4) global stiffness, 24x24; arguments as plate_stiffness.
     subroutine dkq_stiffness(coords, young, nu, thickness, coef_drz, ke, st)
@@ -171,13 +186,8 @@ contains
         type(status_t), intent(out) :: st
         real(dp) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn)
         fe = 0.0_dp
-        if (nn /= 3 .and. nn /= 4) then
-            call set_error(st, STATUS_MODEL_ERROR, 'DKT plates need TRIA3 or QUAD4 cells')
-            return
-        end if
-        call plate_local_frame(coords, nn, rot, xy, st)
-        if (st%failed()) return
-        call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
+        call plate_frame_and_local_stiffness(coords, nn, young, nu, thickness, coef_drz, &
+            rot, xy, kl, st)
         if (st%failed()) return
         call plate_forces_from_local(rot, xy, nn, kl, ue, fe)
     end subroutine plate_internal_forces
