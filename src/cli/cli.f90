@@ -10,13 +10,13 @@
 !> (it is the run's story) and the .resu is discarded (an older one is left untouched).
 module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use, intrinsic :: iso_c_binding, only: c_char, c_size_t, c_intptr_t, c_null_char
     use kinds, only: i4
     use strings, only: string_t, to_text, starts_with
     use status, only: status_t, format_status, set_error, STATUS_DECK_ERROR
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
     use atomic_file, only: open_atomic
+    use install_layout, only: data_file_path
     use run_context, only: run_context_t, init_context
     use deck_value, only: append_string
     use deck_interpreter, only: load_deck, evaluate_deck
@@ -27,10 +27,9 @@ module cli
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_ERROR = 1, EXIT_NOOK = 2
 
-    !> The bundled deck run when no DECK is given, relative to the folder of the parasol
-    !> executable (<prefix>/bin/parasol -> <prefix>/decks/ssnl130a.comm; in a build tree,
-    !> build/parasol -> decks/ssnl130a.comm). Its mesh is found beside it (unit 20 default).
-    character(len=*), parameter, public :: BUNDLED_DECK = '../decks/ssnl130a.comm'
+    !> The bundled deck run when no DECK is given, a data file of the build tree or install
+    !> (bundled_deck_path). Its mesh is found beside it (the unit 20 default).
+    character(len=*), parameter, public :: BUNDLED_DECK = 'ssnl130a.comm'
 
     !> Parsed command line.
     type :: options_t
@@ -277,46 +276,12 @@ contains
         end if
     end subroutine finish
 
-    !> The bundled deck: BUNDLED_DECK resolved against the folder of the running executable,
-    !> e.g. build/parasol -> build/../decks/ssnl130a.comm. The executable is argument 0 when it
-    !> holds a folder; otherwise (parasol found through PATH) the link /proc/self/exe (Linux).
+    !> The bundled deck: BUNDLED_DECK in the data folder of this build tree or install
+    !> (install_layout: <source>/decks/ in a build tree, <prefix>/share/parasol/ installed).
     function bundled_deck_path() result(path)
         character(len=:), allocatable :: path
-        character(len=:), allocatable :: exe
-        integer :: length, slash
-        call get_command_argument(0, length=length)
-        allocate (character(len=length) :: exe)
-        call get_command_argument(0, exe)
-        if (index(exe, '/') == 0) call read_link('/proc/self/exe', exe)
-        slash = index(exe, '/', back=.true.)
-        path = exe(1:slash) // BUNDLED_DECK
+        path = data_file_path(BUNDLED_DECK)
     end function bundled_deck_path
-
-    !> Target of the symbolic link `link` (POSIX readlink); `target` is left unchanged when the
-    !> link cannot be read.
-    subroutine read_link(link, target)
-        character(len=*), intent(in) :: link
-        character(len=:), allocatable, intent(inout) :: target
-        interface
-            function c_readlink(pathname, buf, bufsiz) result(n) bind(c, name='readlink')
-                import :: c_char, c_size_t, c_intptr_t
-                character(kind=c_char), intent(in) :: pathname(*)
-                character(kind=c_char), intent(out) :: buf(*)
-                integer(c_size_t), value :: bufsiz
-                integer(c_intptr_t) :: n  ! ssize_t
-            end function c_readlink
-        end interface
-        integer, parameter :: BUF_LEN = 4096
-        character(kind=c_char) :: buf(BUF_LEN)
-        integer(c_intptr_t) :: n
-        integer :: k
-        n = c_readlink(link // c_null_char, buf, int(BUF_LEN, c_size_t))
-        if (n <= 0 .or. n >= BUF_LEN) return
-        target = repeat(' ', int(n))
-        do k = 1, int(n)
-            target(k:k) = buf(k)
-        end do
-    end subroutine read_link
 
     !> Writes the usage text.
     subroutine print_usage(unit)
