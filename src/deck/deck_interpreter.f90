@@ -33,9 +33,10 @@ module deck_interpreter
     !> Loop iterations in one pass over a session: far beyond deck practice (loops over
     !> groups, cells or instants), and a bound so that no deck hangs parasol.
     integer(i8), parameter :: MAX_LOOP_ITERATIONS = 1000000_i8
-    !> Sequence items built in one pass (+, *, slices, append copy the sequence): bounds
-    !> the work of building long lists item by item.
-    integer(i8), parameter :: MAX_BUILT_ITEMS = 100000000_i8
+    !> Sequence items built or scanned in one pass: +, *, slices and append copy the
+    !> sequence (values are flat copies), so a list of N items built by append costs about
+    !> N**2 items; this bound (a few seconds of work) keeps a deck from hanging parasol.
+    integer(i8), parameter :: MAX_BUILT_ITEMS = 20000000_i8
     !> Modules imported inside one another.
     integer, parameter :: MAX_IMPORT_DEPTH = 20
     !> ctx%loop_control after break / continue.
@@ -325,10 +326,9 @@ contains
         integer, intent(in) :: id
         type(status_t), intent(inout) :: st
         type(frame_t), intent(inout), optional :: frame
-        integer :: seq, body, slot
+        integer :: seq, body, slot, cursor
         integer(i8) :: first, step, count, k
-        type(value_t) :: v
-        type(value_list_t) :: list
+        type(value_t) :: v, item_value
         character(len=:), allocatable :: name
         name = ctx%ast%nodes(id)%text
         seq = ctx%ast%kid(id, 1)
@@ -351,22 +351,32 @@ contains
                       kind_label(v)); return
         end if
         call push_loop(ctx, v, slot)
-        list = unpack_value(v)
-        k = 0
+        ! A cursor on the flat tree of the sequence (deck_value): append only adds atoms at
+        ! the end, so the cursor stays valid when the list grows and the loop walks on.
+        cursor = 1
         do
-            if (ctx%loop_grown(slot)) then           ! appended to: walk on to its new end
-                list = unpack_value(ctx%loops(slot))
-                ctx%loop_grown(slot) = .false.
-            end if
-            k = k + 1
-            if (k > size(list%items)) exit
+            if (.not. allocated(ctx%loops(slot)%tree)) exit
+            if (cursor > size(ctx%loops(slot)%tree)) exit
             call next_iteration(ctx, id, st)
             if (st%failed()) exit
-            call assign(ctx, id, name, list%items(k), frame)
+            item_value = tree_item(ctx%loops(slot), cursor)
+            cursor = cursor + 1 + ctx%loops(slot)%tree(cursor)%nsub
+            call assign(ctx, id, name, item_value, frame)
             if (loop_body_done(ctx, body, st, frame)) exit
         end do
         ctx%nloop = ctx%nloop - 1
     end subroutine exec_for
+
+    !> The item whose atom is tree(j) of composite v.
+    function tree_item(v, j) result(x)
+        type(value_t), intent(in) :: v
+        integer, intent(in) :: j
+        type(value_t) :: x
+        type(value_t) :: one
+        one%kind = VK_TUPLE
+        one%tree = v%tree(j:j + v%tree(j)%nsub)
+        x = item(one, 1)
+    end function tree_item
 
     !> Runs the body once; true when the loop must stop (break, return, error).
     recursive logical function loop_body_done(ctx, body, st, frame) result(done)
@@ -492,8 +502,8 @@ contains
         type(value_t) :: old, x, new
         type(value_t), allocatable :: args(:)
         type(value_t) :: kwargs
-        type(value_list_t) :: list
         type(frame_t), pointer :: f
+        integer(i8) :: n
         character(len=:), allocatable :: name
         attr = ctx%ast%kid(e, 1)
         target_node = ctx%ast%kid(attr, 1)
@@ -522,12 +532,14 @@ contains
             call fail(st, ctx, attr, 'list too long (more than ' // &
                       to_text(int(MAX_REPEAT, i4)) // ' items)'); return
         end if
-        call count_built(ctx, attr, int(nitems(old) + 1, i8), st)
+        new = appended(old, x)
+        ! The work: the copy, and the scan of every name for other copies of the list.
+        n = size(new%tree)
+        do k = 1, ctx%nsymbol
+            if (allocated(ctx%symbols(k)%value%tree)) n = n + size(ctx%symbols(k)%value%tree)
+        end do
+        call count_built(ctx, attr, n, st)
         if (st%failed()) return
-        list = unpack_value(old)
-        call append_value(list%items, x)
-        new = sequence_value(VK_LIST, list%items)
-        new%i = old%i
         ! Every copy of the list: frames (this def and its callers), namespaces, loops.
         if (present(frame)) then
             f => frame
@@ -570,6 +582,22 @@ contains
             end if
         end subroutine update_copy
     end subroutine exec_append
+
+    !> The list `list` with x appended (same identity), built on the flat tree.
+    function appended(list, x) result(v)
+        type(value_t), intent(in) :: list, x
+        type(value_t) :: v
+        type(value_t) :: one
+        integer :: n
+        one = sequence_value(VK_LIST, [x])          ! x's atom and its descendants
+        n = 0
+        if (allocated(list%tree)) n = size(list%tree)
+        v%kind = VK_LIST
+        v%i = list%i
+        allocate (v%tree(n + size(one%tree)))
+        if (n > 0) v%tree(1:n) = list%tree
+        v%tree(n + 1:) = one%tree
+    end function appended
 
     !> True when composite v holds, at any depth, the list of identity `id`.
     pure logical function holds_list(v, id)
