@@ -243,7 +243,7 @@ contains
         end if
         if (index(READ_TYPES // WRITTEN_TYPES // OTHER_TYPES, ' ' // e%type // ' ') == 0) then
             call fail('unknown file type "' // e%type // '" (known: comm nom mmed med mail ' &
-                      // 'msh mess resu rmed' // OTHER_TYPES // ')'); return
+                      // 'msh mess resu rmed' // trim(OTHER_TYPES) // ')'); return
         end if
         if (.not. (e%data .or. e%result)) then
             call fail('flags "' // flags // '" give neither D (data) nor R (result)'); return

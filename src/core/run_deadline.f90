@@ -73,15 +73,17 @@ contains
             ' (the limit is ' // self%what // '; raise it to let the run finish)')
     end subroutine deadline_check
 
-    !> Seconds for a message: '60', '0.5', '61.23'.
+    !> Seconds for a message: '60', '0.500', '61.2'.
     function seconds_text(x) result(text)
         real(dp), intent(in) :: x
         character(len=:), allocatable :: text
         character(len=32) :: buf
         if (abs(x - anint(x)) < 1.0e-9_dp .and. abs(x) < 1.0e9_dp) then
             write (buf, '(i0)') nint(x, i8)
+        else if (x < 10.0_dp) then
+            write (buf, '(f0.3)') x
         else
-            write (buf, '(f0.2)') x
+            write (buf, '(f0.1)') x
         end if
         text = trim(buf)
         if (text(1:1) == '.') text = '0' // text

@@ -402,6 +402,8 @@ contains
                 'hanging parasol; is a loop endless?)'); return
         end if
         call ctx%deadline%check('the for loop at ' // node_where(ctx, id), st)
+        call add_context(st, file=node_file(ctx, id), line=int(ctx%ast%nodes(id)%line), &
+                         column=int(ctx%ast%nodes(id)%col))
     end subroutine next_iteration
 
     !> True when node `seq` is a call of the built-in range (not a deck name `range`).
@@ -1422,7 +1424,9 @@ contains
         end if
         call ctx%deadline%check(ctx%catalog%cmds(icmd)%name // ' at ' // &
                                 node_where(ctx, name_node), st)
-        if (st%failed()) return
+        if (st%failed()) then
+            call add_context(st, file=file, line=line, column=col); return
+        end if
         call validate_command(ctx%catalog, icmd, kwargs, file, line, col, cmd, st)
         if (st%failed()) return
         cmd%source = statement_source(ctx)

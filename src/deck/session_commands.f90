@@ -51,10 +51,10 @@ contains
         if (allocated(result)) deallocate (result)     ! POURSUITE has no result
         if (cmd%n < 0) return
         if (ctx%file_index <= 1) then
-            call set_error(st, STATUS_DECK_ERROR, 'POURSUITE continues the session of an ' // &
-                'earlier command file, and ' // ctx%deck_name // ' is the first one (start ' // &
-                'it with DEBUT(); POURSUITE() opens a following file, e.g. CASE.com1 after ' // &
-                'CASE.comm in an export file)')
+            call set_error(st, STATUS_DECK_ERROR, 'no session to continue: ' // &
+                ctx%deck_name // ' is the first command file (start it with DEBUT(); ' // &
+                'POURSUITE() opens a following file, e.g. CASE.com1 after CASE.comm in an ' // &
+                'export file)')
             return
         end if
         if (ctx%continued .or. .not. ctx%stashed) then
