@@ -4,7 +4,7 @@
 usage: run_aster_case.py PARASOL ASTER_DIR CASE EXPECTED_LINES WORKDIR
 
 ASTER_DIR is the folder of Code_Aster's test files (doc/aster-tests.md; CMake cache
-variable PARASOL_ASTER_DIR, default ../shared/aster beside the source tree). When
+variable PARASOL_ASTER_DIR, default: the folder shared/aster beside the source tree). When
 ASTER_DIR/ssnl130/CASE.export is absent the test is skipped (exit 77, CTest's
 SKIP_RETURN_CODE) with a message. Otherwise parasol runs it in WORKDIR (the files stay
 where they are, read-only) and the test asserts that the export ran to the end: every
