@@ -757,6 +757,8 @@ contains
                 to_text(int(MAX_IMPORT_DEPTH, i4)) // ' deep'); return
         end if
         ctx%sources(src)%state = 1
+        call ctx%write_mess('  -- import of module ' // module // ' from ' // &
+                            ctx%sources(src)%name // ' (' // node_where(ctx, id) // ')')
         ctx%import_depth = ctx%import_depth + 1
         saved_statement = ctx%statement
         do k = 1, ctx%ast%nkids(ctx%sources(src)%root)

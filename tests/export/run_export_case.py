@@ -8,7 +8,8 @@ usage: run_export_case.py PARASOL WORKDIR [--cwd DIR] [--exit N] [--stderr TEXT]
 --stderr TEXT   stderr must contain TEXT (a located message: FILE:LINE[:COL]: error: ...)
 --mess TEXT     the .mess must contain TEXT (repeatable)
 --resu-lines N  the .resu must hold N TEST_RESU check lines (OK or NOOK)
-The listings are <stem>.mess/.resu in WORKDIR (stem: the export file's or the first deck's).
+--listings STEM the listings are STEM.mess/.resu in WORKDIR (default: the export file's or
+                the first deck's stem)
 A failed run (exit 1) must not touch an older .resu, must commit its .mess with the message,
 and must show no crash on stderr; every run must end within 60 s.
 """
@@ -25,6 +26,7 @@ def main(argv):
     split = argv.index("--")
     opts, args = argv[3:split], argv[split + 1:]
     expect_exit, stderr_text, mess_texts, resu_lines, cwd = 0, None, [], None, None
+    stem = None
     i = 0
     while i < len(opts):
         flag, value = opts[i], opts[i + 1]
@@ -38,12 +40,15 @@ def main(argv):
             resu_lines = int(value)
         elif flag == "--cwd":
             cwd = value
+        elif flag == "--listings":
+            stem = value
         else:
             raise SystemExit("unknown option " + flag)
         i += 2
     os.makedirs(workdir, exist_ok=True)
-    first = next(a for a in args if not a.startswith("-") and "=" not in a)
-    stem = os.path.splitext(os.path.basename(first))[0]
+    if stem is None:
+        first = next(a for a in args if not a.startswith("-") and "=" not in a)
+        stem = os.path.splitext(os.path.basename(first))[0]
     mess = os.path.join(workdir, stem + ".mess")
     resu = os.path.join(workdir, stem + ".resu")
     for path in (mess, resu):
