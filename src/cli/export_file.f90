@@ -9,7 +9,7 @@
 !> Every error is located `CASE.export:LINE: error: ...` and says what would be right.
 module export_file
     use kinds, only: dp
-    use strings, only: string_t, to_text
+    use strings, only: string_t, to_text, join_words
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_DECK_ERROR
     use deck_interpreter, only: read_source_text
     implicit none
@@ -161,9 +161,18 @@ contains
     contains
         subroutine fail(message)
             character(len=*), intent(in) :: message
-            call set_error(st, STATUS_DECK_ERROR, message, file=exp%path, line=line)
+            call line_error(exp, line, message, st)
         end subroutine fail
     end subroutine parse_line
+
+    !> An error located at `line` of the export file.
+    subroutine line_error(exp, line, message, st)
+        type(export_t), intent(in) :: exp
+        integer, intent(in) :: line
+        character(len=*), intent(in) :: message
+        type(status_t), intent(inout) :: st
+        call set_error(st, STATUS_DECK_ERROR, message, file=exp%path, line=line)
+    end subroutine line_error
 
     subroutine add_param(exp, words, line)
         type(export_t), intent(inout) :: exp
@@ -178,7 +187,7 @@ contains
         end do
         bigger(n + 1)%kind = words(1)%s
         bigger(n + 1)%name = words(2)%s
-        bigger(n + 1)%value = join(words(3:))
+        bigger(n + 1)%value = join_words(words(3:), ' ')
         bigger(n + 1)%line = line
         call move_alloc(bigger, exp%params)
     end subroutine add_param
@@ -200,9 +209,8 @@ contains
             if (.not. (x > 0.0_dp .and. x < 1.0e9_dp)) ios = 1
         end if
         if (ios /= 0) then
-            call set_error(st, STATUS_DECK_ERROR, 'P time_limit expects one positive ' // &
-                'number of seconds (e.g. P time_limit 60), got "' // join(words(3:)) // '"', &
-                file=exp%path, line=line)
+            call line_error(exp, line, 'P time_limit expects one positive number of ' // &
+                'seconds (e.g. P time_limit 60), got "' // join_words(words(3:), ' ') // '"', st)
             return
         end if
         exp%time_limit = x
@@ -225,7 +233,7 @@ contains
         end if
         e%folder = words(1)%s == 'R'
         e%type = words(2)%s
-        e%name = join(words(3:size(words) - 2))
+        e%name = join_words(words(3:size(words) - 2), ' ')
         flags = words(size(words) - 1)%s
         e%line = line
         if (verify(flags, 'DRC') /= 0) then
@@ -268,7 +276,7 @@ contains
     contains
         subroutine fail(message)
             character(len=*), intent(in) :: message
-            call set_error(st, STATUS_DECK_ERROR, message, file=exp%path, line=line)
+            call line_error(exp, line, message, st)
         end subroutine fail
     end subroutine add_entry
 
@@ -358,16 +366,5 @@ contains
         end do
     end subroutine split_words
 
-    !> Words joined by one blank.
-    function join(words) result(text)
-        type(string_t), intent(in) :: words(:)
-        character(len=:), allocatable :: text
-        integer :: k
-        text = ''
-        do k = 1, size(words)
-            if (k > 1) text = text // ' '
-            text = text // words(k)%s
-        end do
-    end function join
 
 end module export_file
