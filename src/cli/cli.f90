@@ -15,7 +15,7 @@ module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use kinds, only: i4, dp
     use strings, only: string_t, to_text, starts_with
-    use status, only: status_t, format_status, set_error, STATUS_DECK_ERROR
+    use status, only: status_t, format_status, set_error, add_context, STATUS_DECK_ERROR
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
     use atomic_file, only: open_atomic
@@ -200,6 +200,7 @@ contains
         type(status_t) :: st, io
         type(string_t), allocatable :: files(:)
         character(len=:), allocatable :: mess_path, resu_path, header
+        integer, allocatable :: file_lines(:)
         integer :: k
         if (allocated(opts%export)) then
             call init_context(ctx, opts%export, opts%outdir)
@@ -215,8 +216,11 @@ contains
         mess_path = ctx%output_path('.mess')
         resu_path = ctx%output_path('.resu')
         if (allocated(opts%export) .and. st%ok()) &
-            call apply_export(ctx, exp, files, mess_path, resu_path)
-        if (.not. allocated(opts%export)) files = opts%decks
+            call apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
+        if (.not. allocated(opts%export)) then
+            files = opts%decks
+            allocate (file_lines(0))
+        end if
         do k = 1, size(opts%units)
             call ctx%bind_unit(opts%units(k), opts%unit_paths(k)%s)
         end do
@@ -233,7 +237,13 @@ contains
             call ctx%write_mess('parasol ' // parasol_version_string // ' -- ' // header)
             if (allocated(opts%export) .and. st%ok()) call describe_export(ctx, exp)
         end if
-        if (st%ok()) call load_command_files(ctx, files, st)
+        if (st%ok()) then
+            if (allocated(opts%export)) then
+                call load_command_files(ctx, files, st, opts%export, file_lines)
+            else
+                call load_command_files(ctx, files, st)
+            end if
+        end if
         if (st%ok()) call check_pass(ctx, st)
         if (st%ok() .and. opts%check) then
             if (ctx%ncommand_file == 1) then
@@ -256,19 +266,22 @@ contains
     !> Takes from an export file what the run needs: its command files (in order), its
     !> units (F mmed|med|mail|msh NAME D U, and the result files parasol writes on a unit),
     !> its modules (F nom), its listings (F mess|resu NAME R U) and its time limit.
-    subroutine apply_export(ctx, exp, files, mess_path, resu_path)
+    !>  files : out, the command files;  file_lines : out, their F comm lines
+    subroutine apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
         type(run_context_t), intent(inout) :: ctx
         type(export_t), intent(in) :: exp
         type(string_t), allocatable, intent(out) :: files(:)
+        integer, allocatable, intent(out) :: file_lines(:)
         character(len=:), allocatable, intent(inout) :: mess_path, resu_path
         integer :: k
-        allocate (files(0))
+        allocate (files(0), file_lines(0))
         do k = 1, size(exp%entries)
             associate (e => exp%entries(k))
                 if (e%folder) cycle
                 select case (e%type)
                 case ('comm')
                     call append_string(files, e%path)
+                    file_lines = [file_lines, e%line]
                 case ('nom')
                     call ctx%bind_module(module_name(e%name), e%path)
                 case ('mess', 'resu')
@@ -306,14 +319,20 @@ contains
     end subroutine describe_export
 
     !> Reads and parses each command file; they form the session, in this order.
-    subroutine load_command_files(ctx, files, st)
+    !>  export, lines : optional, the export file and the F comm line of each file: a file
+    !>  that cannot be read is located there
+    subroutine load_command_files(ctx, files, st, export, lines)
         type(run_context_t), intent(inout) :: ctx
         type(string_t), intent(in) :: files(:)
         type(status_t), intent(inout) :: st
+        character(len=*), intent(in), optional :: export
+        integer, intent(in), optional :: lines(:)
         character(len=:), allocatable :: text
         integer :: k, src, slash
         do k = 1, size(files)
             call read_source_text(files(k)%s, 'the deck', text, st)
+            if (st%failed() .and. present(export) .and. present(lines)) &
+                call add_context(st, file=export, line=lines(k))
             if (st%failed()) return
             slash = index(files(k)%s, '/', back=.true.)
             call load_source(ctx, text, files(k)%s, files(k)%s(1:slash), '', src, st)

@@ -728,7 +728,7 @@ contains
         if (src == 0) then
             call find_module(ctx, id, module, path, st)
             if (st%failed()) return
-            call read_source_text(path, 'the module ' // module // ',', text, lst)
+            call read_source_text(path, 'the module file', text, lst)
             if (lst%failed()) then
                 call fail(st, ctx, id, lst%message); return
             end if
