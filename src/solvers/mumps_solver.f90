@@ -1,0 +1,288 @@
+!> METHODE='MUMPS': the multifrontal solver MUMPS behind the direct-solver interface, in the
+!> plug-in libparasol_mumps.so (plugins/mumps), opened on the first analyse: runs that do
+!> not ask for MUMPS never load it. The plug-in is built against the sequential MUMPS, or
+!> against the MPI MUMPS (CMake option PARASOL_MUMPS_MPI): then `mpirun -np N parasol deck`
+!> factors over N processes while process 0 runs parasol (cli starts the workers).
+!>
+!> Orderings (RENUM -> ICNTL(7), Code_Aster's mapping): AUTO 7, AMD 0, AMF 2, SCOTCH 3,
+!> PORD 4, QAMD 6.
+!>
+!> Singularity (Code_Aster U4.50.01 and its MUMPS driver): NPREC >= 0 switches MUMPS's
+!> null-pivot detection on (ICNTL(24) = 1) with CNTL(3) = -10^-NPREC and the fixation
+!> CNTL(5) = 1e20: a null pivot is flagged and held (its unknown comes out ~0). NPREC < 0
+!> switches the check off; parasol then still detects pivots at round-off level
+!> (CNTL(3) = -10^-hold_digits) and holds them, so that a free equation nothing loads is
+!> solved with zero displacement (the analysis judges whether it is loaded).
+!> MUMPS does not give its pivots one by one: the report has no digits lost per equation
+!> (pivots_known = .false.); a null pivot counts as every digit lost.
+module mumps_solver
+    use, intrinsic :: iso_c_binding, only: c_ptr, c_funptr, c_null_ptr, c_associated, &
+        c_int32_t, c_int64_t, c_double, c_f_procpointer
+    use kinds, only: dp, i4, i8
+    use status, only: status_t, set_error, STATUS_INTERNAL, STATUS_IO_ERROR
+    use strings, only: to_text
+    use dynamic_library, only: dynamic_library_t, open_library, find_symbol
+    use install_layout, only: plugin_file_path
+    use sparse_matrix, only: sym_matrix_t
+    use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec, &
+        check_disabled, start_report, record_flag, record_hold, singular_message, &
+        PIVOT_ZERO, DIGITS_ALL_LOST
+    implicit none
+    private
+
+    !> The plug-in's file name (in <build>/lib/parasol or <prefix>/lib/parasol).
+    character(len=*), parameter, public :: MUMPS_PLUGIN = 'libparasol_mumps.so'
+    !> CNTL(5), the value null pivots are fixed to (Code_Aster's MUMPS driver).
+    real(dp), parameter :: FIXATION = 1.0e20_dp
+    !> Digits of the round-off detection with the check off (no NPREC to read).
+    real(dp), parameter :: ROUNDOFF_DIGITS = 12.0_dp
+
+    abstract interface
+        function create_fn(ordering) result(h) bind(c)
+            import :: c_ptr, c_int32_t
+            integer(c_int32_t), value :: ordering
+            type(c_ptr) :: h
+        end function create_fn
+        subroutine destroy_fn(h) bind(c)
+            import :: c_ptr
+            type(c_ptr), value :: h
+        end subroutine destroy_fn
+        function analyse_fn(h, n, col_ptr, row_index, entries, info) result(rc) bind(c)
+            import :: c_ptr, c_int64_t, c_int32_t
+            type(c_ptr), value :: h
+            integer(c_int64_t), value :: n
+            integer(c_int64_t), intent(in) :: col_ptr(*)
+            integer(c_int32_t), intent(in) :: row_index(*)
+            integer(c_int64_t), intent(out) :: entries
+            integer(c_int32_t), intent(out) :: info(2)
+            integer(c_int32_t) :: rc
+        end function analyse_fn
+        function factor_fn(h, values, detect, cntl3, fixation, n_null, null_list, n_negative, &
+                           entries, megabytes, info) result(rc) bind(c)
+            import :: c_ptr, c_int64_t, c_int32_t, c_double
+            type(c_ptr), value :: h
+            real(c_double), intent(in) :: values(*)
+            integer(c_int32_t), value :: detect
+            real(c_double), value :: cntl3, fixation
+            integer(c_int64_t), intent(out) :: n_null, n_negative, entries, megabytes
+            integer(c_int32_t), intent(inout) :: null_list(*)
+            integer(c_int32_t), intent(out) :: info(2)
+            integer(c_int32_t) :: rc
+        end function factor_fn
+        function solve_fn(h, nrhs, b, info) result(rc) bind(c)
+            import :: c_ptr, c_int64_t, c_int32_t, c_double
+            type(c_ptr), value :: h
+            integer(c_int64_t), value :: nrhs
+            real(c_double), intent(inout) :: b(*)
+            integer(c_int32_t), intent(out) :: info(2)
+            integer(c_int32_t) :: rc
+        end function solve_fn
+    end interface
+
+    !> The MUMPS back-end.
+    type, extends(direct_solver_t), public :: mumps_solver_t
+        type(dynamic_library_t) :: library
+        type(c_ptr) :: handle = c_null_ptr
+        procedure(create_fn), nopass, pointer :: c_create => null()
+        procedure(destroy_fn), nopass, pointer :: c_destroy => null()
+        procedure(analyse_fn), nopass, pointer :: c_analyse => null()
+        procedure(factor_fn), nopass, pointer :: c_factor => null()
+        procedure(solve_fn), nopass, pointer :: c_solve => null()
+        integer(i4) :: n = 0
+        integer(i8) :: factor_entries = 0
+    contains
+        procedure :: analyse => mumps_analyse
+        procedure :: factor => mumps_factor
+        procedure :: solve_one => mumps_solve_one
+        procedure :: solve_many => mumps_solve_many
+        procedure :: memory_estimate => mumps_memory
+        procedure :: release => mumps_release
+        final :: mumps_final
+    end type mumps_solver_t
+
+contains
+
+    !> Opens the plug-in and takes its entry points (once per solver).
+    subroutine load_plugin(self, st)
+        class(mumps_solver_t), intent(inout) :: self
+        type(status_t), intent(out) :: st
+        type(c_funptr) :: f
+        if (associated(self%c_factor)) return
+        call open_library(self%library, plugin_file_path(MUMPS_PLUGIN), st)
+        if (st%failed()) then
+            call set_error(st, STATUS_IO_ERROR, 'METHODE=''MUMPS'' needs its plug-in: ' // &
+                st%message // ' (build parasol with MUMPS: apt-get install ' // &
+                'libmumps-seq-dev; or choose METHODE=''LDLT'')')
+            return
+        end if
+        call find_symbol(self%library, 'parasol_mumps_create', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, self%c_create)
+        call find_symbol(self%library, 'parasol_mumps_destroy', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, self%c_destroy)
+        call find_symbol(self%library, 'parasol_mumps_analyse', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, self%c_analyse)
+        call find_symbol(self%library, 'parasol_mumps_solve', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, self%c_solve)
+        call find_symbol(self%library, 'parasol_mumps_factor', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, self%c_factor)
+    end subroutine load_plugin
+
+    !> ICNTL(7) of a RENUM (Code_Aster's mapping, module header).
+    pure integer(c_int32_t) function ordering_code(renum)
+        character(len=*), intent(in) :: renum
+        select case (renum)
+        case ('AMD')
+            ordering_code = 0
+        case ('AMF')
+            ordering_code = 2
+        case ('SCOTCH')
+            ordering_code = 3
+        case ('PORD')
+            ordering_code = 4
+        case ('QAMD')
+            ordering_code = 6
+        case default
+            ordering_code = 7
+        end select
+    end function ordering_code
+
+    !> MUMPS analysis (JOB = 1) of the pattern.
+    subroutine mumps_analyse(self, a, st)
+        class(mumps_solver_t), intent(inout) :: self
+        type(sym_matrix_t), intent(in) :: a
+        type(status_t), intent(out) :: st
+        integer(c_int32_t) :: info(2), rc
+        integer(c_int64_t) :: entries
+        call load_plugin(self, st)
+        if (st%failed()) return
+        if (c_associated(self%handle)) call self%c_destroy(self%handle)
+        self%handle = self%c_create(ordering_code(trim(self%options%renum)))
+        if (.not. c_associated(self%handle)) then
+            call set_error(st, STATUS_INTERNAL, 'MUMPS: the instance could not start')
+            return
+        end if
+        rc = self%c_analyse(self%handle, int(a%n, c_int64_t), a%col_ptr, a%row_index, &
+            entries, info)
+        if (rc /= 0) then
+            call set_error(st, STATUS_INTERNAL, 'MUMPS analysis failed (INFOG(1) = ' // &
+                to_text(int(info(1), i4)) // ', INFOG(2) = ' // to_text(int(info(2), i4)) &
+                // ')')
+            return
+        end if
+        self%n = a%n
+        self%factor_entries = entries
+        self%analysed = .true.
+        self%factored = .false.
+    end subroutine mumps_analyse
+
+    !> MUMPS factorization (JOB = 2) with the null-pivot rules of the module header.
+    subroutine mumps_factor(self, a, report, st)
+        class(mumps_solver_t), intent(inout) :: self
+        type(sym_matrix_t), intent(in) :: a
+        type(factor_report_t), intent(out) :: report
+        type(status_t), intent(out) :: st
+        integer(c_int32_t), allocatable :: null_list(:)
+        integer(c_int32_t) :: info(2), rc, detect
+        integer(c_int64_t) :: n_null, n_negative, entries, megabytes
+        real(c_double) :: cntl3
+        integer(i4) :: k
+        integer(i8) :: t0, t1, rate
+        call start_report(report, 'MUMPS', a%n)
+        report%pivots_known = .false.
+        report%ordering = trim(self%options%renum)
+        if (.not. self%analysed .or. a%n /= self%n) then
+            call set_error(st, STATUS_INTERNAL, 'MUMPS: factor before analyse, or another ' &
+                // 'pattern')
+            return
+        end if
+        call system_clock(t0, rate)
+        detect = 1
+        if (check_disabled(self%options)) then
+            cntl3 = -10.0_dp**(-max(self%options%hold_digits, ROUNDOFF_DIGITS))
+            if (self%options%hold_digits <= 0.0_dp) detect = 0
+        else
+            cntl3 = -10.0_dp**(-effective_nprec(self%options))
+        end if
+        allocate (null_list(max(1, a%n)))
+        rc = self%c_factor(self%handle, a%values, detect, cntl3, FIXATION, n_null, null_list, &
+            n_negative, entries, megabytes, info)
+        if (rc /= 0) then
+            call set_error(st, STATUS_INTERNAL, 'MUMPS factorization failed (INFOG(1) = ' // &
+                to_text(int(info(1), i4)) // ', INFOG(2) = ' // to_text(int(info(2), i4)) &
+                // ')')
+            return
+        end if
+        report%n_negative_pivots = int(n_negative, i4)
+        report%factor_entries = entries
+        report%memory_bytes = megabytes * 1000000_i8
+        do k = 1, int(n_null, i4)
+            if (.not. check_disabled(self%options)) &
+                call record_flag(report, int(null_list(k), i4), PIVOT_ZERO, DIGITS_ALL_LOST)
+            call record_hold(report, int(null_list(k), i4))
+            if (report%max_digits_lost < DIGITS_ALL_LOST) then
+                report%max_digits_lost = DIGITS_ALL_LOST
+                report%max_digits_equation = int(null_list(k), i4)
+            end if
+        end do
+        self%factored = .true.
+        call system_clock(t1)
+        report%seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
+        if (report%n_flagged > 0 .and. self%options%stop_singular) &
+            call singular_message(report, self%options, st)
+    end subroutine mumps_factor
+
+    subroutine mumps_solve_one(self, b, st)
+        class(mumps_solver_t), intent(inout) :: self
+        real(dp), intent(inout) :: b(:)
+        type(status_t), intent(out) :: st
+        real(dp) :: b2(size(b), 1)
+        b2(:, 1) = b
+        call mumps_solve_many(self, b2, st)
+        if (st%ok()) b = b2(:, 1)
+    end subroutine mumps_solve_one
+
+    subroutine mumps_solve_many(self, b, st)
+        class(mumps_solver_t), intent(inout) :: self
+        real(dp), intent(inout) :: b(:, :)
+        type(status_t), intent(out) :: st
+        integer(c_int32_t) :: rc, info(2)
+        if (.not. self%factored .or. size(b, 1) /= self%n) then
+            call set_error(st, STATUS_INTERNAL, 'MUMPS: solve without a factor, or ' // &
+                'right-hand sides of size ' // to_text(size(b, 1, kind=i4)) // ' /= ' // &
+                to_text(self%n))
+            return
+        end if
+        if (size(b, 2) == 0 .or. self%n == 0) return
+        rc = self%c_solve(self%handle, int(size(b, 2), c_int64_t), b, info)
+        if (rc /= 0) call set_error(st, STATUS_INTERNAL, 'MUMPS solve failed (INFOG(1) = ' &
+            // to_text(int(info(1), i4)) // ')')
+    end subroutine mumps_solve_many
+
+    !> Entries of the factor estimated by the analysis, 8 bytes each.
+    function mumps_memory(self) result(bytes)
+        class(mumps_solver_t), intent(in) :: self
+        integer(i8) :: bytes
+        bytes = 8_i8 * self%factor_entries
+    end function mumps_memory
+
+    subroutine mumps_release(self)
+        class(mumps_solver_t), intent(inout) :: self
+        if (c_associated(self%handle) .and. associated(self%c_destroy)) &
+            call self%c_destroy(self%handle)
+        self%handle = c_null_ptr
+        self%analysed = .false.
+        self%factored = .false.
+    end subroutine mumps_release
+
+    !> The MUMPS instance goes with the solver.
+    subroutine mumps_final(self)
+        type(mumps_solver_t), intent(inout) :: self
+        call mumps_release(self)
+    end subroutine mumps_final
+
+end module mumps_solver
