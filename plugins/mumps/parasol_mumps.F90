@@ -120,6 +120,7 @@ contains
         inst%id%icntl(18) = 0       ! centralised on the host
         inst%id%icntl(28) = 1       ! sequential analysis
         inst%id%icntl(7) = ordering
+        inst%id%icntl(8) = 0        ! no scaling: parasol scales to a unit diagonal itself
     end subroutine init_instance
 
     subroutine end_instance(inst)

@@ -8,13 +8,19 @@
 !> PORD 4, QAMD 6.
 !>
 !> Singularity (Code_Aster U4.50.01 and its MUMPS driver): NPREC >= 0 switches MUMPS's
-!> null-pivot detection on (ICNTL(24) = 1) with CNTL(3) = -10^-NPREC and the fixation
-!> CNTL(5) = 1e20: a null pivot is flagged and held (its unknown comes out ~0). NPREC < 0
-!> switches the check off; parasol then still detects pivots at round-off level
-!> (CNTL(3) = -10^-hold_digits) and holds them, so that a free equation nothing loads is
-!> solved with zero displacement (the analysis judges whether it is loaded).
-!> MUMPS does not give its pivots one by one: the report has no digits lost per equation
-!> (pivots_known = .false.); a null pivot counts as every digit lost.
+!> null-pivot detection on (ICNTL(24) = 1) with the absolute threshold CNTL(3) = -10^-NPREC
+!> and the fixation CNTL(5) = 1e20 (a null pivot is held: its unknown comes out ~0).
+!> parasol gives MUMPS the matrix scaled to a unit diagonal, S A S with S = |diag A|^-1/2
+!> (MUMPS's own scaling off), so that a scaled pivot is d_j / a_jj: the threshold
+!> 10^-NPREC is then exactly LDLT's test "more than NPREC digits lost against the original
+!> diagonal". MUMPS does not give its pivots one by one (pivots_known = .false.); to tell a
+!> free equation (round-off pivot) from an ill-conditioned one, a matrix with null pivots
+!> at 10^-NPREC is factored again at 10^-FREE_DIGITS: pivots null there are free (every
+!> digit lost, held in the factor kept), the others are reported as having lost NPREC
+!> digits (a lower bound) and are not held, as LDLT keeps them. NPREC < 0 switches the
+!> check off; parasol then still holds pivots at round-off level (10^-hold_digits) so that
+!> a free equation nothing loads is solved with zero displacement (the analysis judges
+!> whether it is loaded).
 module mumps_solver
     use, intrinsic :: iso_c_binding, only: c_ptr, c_funptr, c_null_ptr, c_associated, &
         c_int32_t, c_int64_t, c_double, c_f_procpointer
@@ -23,10 +29,10 @@ module mumps_solver
     use strings, only: to_text
     use dynamic_library, only: dynamic_library_t, open_library, find_symbol
     use install_layout, only: plugin_file_path
-    use sparse_matrix, only: sym_matrix_t
+    use sparse_matrix, only: sym_matrix_t, sym_diagonal
     use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec, &
         check_disabled, start_report, record_flag, record_hold, singular_message, &
-        PIVOT_ZERO, DIGITS_ALL_LOST
+        PIVOT_ZERO, PIVOT_DIGITS_LOST, DIGITS_ALL_LOST
     implicit none
     private
 
@@ -34,8 +40,9 @@ module mumps_solver
     character(len=*), parameter, public :: MUMPS_PLUGIN = 'libparasol_mumps.so'
     !> CNTL(5), the value null pivots are fixed to (Code_Aster's MUMPS driver).
     real(dp), parameter :: FIXATION = 1.0e20_dp
-    !> Digits of the round-off detection with the check off (no NPREC to read).
-    real(dp), parameter :: ROUNDOFF_DIGITS = 12.0_dp
+    !> Digits lost by a free (round-off) pivot, as the analyses classify them
+    !> (contact_newton FREE_PIVOT_DIGITS).
+    real(dp), parameter :: FREE_DIGITS = 12.0_dp
 
     abstract interface
         function create_fn(ordering) result(h) bind(c)
@@ -90,6 +97,7 @@ module mumps_solver
         procedure(solve_fn), nopass, pointer :: c_solve => null()
         integer(i4) :: n = 0
         integer(i8) :: factor_entries = 0
+        real(dp), allocatable :: scale(:)     !< S, the unit-diagonal scaling (header)
     contains
         procedure :: analyse => mumps_analyse
         procedure :: factor => mumps_factor
@@ -180,17 +188,16 @@ contains
         self%factored = .false.
     end subroutine mumps_analyse
 
-    !> MUMPS factorization (JOB = 2) with the null-pivot rules of the module header.
+    !> MUMPS factorization (JOB = 2) of S A S with the null-pivot rules of the module header.
     subroutine mumps_factor(self, a, report, st)
         class(mumps_solver_t), intent(inout) :: self
         type(sym_matrix_t), intent(in) :: a
         type(factor_report_t), intent(out) :: report
         type(status_t), intent(out) :: st
-        integer(c_int32_t), allocatable :: null_list(:)
-        integer(c_int32_t) :: info(2), rc, detect
-        integer(c_int64_t) :: n_null, n_negative, entries, megabytes
-        real(c_double) :: cntl3
-        integer(i4) :: k
+        integer(c_int32_t), allocatable :: null_list(:), free_list(:)
+        real(dp), allocatable :: scaled(:)
+        integer(c_int64_t) :: n_null, n_free
+        integer(i4) :: k, nprec
         integer(i8) :: t0, t1, rate
         call start_report(report, 'MUMPS', a%n)
         report%pivots_known = .false.
@@ -201,15 +208,79 @@ contains
             return
         end if
         call system_clock(t0, rate)
-        detect = 1
+        call scale_matrix(self, a, scaled)
+        allocate (null_list(max(1, a%n)), free_list(max(1, a%n)))
+        nprec = effective_nprec(self%options)
+        n_null = 0
         if (check_disabled(self%options)) then
-            cntl3 = -10.0_dp**(-max(self%options%hold_digits, ROUNDOFF_DIGITS))
-            if (self%options%hold_digits <= 0.0_dp) detect = 0
+            call factor_once(self, scaled, max(self%options%hold_digits, 0.0_dp), report, &
+                free_list, n_free, st)
         else
-            cntl3 = -10.0_dp**(-effective_nprec(self%options))
+            call factor_once(self, scaled, real(nprec, dp), report, null_list, n_null, st)
+            n_free = 0
+            if (st%ok() .and. n_null > 0) call factor_once(self, scaled, FREE_DIGITS, &
+                report, free_list, n_free, st)
         end if
-        allocate (null_list(max(1, a%n)))
-        rc = self%c_factor(self%handle, a%values, detect, cntl3, FIXATION, n_null, null_list, &
+        if (st%failed()) return
+        do k = 1, int(n_free, i4)
+            call record_hold(report, int(free_list(k), i4))
+            if (.not. check_disabled(self%options)) &
+                call record_flag(report, int(free_list(k), i4), PIVOT_ZERO, DIGITS_ALL_LOST)
+            if (report%max_digits_lost < DIGITS_ALL_LOST) then
+                report%max_digits_lost = DIGITS_ALL_LOST
+                report%max_digits_equation = int(free_list(k), i4)
+            end if
+        end do
+        do k = 1, int(n_null, i4)
+            if (any(free_list(1:n_free) == null_list(k))) cycle
+            call record_flag(report, int(null_list(k), i4), PIVOT_DIGITS_LOST, real(nprec, dp))
+            if (report%max_digits_lost < real(nprec, dp)) then
+                report%max_digits_lost = real(nprec, dp)
+                report%max_digits_equation = int(null_list(k), i4)
+            end if
+        end do
+        self%factored = .true.
+        call system_clock(t1)
+        report%seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
+        if (report%n_flagged > 0 .and. self%options%stop_singular) &
+            call singular_message(report, self%options, st)
+    end subroutine mumps_factor
+
+    !> S = |diag A|^-1/2 (1 where the diagonal is 0) and the values of S A S.
+    subroutine scale_matrix(self, a, scaled)
+        class(mumps_solver_t), intent(inout) :: self
+        type(sym_matrix_t), intent(in) :: a
+        real(dp), allocatable, intent(out) :: scaled(:)
+        integer(i4) :: j
+        integer(i8) :: k
+        self%scale = abs(sym_diagonal(a))
+        where (self%scale > 0.0_dp)
+            self%scale = 1.0_dp / sqrt(self%scale)
+        elsewhere
+            self%scale = 1.0_dp
+        end where
+        allocate (scaled(size(a%values, kind=i8)))
+        do j = 1, a%n
+            do k = a%col_ptr(j), a%col_ptr(j + 1) - 1
+                scaled(k) = a%values(k) * self%scale(a%row_index(k)) * self%scale(j)
+            end do
+        end do
+    end subroutine scale_matrix
+
+    !> One JOB = 2 with null pivots detected below 10^-digits (digits = 0: no detection).
+    subroutine factor_once(self, scaled, digits, report, null_list, n_null, st)
+        class(mumps_solver_t), intent(inout) :: self
+        real(dp), intent(in) :: scaled(:), digits
+        type(factor_report_t), intent(inout) :: report
+        integer(c_int32_t), intent(inout) :: null_list(:)
+        integer(c_int64_t), intent(out) :: n_null
+        type(status_t), intent(out) :: st
+        integer(c_int32_t) :: info(2), rc, detect
+        integer(c_int64_t) :: n_negative, entries, megabytes
+        real(c_double) :: cntl3
+        detect = merge(1_c_int32_t, 0_c_int32_t, digits > 0.0_dp)
+        cntl3 = -10.0_dp**(-digits)
+        rc = self%c_factor(self%handle, scaled, detect, cntl3, FIXATION, n_null, null_list, &
             n_negative, entries, megabytes, info)
         if (rc /= 0) then
             call set_error(st, STATUS_INTERNAL, 'MUMPS factorization failed (INFOG(1) = ' // &
@@ -220,21 +291,7 @@ contains
         report%n_negative_pivots = int(n_negative, i4)
         report%factor_entries = entries
         report%memory_bytes = megabytes * 1000000_i8
-        do k = 1, int(n_null, i4)
-            if (.not. check_disabled(self%options)) &
-                call record_flag(report, int(null_list(k), i4), PIVOT_ZERO, DIGITS_ALL_LOST)
-            call record_hold(report, int(null_list(k), i4))
-            if (report%max_digits_lost < DIGITS_ALL_LOST) then
-                report%max_digits_lost = DIGITS_ALL_LOST
-                report%max_digits_equation = int(null_list(k), i4)
-            end if
-        end do
-        self%factored = .true.
-        call system_clock(t1)
-        report%seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
-        if (report%n_flagged > 0 .and. self%options%stop_singular) &
-            call singular_message(report, self%options, st)
-    end subroutine mumps_factor
+    end subroutine factor_once
 
     subroutine mumps_solve_one(self, b, st)
         class(mumps_solver_t), intent(inout) :: self
@@ -251,6 +308,7 @@ contains
         real(dp), intent(inout) :: b(:, :)
         type(status_t), intent(out) :: st
         integer(c_int32_t) :: rc, info(2)
+        integer(i4) :: k
         if (.not. self%factored .or. size(b, 1) /= self%n) then
             call set_error(st, STATUS_INTERNAL, 'MUMPS: solve without a factor, or ' // &
                 'right-hand sides of size ' // to_text(size(b, 1, kind=i4)) // ' /= ' // &
@@ -258,9 +316,19 @@ contains
             return
         end if
         if (size(b, 2) == 0 .or. self%n == 0) return
+        ! (S A S) y = S b, x = S y
+        do k = 1, size(b, 2)
+            b(:, k) = b(:, k) * self%scale
+        end do
         rc = self%c_solve(self%handle, int(size(b, 2), c_int64_t), b, info)
-        if (rc /= 0) call set_error(st, STATUS_INTERNAL, 'MUMPS solve failed (INFOG(1) = ' &
-            // to_text(int(info(1), i4)) // ')')
+        if (rc /= 0) then
+            call set_error(st, STATUS_INTERNAL, 'MUMPS solve failed (INFOG(1) = ' // &
+                to_text(int(info(1), i4)) // ')')
+            return
+        end if
+        do k = 1, size(b, 2)
+            b(:, k) = b(:, k) * self%scale
+        end do
     end subroutine mumps_solve_many
 
     !> Entries of the factor estimated by the analysis, 8 bytes each.
