@@ -70,8 +70,12 @@ module contact_newton
     real(dp), parameter :: NO_DECREASE_RATIO = 0.999_dp
 
     !> A held equation is loaded when the penalty holding it carries more than this fraction
-    !> of the largest right-hand-side term: the free motion there is driven, not idle.
+    !> of the largest right-hand-side term: the free motion there is driven, not idle ...
     real(dp), parameter :: HELD_LOAD_RATIO = 1.0e-8_dp
+    !> ... and more than the round-off of the product A x, this many times
+    !> eps max|a_jj| max|x| (a solve that loses ~9 digits leaves residuals of that order:
+    !> model B's idle DX carried 1.9e-7 N against 2.2 N of load).
+    real(dp), parameter :: HELD_ROUNDOFF_FACTOR = 1.0e3_dp
     !> Held equations named in the .mess before the list is cut.
     integer(i4), parameter :: LIST_EQUATIONS = 6
 
@@ -610,7 +614,7 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         real(dp), allocatable :: rhs(:), ax(:)
-        real(dp) :: scale, carried
+        real(dp) :: scale, carried, roundoff
         integer(i4) :: k, eq, worst
         logical :: have_held
         have_held = .false.
@@ -621,6 +625,8 @@ contains
         allocate (ax(size(r)))
         call sym_matvec(matrix, r, ax)
         scale = maxval(abs(rhs))
+        roundoff = HELD_ROUNDOFF_FACTOR * epsilon(1.0_dp) * maxval(abs(sym_diagonal(matrix))) &
+            * maxval(abs(r))
         worst = 0
         carried = 0.0_dp
         do k = 1, size(held%equations)
@@ -630,7 +636,7 @@ contains
                 worst = eq
             end if
         end do
-        if (worst > 0 .and. carried > HELD_LOAD_RATIO * scale) then
+        if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff)) then
             call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': singular ' // &
                 'matrix at ' // describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // &
                 ': the equation is free (SOLVEUR/NPREC < 0 switched the singularity check ' // &
