@@ -62,3 +62,14 @@ foreach(plugin parasol_cholmod parasol_mumps)
     LIBRARY_OUTPUT_DIRECTORY ${PARASOL_BUILD_PLUGIN_DIR})
 endforeach()
 install(TARGETS parasol_cholmod parasol_mumps LIBRARY DESTINATION ${PARASOL_INSTALL_PLUGINDIR})
+
+# The flavour, for the program (src/solvers/mumps_solver.f90: MPI workers under mpirun).
+if(PARASOL_MUMPS_MPI)
+  set(PARASOL_MUMPS_MPI_FORTRAN .true.)
+else()
+  set(PARASOL_MUMPS_MPI_FORTRAN .false.)
+endif()
+configure_file(${PROJECT_SOURCE_DIR}/cmake/parasol_solver_config.f90.in
+  ${CMAKE_CURRENT_BINARY_DIR}/generated/parasol_solver_config.f90 @ONLY)
+target_sources(parasol_lib PRIVATE
+  ${CMAKE_CURRENT_BINARY_DIR}/generated/parasol_solver_config.f90)

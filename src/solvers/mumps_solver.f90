@@ -29,6 +29,7 @@ module mumps_solver
     use strings, only: to_text
     use dynamic_library, only: dynamic_library_t, open_library, find_symbol
     use install_layout, only: plugin_file_path
+    use parasol_solver_config, only: MUMPS_MPI
     use sparse_matrix, only: sym_matrix_t, sym_diagonal
     use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec, &
         check_disabled, start_report, record_flag, record_hold, singular_message, &
@@ -86,6 +87,25 @@ module mumps_solver
         end function solve_fn
     end interface
 
+    abstract interface
+        function start_fn(rank, size) result(rc) bind(c)
+            import :: c_int32_t
+            integer(c_int32_t), intent(out) :: rank, size
+            integer(c_int32_t) :: rc
+        end function start_fn
+        subroutine void_fn() bind(c)
+        end subroutine void_fn
+    end interface
+
+    !> The MPI session of a distributed run (MPI build under mpirun): which process this is.
+    type, public :: mumps_session_t
+        logical :: active = .false.          !< MPI started by the plug-in
+        integer(i4) :: rank = 0, size = 1
+        type(dynamic_library_t) :: library
+    end type mumps_session_t
+
+    public :: mumps_session_start, mumps_session_stop
+
     !> The MUMPS back-end.
     type, extends(direct_solver_t), public :: mumps_solver_t
         type(dynamic_library_t) :: library
@@ -109,6 +129,59 @@ module mumps_solver
     end type mumps_solver_t
 
 contains
+
+    !> Starts the distributed session when this is the MPI build run by mpirun with more
+    !> than one process: process 0 goes on and runs the deck (its MUMPS calls are shared
+    !> with the others); every other process serves those calls until process 0 stops, then
+    !> returns with worker = .true. (it must exit quietly). Otherwise nothing happens.
+    !>  st : out, the MPI plug-in cannot be loaded
+    subroutine mumps_session_start(session, worker, st)
+        type(mumps_session_t), intent(out) :: session
+        logical, intent(out) :: worker
+        type(status_t), intent(out) :: st
+        type(c_funptr) :: f
+        procedure(start_fn), pointer :: start
+        procedure(void_fn), pointer :: serve
+        character(len=16) :: value
+        integer :: length, status
+        integer(c_int32_t) :: rank, size
+        worker = .false.
+        if (.not. MUMPS_MPI) return
+        ! launched by mpirun (Open MPI sets this in every process it starts)
+        call get_environment_variable('OMPI_COMM_WORLD_SIZE', value, length, status)
+        if (status /= 0) return
+        call open_library(session%library, plugin_file_path(MUMPS_PLUGIN), st)
+        if (st%ok()) call find_symbol(session%library, 'parasol_mumps_start', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, start)
+        if (start(rank, size) /= 0) then
+            call set_error(st, STATUS_INTERNAL, 'MPI could not start')
+            return
+        end if
+        session%active = .true.
+        session%rank = int(rank, i4)
+        session%size = int(size, i4)
+        if (rank == 0 .or. size <= 1) return
+        call find_symbol(session%library, 'parasol_mumps_worker', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, serve)
+        call serve()
+        worker = .true.
+    end subroutine mumps_session_start
+
+    !> Process 0: ends the workers and MPI (nothing outside a distributed session).
+    subroutine mumps_session_stop(session)
+        type(mumps_session_t), intent(inout) :: session
+        type(c_funptr) :: f
+        type(status_t) :: st
+        procedure(void_fn), pointer :: finish
+        if (.not. session%active .or. session%rank /= 0) return
+        call find_symbol(session%library, 'parasol_mumps_stop', f, st)
+        if (st%failed()) return
+        call c_f_procpointer(f, finish)
+        call finish()
+        session%active = .false.
+    end subroutine mumps_session_stop
 
     !> Opens the plug-in and takes its entry points (once per solver).
     subroutine load_plugin(self, st)
@@ -208,6 +281,8 @@ contains
             return
         end if
         call system_clock(t0, rate)
+        if (MUMPS_MPI) report%ordering = report%ordering // ', ' // trim(mpi_processes()) // &
+            ' MPI process(es)'
         call scale_matrix(self, a, scaled)
         allocate (null_list(max(1, a%n)), free_list(max(1, a%n)))
         nprec = effective_nprec(self%options)
@@ -245,6 +320,14 @@ contains
         if (report%n_flagged > 0 .and. self%options%stop_singular) &
             call singular_message(report, self%options, st)
     end subroutine mumps_factor
+
+    !> Number of processes of the MPI run (Open MPI's OMPI_COMM_WORLD_SIZE; 1 without mpirun).
+    function mpi_processes() result(text)
+        character(len=16) :: text
+        integer :: length, status
+        call get_environment_variable('OMPI_COMM_WORLD_SIZE', text, length, status)
+        if (status /= 0) text = '1'
+    end function mpi_processes
 
     !> S = |diag A|^-1/2 (1 where the diagonal is 0) and the values of S A S.
     subroutine scale_matrix(self, a, scaled)

@@ -3,7 +3,8 @@
 # then tests/analysis/run_deck.cmake runs and checks it with the other arguments.
 #
 #   cmake -DMETHOD=MUMPS -DNPREC=9 -DPARASOL=exe -DDECK=x.comm -DOUTDIR=dir [-DMESH=...]
-#         [-DREF=... -DDIFF=... -DRTOL=...] -DRUNNER=run_deck.cmake -P with_method.cmake
+#         [-DREF=... -DDIFF=... -DRTOL=...] [-DLAUNCHER=mpiexec|-np|2]
+#         -DRUNNER=run_deck.cmake -P with_method.cmake
 get_filename_component(name ${DECK} NAME)
 file(READ ${DECK} text)
 string(REGEX MATCH "SOLVEUR=_F\\([^)]*\\)" found "${text}")
@@ -14,7 +15,7 @@ string(REPLACE "${found}" "SOLVEUR=_F(METHODE='${METHOD}', NPREC=${NPREC})" text
 file(MAKE_DIRECTORY ${OUTDIR}/deck)
 file(WRITE ${OUTDIR}/deck/${name} "${text}")
 set(args -DPARASOL=${PARASOL} -DDECK=${OUTDIR}/deck/${name} -DOUTDIR=${OUTDIR}/run)
-foreach(var MESH REF DIFF RTOL)
+foreach(var MESH REF DIFF RTOL LAUNCHER)
     if(DEFINED ${var})
         list(APPEND args -D${var}=${${var}})
     endif()
