@@ -22,6 +22,7 @@ module cholmod_solver
     use install_layout, only: plugin_file_path
     use sparse_matrix, only: sym_matrix_t, sym_diagonal
     use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec, &
+        limit_openmp_threads, &
         start_report, digits_lost, record_flag, record_hold, singular_message, &
         PIVOT_DIGITS_LOST, PIVOT_ZERO, PIVOT_NEGATIVE, DIGITS_ALL_LOST, HOLD_PENALTY
     implicit none
@@ -114,6 +115,7 @@ contains
         type(status_t), intent(out) :: st
         type(c_funptr) :: f
         if (associated(self%c_factor)) return
+        call limit_openmp_threads()
         call open_library(self%library, plugin_file_path(CHOLMOD_PLUGIN), st)
         if (st%failed()) then
             call set_error(st, STATUS_IO_ERROR, 'METHODE=''MULT_FRONT'' needs its ' // &

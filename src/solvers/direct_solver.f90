@@ -20,6 +20,7 @@
 !> skyline in the factorization, CHOLMOD by a penalty and a new factorization, MUMPS by
 !> its null-pivot fixation).
 module direct_solver
+    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_SINGULAR
     use strings, only: to_text
@@ -33,6 +34,8 @@ module direct_solver
     integer(i4), parameter, public :: PIVOT_DIGITS_LOST = 1, PIVOT_ZERO = 2, PIVOT_NEGATIVE = 3
     !> Digits reported for a zero pivot: more than a double holds (-log10(eps) = 15.65).
     real(dp), parameter, public :: DIGITS_ALL_LOST = 16.0_dp
+    !> OpenMP threads of the plug-ins' libraries (limit_openmp_threads).
+    character(len=*), parameter :: OPENMP_THREAD_LIMIT = '1'
     !> A held pivot becomes this factor times its original diagonal (its unknown ~0).
     real(dp), parameter, public :: HOLD_PENALTY = 1.0e16_dp
 
@@ -131,9 +134,30 @@ module direct_solver
     end interface
 
     public :: digits_lost, record_flag, record_hold, singular_message, effective_nprec, &
-        check_disabled, start_report
+        check_disabled, start_report, limit_openmp_threads
+
+    interface
+        function c_setenv(name, value, overwrite) result(rc) bind(c, name='setenv')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: name(*), value(*)
+            integer(c_int), value :: overwrite
+            integer(c_int) :: rc
+        end function c_setenv
+    end interface
 
 contains
+
+    !> Before a back-end plug-in is opened: OpenMP threads limited to OPENMP_THREAD_LIMIT
+    !> unless the user set OMP_THREAD_LIMIT (libgomp reads it when it is loaded, i.e. with
+    !> the plug-in). Debian's CHOLMOD 3 runs its copy loops on a fixed 4 OpenMP threads
+    !> whatever OMP_NUM_THREADS says; on the 2-core machine of doc/performance.md that made
+    !> each 32 x 128 factorization 4-20 times slower (90 000 context switches per run). The
+    !> heavy work is BLAS 3, threaded by OpenBLAS, which this does not touch.
+    subroutine limit_openmp_threads()
+        integer(c_int) :: rc
+        rc = c_setenv('OMP_THREAD_LIMIT' // c_null_char, OPENMP_THREAD_LIMIT // c_null_char, &
+            0_c_int)
+    end subroutine limit_openmp_threads
 
     !> Frees the back-end's memory (default: nothing to free).
     subroutine release_nothing(self)

@@ -91,7 +91,7 @@ contains
         self%factored = self%sky%factored
         call system_clock(t1)
         report%seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
-        report%ordering = 'none (equations numbered by RENUM)'
+        report%ordering = 'RENUM ' // trim(self%options%renum) // ' of the nodes'
     end subroutine ldlt_factor
 
     subroutine ldlt_solve_one(self, b, st)

@@ -32,6 +32,7 @@ module mumps_solver
     use parasol_solver_config, only: MUMPS_MPI
     use sparse_matrix, only: sym_matrix_t, sym_diagonal
     use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec, &
+        limit_openmp_threads, &
         check_disabled, start_report, record_flag, record_hold, singular_message, &
         PIVOT_ZERO, PIVOT_DIGITS_LOST, DIGITS_ALL_LOST
     implicit none
@@ -150,6 +151,7 @@ contains
         ! launched by mpirun (Open MPI sets this in every process it starts)
         call get_environment_variable('OMPI_COMM_WORLD_SIZE', value, length, status)
         if (status /= 0) return
+        call limit_openmp_threads()
         call open_library(session%library, plugin_file_path(MUMPS_PLUGIN), st)
         if (st%ok()) call find_symbol(session%library, 'parasol_mumps_start', f, st)
         if (st%failed()) return
@@ -189,6 +191,7 @@ contains
         type(status_t), intent(out) :: st
         type(c_funptr) :: f
         if (associated(self%c_factor)) return
+        call limit_openmp_threads()
         call open_library(self%library, plugin_file_path(MUMPS_PLUGIN), st)
         if (st%failed()) then
             call set_error(st, STATUS_IO_ERROR, 'METHODE=''MUMPS'' needs its plug-in: ' // &
