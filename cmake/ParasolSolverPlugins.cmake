@@ -69,6 +69,10 @@ if(PARASOL_MUMPS_MPI)
 else()
   set(PARASOL_MUMPS_MPI_FORTRAN .false.)
 endif()
+# The BLAS the skyline loads at run time (src/solvers/blas_library.f90): the real file of the
+# library found by ParasolDependencies.cmake.
+list(GET PARASOL_LAPACK_LIBRARIES 0 _parasol_blas)
+file(REAL_PATH ${_parasol_blas} PARASOL_BLAS_RUNTIME)
 configure_file(${PROJECT_SOURCE_DIR}/cmake/parasol_solver_config.f90.in
   ${CMAKE_CURRENT_BINARY_DIR}/generated/parasol_solver_config.f90 @ONLY)
 target_sources(parasol_lib PRIVATE

@@ -26,7 +26,7 @@ module skyline_solver
         PIVOT_DIGITS_LOST, PIVOT_ZERO, PIVOT_NEGATIVE, DIGITS_ALL_LOST, HOLD_PENALTY, &
         digits_lost, record_flag, record_hold, singular_message, start_report
     use skyline_matrix, only: skyline_t, skyline_bandwidth, skyline_profile_size
-    use lapack_interface, only: dgemm, dsyrk, dtrsm
+    use blas_library, only: blas_kernels_t, load_blas
     implicit none
     private
 
@@ -76,6 +76,7 @@ contains
         type(status_t), intent(out) :: st
         type(factor_options_t), intent(in), optional :: options
         type(pivot_context_t) :: ctx
+        type(blas_kernels_t) :: blas
         integer(i4) :: method
         if (.not. sky%profile_ready .or. sky%factored) then
             call set_error(st, STATUS_INTERNAL, 'skyline_factor: matrix has no profile or ' &
@@ -106,8 +107,10 @@ contains
             if (report%bandwidth >= BLOCKED_MIN_BANDWIDTH) method = FACTOR_BLOCKED
         end if
         if (method == FACTOR_BLOCKED) then
+            call load_blas(blas, st)        ! on first use only (blas_library)
+            if (st%failed()) return
             call factor_blocked_kernel(sky%n, sky%diag, sky%values, report%bandwidth, ctx, &
-                                       report)
+                                       report, blas)
         else
             call factor_reference_kernel(sky%n, sky%diag, sky%values, ctx, report)
         end if
@@ -203,7 +206,8 @@ contains
     !> triangle. The panel's diagonal block gets the update P_JJ -= (D^-1 G)^T G (dgemm) and a
     !> small dense LDL^T with the pivot tests; the panel is then copied back. Same arithmetic
     !> as the reference kernel, reordered (left-looking block Crout).
-    subroutine factor_blocked_kernel(n, diag, values, band, ctx, report)
+    subroutine factor_blocked_kernel(n, diag, values, band, ctx, report, blas)
+        type(blas_kernels_t), intent(in) :: blas
         integer(i4), intent(in) :: n, band
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(inout) :: values(:)
@@ -225,9 +229,9 @@ contains
             j1 = min(n, j0 + PANEL_WIDTH - 1)
             t = minval(top(j0:j1))
             call load_panel(n, diag, values, top, j0, j1, t, ldp, p)
-            call substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w)
+            call substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w, blas)
             call factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, max(1, band), s, &
-                                       dk, ctx, report)
+                                       dk, ctx, report, blas)
             call store_panel(n, diag, values, top, j0, j1, t, ldp, p)
             j0 = j1 + 1
         end do
@@ -264,7 +268,8 @@ contains
     !> Rows t..j0-1 of the panel: g_ij = a_ij - sum_k u_ki g_kj with the finished columns,
     !> row block by row block [b0, b1]: rows r0..b0-1 above the block by dgemm, the block's
     !> unit upper triangle by dtrsm (U^T X = B). W holds U(r0..b1, b0..b1), zero-filled.
-    subroutine substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w)
+    subroutine substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w, blas)
+        type(blas_kernels_t), intent(in) :: blas
         integer(i4), intent(in) :: n, top(n), j0, j1, t, ldp, ldw
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(in) :: values(:)
@@ -285,11 +290,11 @@ contains
                     values(diag(i) - (i - max(top(i), r0)):diag(i) - 1)
             end do
             if (kr > 0) then
-                call dgemm('T', 'N', nbr, wp, kr, -1.0_dp, w, ldw, p(r0 - t + 1, 1), ldp, &
+                call blas%dgemm('T', 'N', nbr, wp, kr, -1.0_dp, w, ldw, p(r0 - t + 1, 1), ldp, &
                            1.0_dp, p(b0 - t + 1, 1), ldp)
             end if
             if (nbr > 1) then
-                call dtrsm('L', 'U', 'T', 'U', nbr, wp, 1.0_dp, w(kr + 1, 1), ldw, &
+                call blas%dtrsm('L', 'U', 'T', 'U', nbr, wp, 1.0_dp, w(kr + 1, 1), ldw, &
                            p(b0 - t + 1, 1), ldp)
             end if
             b0 = b1 + 1
@@ -300,7 +305,8 @@ contains
     !> panel's own u_kj, stored back into P), then dense Crout of the block with pivot tests.
     !>  s, dk : work arrays (lds >= j0 - t rows), allocated once by the caller
     subroutine factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, lds, s, dk, ctx, &
-                                     report)
+                                     report, blas)
+        type(blas_kernels_t), intent(in) :: blas
         integer(i4), intent(in) :: n, j0, j1, t, ldp, lds
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(in) :: values(:)
@@ -320,7 +326,7 @@ contains
                 do c = 1, wp
                     s(1:na, c) = p(1:na, c) * dk(1:na)
                 end do
-                call dsyrk('U', 'T', wp, na, -1.0_dp, s, lds, 1.0_dp, p(na + 1, 1), ldp)
+                call blas%dsyrk('U', 'T', wp, na, -1.0_dp, s, lds, 1.0_dp, p(na + 1, 1), ldp)
                 do c = 1, wp
                     p(1:na, c) = s(1:na, c) * dk(1:na)
                 end do
@@ -329,7 +335,7 @@ contains
                 do c = 1, wp
                     s(1:na, c) = p(1:na, c) * dk(1:na)
                 end do
-                call dgemm('T', 'N', wp, wp, na, -1.0_dp, s, lds, p, ldp, 1.0_dp, &
+                call blas%dgemm('T', 'N', wp, wp, na, -1.0_dp, s, lds, p, ldp, 1.0_dp, &
                            p(na + 1, 1), ldp)
                 p(1:na, 1:wp) = s(1:na, 1:wp)
             end if
