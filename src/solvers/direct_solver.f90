@@ -81,6 +81,11 @@ module direct_solver
         type(solver_options_t) :: options
         logical :: analysed = .false.
         logical :: factored = .false.
+        !> From analyse, for callers weighing a new factorization against solves with the
+        !> current factor (low_rank_update): stored terms of the factor and the flops of a
+        !> factorization (0 when the back-end does not say).
+        integer(i8) :: factor_terms = 0_i8
+        real(dp) :: factor_flops = 0.0_dp
     contains
         procedure(analyse_interface), deferred :: analyse
         procedure(factor_interface), deferred :: factor

@@ -43,6 +43,7 @@ contains
         if (allocated(self%sky%values)) deallocate (self%sky%values)
         allocate (self%sky%diag(0:a%n))
         self%sky%diag(0) = 0
+        self%factor_flops = 0.0_dp
         do j = 1, a%n
             if (a%col_ptr(j + 1) <= a%col_ptr(j) .or. &
                 a%row_index(max(a%col_ptr(j + 1) - 1, 1_i8)) /= j) then
@@ -50,7 +51,11 @@ contains
                 return
             end if
             self%sky%diag(j) = self%sky%diag(j - 1) + (j - a%row_index(a%col_ptr(j))) + 1
+            ! column j of height h: h dot products of length <= h (a multiply and an add)
+            self%factor_flops = self%factor_flops + &
+                real(j - a%row_index(a%col_ptr(j)), dp)**2
         end do
+        self%factor_terms = self%sky%diag(a%n)
         allocate (self%sky%values(self%sky%diag(a%n)))
         self%sky%profile_ready = .true.
         self%sky%factored = .false.
