@@ -22,7 +22,8 @@ module assembly_system
     use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
-    use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2
+    use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_line_seg2, &
+        choc_line_t
     use sparse_matrix, only: sym_matrix_t, sym_pattern_from_elements, sym_zero, &
         sym_add_element, envelope_of_elements
     use renumbering, only: renumber_graph, graph_from_elements
@@ -82,7 +83,8 @@ module assembly_system
     end type linear_cache_t
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
-        internal_forces, internal_forces_incremental, renumbering_lines
+        internal_forces, internal_forces_incremental, renumbering_lines, spring_matrices, &
+        spring_lines
 
 contains
 
@@ -364,32 +366,14 @@ contains
         logical, intent(out) :: closed
         type(status_t), intent(out) :: st
         integer(i4) :: kind, m
-        real(dp) :: kv(6), angles(3), gap, k6(6, 6), k4(4, 4), k3(3, 3), k2(2, 2)
+        real(dp) :: gap, k3(3, 3), k2(2, 2)
         real(dp) :: c3(3, 2), c2(2, 2)
-        logical :: global
         kind = s%model%element(c)
         c3 = x(:, 1:2)
         c2 = x(1:2, 1:2)
-        kv = s%cara%discrete_values(:, c)
-        global = s%cara%discrete_repere(c) == REPERE_GLOBAL
-        angles = 0.0_dp
-        if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
-            s%cara%orientation_values(1, c)
-        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
         closed = .true.
         fn = 0.0_dp
-        select case (kind)
-        case (ELEM_DIS_T_SEG2)
-            call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
-            ke = k6
-        case (ELEM_2D_DIS_T_SEG2)
-            call dis_2d_t_seg2_stiffness(c2, kv(1:2), global, k4, st)
-            ke = k4
-        case (ELEM_DIS_T_POI1)
-            call dis_t_poi1_stiffness(kv(1:3), global, angles, ke)
-        case (ELEM_2D_DIS_T_POI1)
-            call dis_2d_t_poi1_stiffness(kv(1:2), global, angles(1), ke)
-        end select
+        call discrete_stiffness(s, c, x, n, ke, st)
         if (st%failed()) return
         if (.not. s%choc(c)) then
             fe = matmul(ke, ue)
@@ -419,6 +403,38 @@ contains
             end if
         end associate
     end subroutine discrete_response
+
+    !> The discrete's own (linear) stiffness: DIS_T / 2D_DIS_T on SEG2 or POI1, from its
+    !> DISCRET or RIGI_PARASOL values, frame and orientation.
+    subroutine discrete_stiffness(s, c, x, n, ke, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(3, 4)
+        real(dp), intent(out) :: ke(n, n)
+        type(status_t), intent(out) :: st
+        real(dp) :: kv(6), angles(3), k6(6, 6), k4(4, 4), c3(3, 2), c2(2, 2)
+        logical :: global
+        c3 = x(:, 1:2)
+        c2 = x(1:2, 1:2)
+        kv = s%cara%discrete_values(:, c)
+        global = s%cara%discrete_repere(c) == REPERE_GLOBAL
+        angles = 0.0_dp
+        if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
+            s%cara%orientation_values(1, c)
+        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
+        select case (s%model%element(c))
+        case (ELEM_DIS_T_SEG2)
+            call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
+            ke = k6
+        case (ELEM_2D_DIS_T_SEG2)
+            call dis_2d_t_seg2_stiffness(c2, kv(1:2), global, k4, st)
+            ke = k4
+        case (ELEM_DIS_T_POI1)
+            call dis_t_poi1_stiffness(kv(1:3), global, angles, ke)
+        case (ELEM_2D_DIS_T_POI1)
+            call dis_2d_t_poi1_stiffness(kv(1:2), global, angles(1), ke)
+        end select
+    end subroutine discrete_stiffness
 
     !> Plane QUAD4 displacements minus their rigid motion (mean translation and the
     !> rotation about Z fitted about the centroid). K times a rigid motion is zero, so f_int
@@ -674,6 +690,98 @@ contains
             end if
         end do
     end subroutine internal_forces_incremental
+
+    !> The closed (bilateral) matrix of every DIS_CHOC spring on its free equations, in
+    !> map%springs order: the terms by which the tangents of two contact statuses differ
+    !> (a closed spring's matrix does not depend on u).
+    !>  sizes : out, (n_springs) equations of each spring's element (<= MAX_SPRING_DOFS)
+    !>  eqs   : out, (MAX_SPRING_DOFS, n_springs) their free numbers, 0 = imposed
+    !>  k     : out, (MAX_SPRING_DOFS, MAX_SPRING_DOFS, n_springs) the element matrices
+    !>  st    : out, element failures, naming the cell
+    subroutine spring_matrices(s, map, sizes, eqs, k, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(out) :: sizes(:), eqs(:, :)
+        real(dp), intent(out) :: k(:, :, :)
+        type(status_t), intent(out) :: st
+        integer(i4) :: i, c, n, all_eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
+        logical :: closed
+        eqs = 0
+        k = 0.0_dp
+        do i = 1, size(map%springs)
+            c = map%springs(i)
+            call element_equations(s, c, all_eqs, n)
+            if (n > size(eqs, 1)) then
+                call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': ' // &
+                    to_text(n) // ' equations, more than a spring''s ' // to_text(size(eqs, 1)))
+                return
+            end if
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, spread(0.0_dp, 1, n), n, .true., .true., ke, fe, &
+                closed, fn, st)
+            if (st%failed()) return
+            sizes(i) = n
+            eqs(1:n, i) = free_of(map, all_eqs(1:n))
+            k(1:n, 1:n, i) = ke
+        end do
+    end subroutine spring_matrices
+
+    !> The energy of every DIS_CHOC spring along u + alpha du (choc_line_t), in
+    !> map%springs order: what a line search on the contact energy needs.
+    !>  u, du : in, (n_equations) displacements and direction (imposed equations of du: 0)
+    !>  scale : in, > 0, the length unit of the lines (dis_choc_line_seg2)
+    !>  lines : out, (n_springs)
+    !>  st    : out, element failures, naming the cell
+    subroutine spring_lines(s, map, u, du, scale, lines, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), du(:), scale
+        type(choc_line_t), intent(out) :: lines(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: i, c, n, m, eqs(MAX_ELEMENT_DOFS), p0
+        real(dp) :: ue(MAX_ELEMENT_DOFS), de(MAX_ELEMENT_DOFS), x(3, 4)
+        real(dp) :: k6(6, 6), k4(4, 4), k3(3, 3), k2(2, 2), c3(3, 2), c2(2, 2)
+        do i = 1, size(map%springs)
+            c = map%springs(i)
+            call element_equations(s, c, eqs, n)
+            call gather_into(u, eqs, n, ue)
+            call gather_into(du, eqs, n, de)
+            p0 = s%mesh%cell_ptr(c)
+            x = 0.0_dp
+            x(:, 1:2) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + 1))
+            c3 = x(:, 1:2)
+            c2 = x(1:2, 1:2)
+            if (n == 6) then
+                call discrete_stiffness(s, c, x, n, k6, st)
+                k3 = k6(1:3, 1:3)
+            else
+                call discrete_stiffness(s, c, x, n, k4, st)
+                k2 = k4(1:2, 1:2)
+            end if
+            if (st%failed()) then
+                call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // st%message)
+                return
+            end if
+            m = material_of_cell(s%materials, c)
+            associate (dc => s%materials%materials(m)%dis_contact)
+                if (n == 6 .and. dc%has_rigi_nor) then
+                    call dis_choc_line_seg2(3_i4, c3, ue(1:6), de(1:6), k3, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), dc%rigi_nor, dc%rigi_tan)
+                else if (n == 6) then
+                    call dis_choc_line_seg2(3_i4, c3, ue(1:6), de(1:6), k3, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), rigi_tan=dc%rigi_tan)
+                else if (dc%has_rigi_nor) then
+                    call dis_choc_line_seg2(2_i4, c2, ue(1:4), de(1:4), k2, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), dc%rigi_nor, dc%rigi_tan)
+                else
+                    call dis_choc_line_seg2(2_i4, c2, ue(1:4), de(1:4), k2, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), rigi_tan=dc%rigi_tan)
+                end if
+            end associate
+        end do
+    end subroutine spring_lines
 
     !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
     !>  st : out, element failures (material, geometry), naming the cell
