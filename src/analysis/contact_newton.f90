@@ -20,6 +20,17 @@
 !> status); see doc/analysis.md "Diagnosis" and check_no_equilibrium. An intermediate
 !> iterate whose tangent is free takes the elastic matrix for its correction. Plate and
 !> plane forces are accumulated from the increments (internal_forces_incremental).
+!>
+!> Tangent corrections (doc/analysis.md, "Contact Newton"): the factor is kept with the
+!> contact status it was assembled with, and a matrix of the same status is never factored
+!> again. A tangent of another status differs from it by the closed matrices of the springs
+!> that changed (low-rank): it is solved by conjugate gradients preconditioned with the
+!> factor (low_rank_update) while that costs fewer solves than a factorization
+!> (factor_cost_in_solves), and factored otherwise; a tangent solve with its own factor is
+!> refined by the same iteration. Every tangent correction is then damped, when a full step
+!> would raise the energy, by a line search on the contact energy (contact_line_search):
+!> with it full Newton cannot cycle; a status met again after full steps only is still
+!> reported as cycling, naming the springs.
 module contact_newton
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
@@ -29,13 +40,18 @@ module contact_newton
     use model_dof_numbering, only: describe_equation
     use model_loads, only: load_set_t
     use function_concept, only: function_concept_t, param_binding_t
-    use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move
+    use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move, &
+        sym_add_element
     use direct_solver, only: direct_solver_t, solver_options_t, factor_report_t, &
         effective_nprec, check_disabled
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
-        linear_cache_t
+        linear_cache_t, spring_matrices, spring_lines
+    use element_dis_choc, only: choc_line_t
+    use low_rank_update, only: block_set_t, block_set_init, updated_matvec, solve_updated, &
+        factor_cost_in_solves, pcg_options_t, pcg_report_t, PCG_CONVERGED, PCG_BREAKDOWN
+    use contact_line_search, only: step_choice_t, choose_step, any_crossing
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
@@ -49,6 +65,34 @@ module contact_newton
     !> Springs named in a list before it is abbreviated.
     integer(i4), parameter :: LIST_NAMES = 6
     integer(i4), parameter :: MATRIX_NONE = 0, MATRIX_ELASTIC = 1, MATRIX_TANGENT = 2
+    !> How an iteration's matrix was solved (the MATRIX column of the Newton table): with
+    !> the factor it already had, after a new factorization, or through the factor of
+    !> another contact status updated by the springs that differ (low_rank_update).
+    integer(i4), parameter :: BY_REUSED_FACTOR = 0, BY_NEW_FACTOR = 1, BY_UPDATED_FACTOR = 2
+    !> A tangent solve (conjugate gradients with a factor) stops when its residual is
+    !> below this fraction of the convergence tolerance (RESI_GLOB_RELA times its
+    !> denominator, or RESI_GLOB_MAXI): the next Newton residual is then converged if the
+    !> contact status is right ...
+    real(dp), parameter :: PCG_TOLERANCE_FRACTION = 0.1_dp
+    !> ... or, while the status still changed in the last iteration, below this fraction
+    !> of the residual it corrects: an inexact Newton step (Eisenstat & Walker, SIAM J. Sci.
+    !> Comput. 17, 1996) spends no accuracy on a status that is about to change.
+    real(dp), parameter :: PCG_FORCING = 1.0e-2_dp
+    !> Solves that refine a direct solve with its own factor, at most (each gains the
+    !> digits the factorization kept, ~5 of 16 here; three reach the Newton tolerance).
+    integer(i4), parameter :: REFINE_MAX = 10
+    !> A tangent solved only through another status's factor is factored at convergence
+    !> to judge NPREC when the bound on its digits lost (the factor's digits plus log10 of
+    !> the Ritz condition estimate, low_rank_update) is within this margin of NPREC: Ritz
+    !> values estimate the extreme eigenvalues from inside.
+    real(dp), parameter :: RITZ_DIGITS_MARGIN = 0.5_dp
+    !> A spring that changed status in the last iteration while it would carry at most
+    !> this fraction of the convergence tolerance (in newtons) when closed sits at zero
+    !> gap: its status is immaterial to the equilibrium (the force is nil either way) and
+    !> does not keep the iteration from converging (a spring exactly at zero gap otherwise
+    !> flips with the round-off of every correction: the linear load P = p (b - y) on a
+    !> rigid plate puts the whole row y = b at zero gap).
+    real(dp), parameter :: ZERO_GAP_FORCE_FRACTION = 1.0e-2_dp
     !> A pivot below this fraction of the largest diagonal term is at the round-off level
     !> of the stiffest terms (~45 machine epsilons): a free rigid motion, even when the
     !> equation's own diagonal is small enough for NPREC not to flag it (e.g. a DX left free
@@ -96,6 +140,7 @@ module contact_newton
         integer(i4) :: nprec = 8
         !> solver diagnostics of the factorization (style.md: digits lost, pivot range)
         real(dp) :: digits = 0.0_dp                !< largest digits lost
+        logical :: digits_known = .true.           !< .false.: MUMPS (no pivot access)
         character(len=:), allocatable :: digits_at !< node and component of that pivot
         real(dp) :: min_pivot = 0.0_dp, max_pivot = 0.0_dp   !< range of |pivot|
     end type pivot_diagnosis_t
@@ -129,6 +174,9 @@ module contact_newton
         real(dp), allocatable :: inst(:)
         integer(i4), allocatable :: iterations(:)      !< Newton iterations (excl. prediction)
         integer(i4), allocatable :: factorizations(:)
+        integer(i4), allocatable :: solves(:)          !< solves with a factor
+        integer(i4), allocatable :: updated(:)         !< tangents through another factor
+        integer(i4), allocatable :: damped(:)          !< corrections the line search damped
         real(dp), allocatable :: resi_rela(:), resi_maxi(:)
         !> over every factorization: the largest loss of digits, where, and the |pivot| range
         real(dp) :: max_digits_lost = 0.0_dp
@@ -145,10 +193,22 @@ module contact_newton
         logical, allocatable :: closed(:)
         type(sym_matrix_t) :: matrix        !< the one assembled matrix, filled in place
         class(direct_solver_t), allocatable :: solver   !< its factor (analysed once)
-        integer(i4) :: factored = MATRIX_NONE   !< which matrix the factor holds
-        integer(i4) :: current = MATRIX_NONE
+        integer(i4) :: current = MATRIX_NONE    !< matrix of the last iteration
+        !> the factor (and the assembled matrix) hold the tangent of status fac_closed
+        !> (the elastic matrix = every spring closed); fac_usable: regular, so it can
+        !> precondition; fac_digits: digits its pivots lost (NPREC for MUMPS: a bound)
+        logical :: fac_valid = .false., fac_usable = .false.
+        logical, allocatable :: fac_closed(:)
+        real(dp) :: fac_digits = 0.0_dp
+        !> the tangent in use and its contact status (rebuilt every REAC_ITER iterations)
+        logical :: tangent_set = .false.
+        logical, allocatable :: tangent_closed(:)
+        type(block_set_t) :: blocks         !< every spring's closed matrix (free equations)
+        real(dp) :: factor_cost = 0.0_dp    !< a factorization, in solves
+        real(dp) :: solves_since_factor = 0.0_dp   !< through it for another status
+        integer(i4) :: last_updated_solves = 0     !< the last such solve's iterations
         type(held_t) :: held                !< equations held with the check off
-        integer(i4) :: factorizations = 0
+        integer(i4) :: factorizations = 0, solves = 0, updated = 0, damped = 0  !< this step
         logical :: refactored = .false.
         integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
         type(solver_options_t) :: solver_options
@@ -162,6 +222,9 @@ module contact_newton
         character(len=:), allocatable :: free_where    !< last free pivot
         type(pivot_diagnosis_t) :: ill                 !< last ill-conditioned tangent ...
         logical, allocatable :: ill_closed(:)          !< ... and its contact status
+        !> last tangent solved through another status's factor, and its digits bound
+        logical, allocatable :: updated_closed(:)
+        real(dp) :: updated_bound = 0.0_dp
     end type step_pivots_t
 
     public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear, &
@@ -206,8 +269,14 @@ contains
         call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
             state%du(n_eq), source=0.0_dp)
-        allocate (state%closed(size(map%springs)), state%fn(size(map%springs)))
+        allocate (state%closed(size(map%springs)), state%fn(size(map%springs)), &
+            state%fac_closed(size(map%springs)), state%tangent_closed(size(map%springs)))
         state%nprec = options%factor%nprec
+        call block_set_init(state%blocks, size(map%springs, kind=i4))
+        call spring_matrices(s, map, state%blocks%sizes, state%blocks%eqs, state%blocks%k, st)
+        if (st%failed()) return
+        state%factor_cost = factor_cost_in_solves(state%solver%factor_flops, &
+            state%solver%factor_terms, map%n_free)
         call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
         if (st%failed()) return
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
@@ -215,7 +284,8 @@ contains
             state%closed, state%fn)
         n_eq = int(size(times), i4) - 1
         allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
-            summary%resi_rela(n_eq), summary%resi_maxi(n_eq))
+            summary%resi_rela(n_eq), summary%resi_maxi(n_eq), summary%solves(n_eq), &
+            summary%updated(n_eq), summary%damped(n_eq))
         do step = 1, int(size(times), i4) - 1
             call newton_step(s, map, excit, times(step + 1), step, options, state, log, &
                 summary, st)
@@ -273,13 +343,20 @@ contains
         real(dp) :: denominator
         resi_maxi = maxval(abs(fext - fint), mask=.not. imposed, dim=1)
         if (count(.not. imposed) == 0) resi_maxi = 0.0_dp
-        denominator = maxval(abs(fext), dim=1)
-        if (any(imposed)) denominator = max(denominator, &
-            maxval(abs(fint - fext), mask=imposed, dim=1))
+        denominator = resi_denominator(imposed, fint, fext)
         zero_load = .not. denominator > 0.0_dp
         resi_rela = 0.0_dp
         if (.not. zero_load) resi_rela = resi_maxi / denominator
     end subroutine residual_measures
+
+    !> The denominator of RESI_GLOB_RELA: max(max|f_ext|, max|reactions|).
+    pure real(dp) function resi_denominator(imposed, fint, fext) result(denominator)
+        logical, intent(in) :: imposed(:)
+        real(dp), intent(in) :: fint(:), fext(:)
+        denominator = maxval(abs(fext), dim=1)
+        if (any(imposed)) denominator = max(denominator, &
+            maxval(abs(fint - fext), mask=imposed, dim=1))
+    end function resi_denominator
 
     !> One step of STAT_NON_LINE (see the module header).
     subroutine newton_step(s, map, excit, t, step, options, state, log, summary, st)
@@ -293,13 +370,12 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(newton_summary_t), intent(inout) :: summary
         type(status_t), intent(out) :: st
-        logical, allocatable :: start(:), history(:, :)
-        real(dp), allocatable :: r(:), resi_history(:)
-        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds
-        integer(i4) :: iter, changed, use, repeat_of
-        character(len=:), allocatable :: seen
+        logical, allocatable :: start(:), history(:, :), full(:), tight(:)
+        real(dp), allocatable :: r(:), b(:), resi_history(:)
+        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, alpha
+        integer(i4) :: iter, changed, use, mode
         integer(i8) :: t0, t1, rate
-        logical :: zero_load, converged, said_zero
+        logical :: zero_load, converged, said_zero, settled, solve_tightly
         type(step_pivots_t) :: piv
         call log_add(log, '')
         call log_add(log, 'INST ' // real_e13(t) // ' (step ' // to_text(step) // ')')
@@ -311,11 +387,17 @@ contains
         state%du = state%u - state%du
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
+            full(0:options%iter_glob_maxi), tight(0:options%iter_glob_maxi), &
             resi_history(0:options%iter_glob_maxi), r(map%n_free))
         state%factorizations = 0
+        state%solves = 0
+        state%updated = 0
+        state%damped = 0
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
+        settled = .false.           ! the last iteration changed no spring status
+        solve_tightly = .false.     ! a status came back after inexact corrections
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
             state%closed, state%fn, st, state%linear)
         if (st%failed()) return
@@ -325,14 +407,19 @@ contains
             if (st%failed()) return
             call system_clock(t0, rate)
             use = choose_matrix(options, iter, step, state)
-            call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)
-            if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
-            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+            b = r
+            tight(iter) = settled .or. solve_tightly
+            call correction(s, map, state, use, options, t, tight(iter), log, piv, r, mode, st)
+            if (st%failed()) return
+            alpha = 1.0_dp
+            full(iter) = .true.
+            if (use == MATRIX_TANGENT) call line_search(s, map, state, b, r, log, alpha, &
+                full(iter), st)
             if (st%failed()) return
             state%du = 0.0_dp
-            state%du(map%free_to_eq) = r
-            state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
+            state%du(map%free_to_eq) = alpha * r
+            state%u(map%free_to_eq) = state%u(map%free_to_eq) + state%du(map%free_to_eq)
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
                 state%fint, state%closed, state%fn, st, state%linear)
@@ -344,37 +431,26 @@ contains
             call system_clock(t1)
             seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
             call log_add(log, iteration_row(iter, resi_rela, resi_maxi, zero_load, use, &
-                state%refactored, count(state%closed, kind=i4), changed, seconds))
+                mode, count(state%closed, kind=i4), changed, seconds))
             if (zero_load .and. .not. said_zero) then
                 call log_add(log, '  no load and no reaction: RESI_GLOB_RELA is undefined,' &
                     // ' absolute criterion RESI_GLOB_MAXI <= ' // real_e13(absolute_tol( &
                     options)) // ' N used')
                 said_zero = .true.
             end if
-            converged = changed == 0 .and. criteria_met(options, resi_rela, resi_maxi, &
-                zero_load)
+            converged = criteria_met(options, resi_rela, resi_maxi, zero_load)
+            if (converged .and. changed > 0) call changes_at_zero_gap(s, map, state, options, &
+                history(:, iter), log, converged, st)
+            if (st%failed()) return
             if (converged) exit
             call check_no_equilibrium(s, map, state, use, iter, changed, piv, resi_maxi, &
                 previous_maxi, t, st)
             if (st%failed()) return
             previous_maxi = resi_maxi
-            ! history(:, k) is the status at the start of iteration k, i.e. the one shown
-            ! on row k - 1 of the table (or the step's starting status for k = 0)
-            repeat_of = cycle_start(history(:, 0:iter), state%closed)
-            if (repeat_of >= 0 .and. changed > 0) then
-                seen = 'the start of the step'
-                if (repeat_of > 0) seen = 'iteration ' // to_text(repeat_of - 1)
-                call log_add(log, '  contact status of iteration ' // to_text(iter) // &
-                    ' repeats ' // seen // ' (cycling)')
-                if (.not. options%matrix_elastic .and. options%reac_iter == 1) then
-                    call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
-                        ': the contact status cycles (iteration ' // to_text(iter) // &
-                        ' repeats ' // seen // '); springs ' // &
-                        'changing: ' // changed_names(s, map, history(:, iter), &
-                        state%closed))
-                    return
-                end if
-            end if
+            settled = changed == 0
+            call detect_cycle(s, map, options, history(:, 0:iter), full(0:iter), &
+                tight(0:iter), iter, changed, state%closed, t, log, solve_tightly, st)
+            if (st%failed()) return
         end do
         if (.not. converged) then
             call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
@@ -384,17 +460,15 @@ contains
                 history(:, options%iter_glob_maxi), state%closed))
             return
         end if
-        ! an ill-conditioned tangent of the converged contact status is the model's own
-        if (allocated(piv%ill_closed)) then
-            if (all(piv%ill_closed .eqv. state%closed)) then
-                call report_pivots(piv%ill, options%factor, t, log, st)
-                if (st%failed()) return
-            end if
-        end if
+        call judge_converged_tangent(s, map, state, options, piv, t, log, st)
+        if (st%failed()) return
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
             to_text(count(state%closed, kind=i4)) // ' of ' // to_text(size(state%closed)) // &
             ' springs closed')
+        call log_add(log, '  solves with a factor: ' // to_text(state%solves) // &
+            '; tangents through another status''s factor: ' // to_text(state%updated) // &
+            '; corrections damped by the line search: ' // to_text(state%damped))
         call log_add(log, '  closed in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
@@ -407,9 +481,92 @@ contains
         summary%inst(step) = t
         summary%iterations(step) = iter
         summary%factorizations(step) = state%factorizations
+        summary%solves(step) = state%solves
+        summary%updated(step) = state%updated
+        summary%damped(step) = state%damped
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
+
+    !> Whether every spring whose status changed since `before` would carry at most
+    !> ZERO_GAP_FORCE_FRACTION of the convergence tolerance when closed (at zero gap: its
+    !> status does not matter); the .mess says so when it does.
+    subroutine changes_at_zero_gap(s, map, state, options, before, log, settled, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        type(newton_options_t), intent(in) :: options
+        logical, intent(in) :: before(:)
+        type(analysis_log_t), intent(inout) :: log
+        logical, intent(out) :: settled
+        type(status_t), intent(out) :: st
+        type(choc_line_t), allocatable :: lines(:)
+        real(dp) :: scale, limit
+        integer(i4) :: k
+        settled = .false.
+        scale = maxval(abs(state%u))
+        if (.not. scale > 0.0_dp) scale = 1.0_dp
+        allocate (lines(size(map%springs)))
+        state%du = 0.0_dp
+        call spring_lines(s, map, state%u, state%du, scale, lines, st)
+        if (st%failed()) return
+        limit = ZERO_GAP_FORCE_FRACTION * criterion_tolerance(options, map, state)
+        do k = 1, size(lines, kind=i4)
+            if (state%closed(k) .eqv. before(k)) cycle
+            if (lines(k)%force > limit / scale) return
+        end do
+        settled = .true.
+        call log_add(log, '  ' // to_text(count(state%closed .neqv. before, kind=i4)) // &
+            ' spring(s) changed status at zero gap (a force below ' // real_short(limit) // &
+            ' N either way): ' // changed_names(s, map, before, state%closed))
+    end subroutine changes_at_zero_gap
+
+    !> A contact status met again in the step (history(:, k) is the status at the start of
+    !> iteration k; `now` the status after iteration iter). After full steps solved to the
+    !> convergence tolerance (`tight`), the iterates themselves repeat (a full Newton step
+    !> from a status lands on the same point whatever it starts from): that is a cycle,
+    !> logged, and for full Newton (REAC_ITER = 1) STATUS_NO_CONVERGENCE naming the
+    !> springs; the line search makes it a round-off accident (module header). After a
+    !> damped step it is no cycle; after inexact corrections (inexact Newton) neither, but
+    !> the next ones are solved tightly (solve_tightly).
+    subroutine detect_cycle(s, map, options, history, full, tight, iter, changed, now, t, &
+                            log, solve_tightly, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_options_t), intent(in) :: options
+        logical, intent(in) :: history(:, 0:), full(0:), tight(0:), now(:)
+        integer(i4), intent(in) :: iter, changed
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        logical, intent(inout) :: solve_tightly
+        type(status_t), intent(out) :: st
+        integer(i4) :: repeat_of
+        character(len=:), allocatable :: seen
+        repeat_of = cycle_start(history, now)
+        if (repeat_of < 0 .or. changed == 0) return
+        seen = 'the start of the step'
+        if (repeat_of > 0) seen = 'iteration ' // to_text(repeat_of - 1)
+        if (.not. all(full(repeat_of:iter))) then
+            call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+                ' repeats ' // seen // ' after a damped step (lower energy: no cycle)')
+            return
+        end if
+        if (.not. all(tight(repeat_of:iter))) then
+            call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+                ' repeats ' // seen // ' after inexact corrections: solved to the ' // &
+                'convergence tolerance from now on')
+            solve_tightly = .true.
+            return
+        end if
+        call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+            ' repeats ' // seen // ' (cycling)')
+        if (.not. options%matrix_elastic .and. options%reac_iter == 1) then
+            call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
+                ': the contact status cycles (iteration ' // to_text(iter) // &
+                ' repeats ' // seen // '); springs ' // &
+                'changing: ' // changed_names(s, map, history(:, iter), now))
+        end if
+    end subroutine detect_cycle
 
     !> Absolute tolerance of the zero-load case: RESI_GLOB_MAXI if given, else the
     !> RESI_GLOB_RELA value read in newtons.
@@ -433,8 +590,9 @@ contains
             resi_maxi <= options%resi_glob_maxi
     end function criteria_met
 
-    !> Which matrix iteration `iter` of step `step` uses; marks a tangent to rebuild by
-    !> dropping it (factor_and_diagnose then assembles and factors).
+    !> Which matrix iteration `iter` of step `step` uses (module header). A tangent to
+    !> rebuild takes the current contact status (state%tangent_closed); a kept one keeps
+    !> the status it was built with, whatever the factor holds meanwhile.
     integer(i4) function choose_matrix(options, iter, step, state) result(use)
         type(newton_options_t), intent(in) :: options
         integer(i4), intent(in) :: iter, step
@@ -448,7 +606,7 @@ contains
             else
                 use = MATRIX_TANGENT
                 if (options%reac_incr > 0) then
-                    if (mod(step - 1, options%reac_incr) == 0) call drop(state, MATRIX_TANGENT)
+                    if (mod(step - 1, options%reac_incr) == 0) state%tangent_set = .false.
                 end if
             end if
         else if (options%matrix_elastic) then
@@ -458,12 +616,307 @@ contains
             if (options%reac_iter > 0) then
                 if (mod(iter, options%reac_iter) == 0) then
                     use = MATRIX_TANGENT
-                    call drop(state, MATRIX_TANGENT)
+                    state%tangent_set = .false.
                 end if
             end if
         end if
+        if (use == MATRIX_TANGENT .and. .not. state%tangent_set) then
+            state%tangent_closed = state%closed
+            state%tangent_set = .true.
+        end if
         state%current = use
     end function choose_matrix
+
+    !> The contact status of matrix `use`: every spring closed for the elastic matrix (the
+    !> closed and the bilateral spring matrices are the same), the tangent's own otherwise.
+    pure function status_of(state, use) result(closed)
+        type(newton_state_t), intent(in) :: state
+        integer(i4), intent(in) :: use
+        logical :: closed(size(state%closed))
+        closed = .true.
+        if (use == MATRIX_TANGENT) closed = state%tangent_closed
+    end function status_of
+
+    !> Whether the factor holds the matrix of contact status `closed`.
+    pure logical function factor_holds(state, closed)
+        type(newton_state_t), intent(in) :: state
+        logical, intent(in) :: closed(:)
+        factor_holds = state%fac_valid
+        if (factor_holds) factor_holds = all(state%fac_closed .eqv. closed)
+    end function factor_holds
+
+    !> The springs whose status differs between two contact statuses, with the sign of
+    !> their closed matrix in the difference now - before (+1 closed in `now` only).
+    pure subroutine status_difference(now, before, active, signs)
+        logical, intent(in) :: now(:), before(:)
+        integer(i4), allocatable, intent(out) :: active(:), signs(:)
+        integer(i4) :: k, n
+        n = count(now .neqv. before, kind=i4)
+        allocate (active(n), signs(n))
+        n = 0
+        do k = 1, size(now, kind=i4)
+            if (now(k) .eqv. before(k)) cycle
+            n = n + 1
+            active(n) = k
+            signs(n) = merge(1_i4, -1_i4, now(k))
+        end do
+    end subroutine status_difference
+
+    !> The correction of one iteration: r = K^-1 r for the matrix `use` (module header).
+    !> A tangent is solved through the factor of another status when that is allowed and
+    !> cheaper (updated_correction), else factored if needed (matrix_for_iteration, with
+    !> its pivot rules) and solved with its own factor, refined (refined_correction); the
+    !> elastic matrix, and every matrix with the singularity check off, by a direct solve.
+    !>  settled : in, solve to the convergence tolerance (no inexact Newton): the last
+    !>            iteration changed no spring status, or a status came back
+    !>  r       : inout, the residual on the free equations in, the correction out
+    !>  mode    : out, BY_REUSED_FACTOR, BY_NEW_FACTOR or BY_UPDATED_FACTOR
+    subroutine correction(s, map, state, use, options, t, settled, log, piv, r, mode, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(inout) :: use
+        type(newton_options_t), intent(in) :: options
+        real(dp), intent(in) :: t
+        logical, intent(in) :: settled
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        real(dp), intent(inout) :: r(:)
+        integer(i4), intent(out) :: mode
+        type(status_t), intent(out) :: st
+        real(dp) :: target
+        logical :: iterative, done
+        mode = BY_REUSED_FACTOR
+        iterative = use == MATRIX_TANGENT .and. .not. check_disabled(options%factor)
+        if (iterative) then
+            target = pcg_target(options, map, state, r, settled)
+            if (.not. factor_holds(state, state%tangent_closed)) then
+                call updated_correction(state, target, log, piv, r, done, st)
+                if (st%failed()) return
+                if (done) then
+                    mode = BY_UPDATED_FACTOR
+                    return
+                end if
+            end if
+        end if
+        call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)
+        if (st%failed()) return
+        if (state%refactored) mode = BY_NEW_FACTOR
+        if (iterative .and. use == MATRIX_TANGENT) then
+            call refined_correction(s, map, state, target, t, log, r, st)
+        else
+            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+            state%solves = state%solves + 1
+        end if
+    end subroutine correction
+
+    !> The linear tolerance of a tangent solve: PCG_TOLERANCE_FRACTION of the convergence
+    !> tolerance, in newtons, at the current iterate; while the contact status moves, no
+    !> less than PCG_FORCING times max|r| (inexact Newton).
+    real(dp) function pcg_target(options, map, state, r, settled) result(target)
+        type(newton_options_t), intent(in) :: options
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(in) :: state
+        real(dp), intent(in) :: r(:)
+        logical, intent(in) :: settled
+        target = PCG_TOLERANCE_FRACTION * criterion_tolerance(options, map, state)
+        if (.not. settled .and. size(r) > 0) target = max(target, PCG_FORCING * maxval(abs(r)))
+    end function pcg_target
+
+    !> The convergence tolerance in newtons at the current iterate: RESI_GLOB_RELA times
+    !> its denominator and/or RESI_GLOB_MAXI (the smaller), or the zero-load tolerance.
+    real(dp) function criterion_tolerance(options, map, state) result(tolerance)
+        type(newton_options_t), intent(in) :: options
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(in) :: state
+        real(dp) :: denominator
+        denominator = resi_denominator(map%imposed, state%fint, state%fext)
+        if (.not. denominator > 0.0_dp) then
+            tolerance = absolute_tol(options)
+        else
+            tolerance = huge(1.0_dp)
+            if (options%use_rela) tolerance = options%resi_glob_rela * denominator
+            if (options%use_maxi) tolerance = min(tolerance, options%resi_glob_maxi)
+        end if
+    end function criterion_tolerance
+
+    !> The tangent of status state%tangent_closed through the factor of another status
+    !> (low_rank_update), when the factor is regular and the solves since it was made,
+    !> with this one's expected count (the last one's), stay below a factorization's cost
+    !> (a rent-or-buy rule: at most twice the cheaper of the two). Not done (done =
+    !> .false., r untouched) when that budget is spent, or CG does not converge within it,
+    !> breaks down, or its Ritz values leave fewer than FREE_PIVOT_DIGITS - the factor's
+    !> digits: the tangent may be singular, its factorization will tell.
+    subroutine updated_correction(state, target, log, piv, r, done, st)
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: target
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        real(dp), intent(inout) :: r(:)
+        logical, intent(out) :: done
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: active(:), signs(:)
+        real(dp), allocatable :: x(:)
+        type(pcg_options_t) :: opts
+        type(pcg_report_t) :: rep
+        real(dp) :: budget, bound
+        character(len=:), allocatable :: why
+        done = .false.
+        if (.not. (state%fac_valid .and. state%fac_usable)) return
+        budget = state%factor_cost - state%solves_since_factor
+        if (budget < real(max(1_i4, state%last_updated_solves), dp)) return
+        call status_difference(state%tangent_closed, state%fac_closed, active, signs)
+        allocate (x(size(r)))
+        opts%max_iterations = max(1_i4, int(budget, i4))
+        opts%tolerance = target
+        call solve_updated(state%solver, state%matrix, state%blocks, active, signs, r, x, &
+            opts, rep, st)
+        if (st%failed()) return
+        state%solves = state%solves + rep%iterations
+        state%solves_since_factor = state%solves_since_factor + real(rep%iterations, dp)
+        state%last_updated_solves = rep%iterations
+        bound = state%fac_digits + log10(max(rep%ritz_max / max(rep%ritz_min, tiny(1.0_dp)), &
+            1.0_dp))
+        why = ''
+        if (rep%outcome == PCG_BREAKDOWN) then
+            why = 'the tangent is not positive definite'
+        else if (rep%outcome /= PCG_CONVERGED) then
+            why = 'no convergence in ' // to_text(rep%iterations) // ' solves'
+        else if (bound >= FREE_PIVOT_DIGITS) then
+            why = 'it may be singular (' // real_digits(bound) // ' digits)'
+        end if
+        if (len(why) > 0) then
+            call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
+                'factored status; updated solve not used: ' // why)
+            return
+        end if
+        r = x
+        done = .true.
+        state%updated = state%updated + 1
+        piv%updated_closed = state%tangent_closed
+        piv%updated_bound = bound
+        call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
+            'factored status: ' // to_text(rep%iterations) // ' solves (PCG), residual ' // &
+            real_short(rep%residual) // ' N, digits bound ' // real_digits(bound))
+    end subroutine updated_correction
+
+    !> A tangent solved with its own factor, refined by CG preconditioned with that factor
+    !> (at most REFINE_MAX solves, to `target`); a direct solve if CG breaks down (an
+    !> indefinite or singular factor).
+    !>  r : inout, the residual in, the correction out
+    subroutine refined_correction(s, map, state, target, t, log, r, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: target, t
+        type(analysis_log_t), intent(inout) :: log
+        real(dp), intent(inout) :: r(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: none(0)
+        real(dp), allocatable :: x(:)
+        type(pcg_options_t) :: opts
+        type(pcg_report_t) :: rep
+        allocate (x(size(r)))
+        opts%max_iterations = REFINE_MAX
+        opts%tolerance = target
+        call solve_updated(state%solver, state%matrix, state%blocks, none, none, r, x, opts, &
+            rep, st)
+        if (st%failed()) return
+        state%solves = state%solves + rep%iterations
+        if (rep%outcome /= PCG_BREAKDOWN) then
+            r = x
+            return
+        end if
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+        state%solves = state%solves + 1
+    end subroutine refined_correction
+
+    !> The step along the tangent correction p (contact_line_search): 1 unless springs
+    !> change status on it and the full step fails Armijo's condition on the energy.
+    !>  b : in, the residual the correction was solved for (f_ext - f_int, free equations)
+    !>  p : in, the correction
+    !>  alpha : out, the step; full : out, alpha = 1
+    subroutine line_search(s, map, state, b, p, log, alpha, full, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: b(:), p(:)
+        type(analysis_log_t), intent(inout) :: log
+        real(dp), intent(out) :: alpha
+        logical, intent(out) :: full
+        type(status_t), intent(out) :: st
+        type(choc_line_t), allocatable :: lines(:)
+        integer(i4), allocatable :: active(:), signs(:)
+        real(dp), allocatable :: q(:)
+        type(step_choice_t) :: choice
+        character(len=16) :: buf
+        real(dp) :: scale
+        alpha = 1.0_dp
+        full = .true.
+        if (size(map%springs) == 0 .or. .not. state%fac_valid .or. size(p) == 0) return
+        ! energies in units of scale^2 (the search does not depend on it): no overflow
+        scale = max(maxval(abs(state%u)), maxval(abs(p)))
+        if (.not. scale > 0.0_dp) return
+        allocate (lines(size(map%springs)))
+        state%du = 0.0_dp
+        state%du(map%free_to_eq) = p
+        call spring_lines(s, map, state%u, state%du, scale, lines, st)
+        if (st%failed() .or. .not. any_crossing(lines)) return
+        ! the curvature p^T K_S p of the tangent at u, through the assembled matrix
+        call status_difference(state%closed, state%fac_closed, active, signs)
+        allocate (q(size(p)))
+        call updated_matvec(state%matrix, state%blocks, active, signs, p / scale, q)
+        call choose_step(lines, -dot_product(p / scale, b / scale), dot_product(p / scale, q), &
+            choice)
+        if (.not. choice%damped) return
+        alpha = choice%alpha
+        full = .false.
+        state%damped = state%damped + 1
+        write (buf, '(f8.6)') alpha
+        call log_add(log, '  line search: step ' // trim(adjustl(buf)) // ' of the ' // &
+            'correction (' // to_text(choice%n_crossing) // ' springs change status on it; ' &
+            // trim(merge('the full step raises the energy           ', &
+                          'the full step lowers the energy too little', &
+                          choice%energy_full > 0.0_dp)) // ')')
+    end subroutine line_search
+
+    !> At convergence: an ill-conditioned tangent of the converged contact status is the
+    !> model's own (report_pivots). A converged status whose tangent was only solved
+    !> through another status's factor is factored here when the bound on its digits lost
+    !> (piv%updated_bound + RITZ_DIGITS_MARGIN) passes NPREC, and judged the same way.
+    subroutine judge_converged_tangent(s, map, state, options, piv, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        type(newton_options_t), intent(in) :: options
+        type(step_pivots_t), intent(in) :: piv
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        type(pivot_diagnosis_t) :: diag
+        integer(i4) :: use
+        if (allocated(piv%ill_closed)) then
+            if (all(piv%ill_closed .eqv. state%closed)) then
+                call report_pivots(piv%ill, options%factor, t, log, st)
+                if (st%failed()) return
+            end if
+        end if
+        if (.not. allocated(piv%updated_closed)) return
+        if (.not. all(piv%updated_closed .eqv. state%closed)) return
+        if (factor_holds(state, state%closed)) return
+        if (piv%updated_bound + RITZ_DIGITS_MARGIN <= real(effective_nprec(options%factor), &
+            dp)) return
+        call log_add(log, '  the converged status''s tangent was solved through another ' // &
+            'status''s factor (digits bound ' // real_digits(piv%updated_bound) // &
+            ', NPREC ' // to_text(effective_nprec(options%factor)) // '): factored to judge it')
+        state%tangent_closed = state%closed
+        state%tangent_set = .true.
+        use = MATRIX_TANGENT
+        call factor_and_diagnose(s, map, state, use, t, log, diag, st)
+        if (st%failed()) return
+        if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(options%factor)) &
+            call report_pivots(diag, options%factor, t, log, st)
+    end subroutine judge_converged_tangent
 
     !> The matrix of one iteration, with the pivot rules of doc/analysis.md:
     !>  - tangent with springs open and a FREE pivot (an overshooting iterate, or no
@@ -499,7 +952,7 @@ contains
             call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
                 to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
                 'correction with the elastic matrix')
-            call drop(state, MATRIX_TANGENT)
+            state%tangent_set = .false.
             piv%free_now = .true.
             piv%free_where = diag%where
             use = MATRIX_ELASTIC
@@ -522,16 +975,9 @@ contains
         end if
     end subroutine matrix_for_iteration
 
-    !> Marks matrix `which` as no longer factored (the next use assembles and factors it).
-    subroutine drop(state, which)
-        type(newton_state_t), intent(inout) :: state
-        integer(i4), intent(in) :: which
-        if (state%factored == which) state%factored = MATRIX_NONE
-    end subroutine drop
-
-    !> Assembles and factors the matrix `use` unless the solver's factor already holds it
-    !> (one matrix and one factor per analysis: switching between the elastic and the
-    !> tangent matrix refactors); diag is PIVOT_REGULAR when the factor was reused.
+    !> Assembles and factors the matrix `use` unless the factor already holds a matrix of
+    !> the same contact status (one matrix and one factor per analysis; the same status is
+    !> never factored twice in a row); diag is PIVOT_REGULAR when the factor was reused.
     subroutine factor_and_diagnose(s, map, state, use, t, log, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -542,12 +988,10 @@ contains
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         state%refactored = .false.
-        if (use == state%factored) return
-        state%factored = MATRIX_NONE
-        call assemble_and_factor(s, map, state%u, use == MATRIX_ELASTIC, state%matrix, &
-            state%solver, diag, st, state%linear, state%held, log)
+        if (factor_holds(state, status_of(state, use))) return
+        call factor_status(s, map, state, status_of(state, use), use == MATRIX_ELASTIC, diag, &
+            st, log)
         if (st%failed()) return
-        state%factored = use
         call accumulate_pivots(diag, state%pivots)
         if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(state%solver%options)) &
             call log_add(log, '  INST ' // real_e13(t) // ': pivot ' // &
@@ -556,6 +1000,48 @@ contains
         state%refactored = .true.
         state%factorizations = state%factorizations + 1
     end subroutine factor_and_diagnose
+
+    !> Assembles the matrix of contact status `closed` in place and factors it
+    !> (assemble_and_factor); the factor's status, digits and usability are recorded.
+    !> The tangent is assembled at u (springs at their status there) and the springs whose
+    !> status in `closed` differs get their closed matrix added or removed, so a kept
+    !> tangent of an earlier status is rebuilt as it was.
+    !>  elastic : in, the elastic matrix (closed must then be all .true.)
+    subroutine factor_status(s, map, state, closed, elastic, diag, st, log)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:), elastic
+        type(pivot_diagnosis_t), intent(out) :: diag
+        type(status_t), intent(out) :: st
+        type(analysis_log_t), intent(inout), optional :: log
+        integer(i4), allocatable :: active(:), signs(:)
+        integer(i4) :: k, b, m
+        state%fac_valid = .false.
+        call assemble_stiffness(s, map, state%u, elastic, state%matrix, st, state%linear)
+        if (st%failed()) return
+        if (.not. elastic) then
+            call status_difference(closed, state%closed, active, signs)
+            do k = 1, size(active)
+                b = active(k)
+                m = state%blocks%sizes(b)
+                call sym_add_element(state%matrix, state%blocks%eqs(1:m, b), &
+                    real(signs(k), dp) * state%blocks%k(1:m, 1:m, b), st)
+                if (st%failed()) return
+            end do
+        end if
+        call factor_and_classify(s, map, state%matrix, state%solver, diag, st, state%held, &
+            log)
+        if (st%failed()) return
+        state%fac_valid = .true.
+        state%fac_closed = closed
+        state%fac_usable = diag%kind /= PIVOT_FREE .and. size(state%held%equations) == 0
+        state%fac_digits = diag%digits
+        if (.not. diag%digits_known) state%fac_digits = max(diag%digits, &
+            real(diag%nprec, dp))
+        state%solves_since_factor = 0.0_dp
+        state%last_updated_solves = 0
+    end subroutine factor_status
 
     !> The .mess lines on the numbering: LDLT's renumbering figures (the skyline stores that
     !> envelope), or the method's own ordering.
@@ -599,8 +1085,11 @@ contains
         text = 'SOLVEUR: METHODE ' // trim(solver%options%method) // ', RENUM ' // &
             trim(solver%options%renum) // ', NPREC ' // to_text(options%nprec)
         if (check_disabled(options)) text = text // ' (singularity check off)'
-        call log_add(log, text // ', factor ' // real_short(real(solver%memory_estimate(), &
-            dp) / 1.0e6_dp) // ' MB estimated')
+        text = text // ', factor ' // real_short(real(solver%memory_estimate(), dp) / &
+            1.0e6_dp) // ' MB'
+        if (solver%factor_flops > 0.0_dp) text = text // ', ' // &
+            real_short(solver%factor_flops) // ' flop'
+        call log_add(log, text // ' estimated')
     end subroutine open_solver
 
     !> Solves with the factor; with held equations (check off) the penalty that holds each
@@ -719,11 +1208,25 @@ contains
         type(linear_cache_t), intent(in), optional :: cache
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
+        call assemble_stiffness(s, map, u, elastic, matrix, st, cache)
+        if (st%failed()) return
+        call factor_and_classify(s, map, matrix, solver, diag, st, held, log)
+    end subroutine assemble_and_factor
+
+    !> Factors the assembled matrix without stopping and classifies its pivots
+    !> (classify_pivots); held and log as assemble_and_factor.
+    subroutine factor_and_classify(s, map, matrix, solver, diag, st, held, log)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(sym_matrix_t), intent(in) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
+        type(pivot_diagnosis_t), intent(out) :: diag
+        type(status_t), intent(out) :: st
+        type(held_t), intent(inout), optional :: held
+        type(analysis_log_t), intent(inout), optional :: log
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
-        call assemble_stiffness(s, map, u, elastic, matrix, st, cache)
-        if (st%failed()) return
         largest = 0.0_dp
         if (matrix%n > 0) largest = maxval(abs(sym_diagonal(matrix)))
         call solver%factor(matrix, report, st)
@@ -737,6 +1240,7 @@ contains
         end if
         call classify_pivots(report, pivots, largest, solver%options, diag)
         diag%digits = max(report%max_digits_lost, 0.0_dp)
+        diag%digits_known = report%pivots_known
         diag%digits_at = ''
         if (report%max_digits_equation > 0) diag%digits_at = describe_equation(s%dofs, &
             s%mesh, map%free_to_eq(report%max_digits_equation))
@@ -745,7 +1249,7 @@ contains
         if (diag%kind /= PIVOT_REGULAR) diag%where = describe_equation(s%dofs, s%mesh, &
             map%free_to_eq(diag%n_flagged)) // diag%where
         diag%n_flagged = report%n_flagged
-    end subroutine assemble_and_factor
+    end subroutine factor_and_classify
 
     !> One .mess line per factorization: method, ordering, factor size, memory and time.
     function factorization_line(report) result(text)
@@ -856,10 +1360,7 @@ contains
             .not. all_open .and. .not. stays_free) then
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
-            call assemble_and_factor(s, map, state%u, .false., state%matrix, state%solver, &
-                diag, st, state%linear, state%held)
-            state%factored = MATRIX_NONE
-            if (st%ok()) state%factored = MATRIX_TANGENT
+            call factor_status(s, map, state, state%closed, .false., diag, st)
             if (st%failed()) return
             stays_free = diag%kind == PIVOT_FREE
         end if
@@ -873,10 +1374,7 @@ contains
         else
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
             if (diag%kind == PIVOT_REGULAR) then
-                call assemble_and_factor(s, map, state%u, .false., state%matrix, &
-                    state%solver, diag, st, state%linear, state%held)
-                state%factored = MATRIX_NONE
-                if (st%ok()) state%factored = MATRIX_TANGENT
+                call factor_status(s, map, state, state%closed, .false., diag, st)
             end if
             if (st%failed()) return
             if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
@@ -969,16 +1467,18 @@ contains
     end function real_digits
 
     !> One row of the Newton table.
-    function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, refactored, n_closed, &
+    function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, mode, n_closed, &
                            changed, seconds) result(line)
-        integer(i4), intent(in) :: iter, use, n_closed, changed
+        integer(i4), intent(in) :: iter, use, mode, n_closed, changed
         real(dp), intent(in) :: resi_rela, resi_maxi, seconds
-        logical, intent(in) :: zero_load, refactored
+        logical, intent(in) :: zero_load
         character(len=100) :: line
         character(len=22) :: matrix
         character(len=14) :: rela
+        character(len=9), parameter :: modes(0:2) = [character(len=9) :: ' reused', &
+            ' factored', ' updated']
         matrix = merge('ELASTIQUE', 'TANGENTE ', use == MATRIX_ELASTIC)
-        matrix = trim(matrix) // merge(' factored', ' reused  ', refactored)
+        matrix = trim(matrix) // modes(mode)
         write (rela, '(es14.6)') resi_rela
         if (zero_load) rela = '     undefined'
         write (line, '(i5, 2x, a14, 2x, es14.6, 2x, a22, i6, i8, f9.3)') iter, rela, &
