@@ -47,10 +47,11 @@ module contact_newton
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
-        linear_cache_t, spring_matrices, spring_lines
+        linear_cache_t, spring_matrices, spring_lines, linear_product
     use element_dis_choc, only: choc_line_t
-    use low_rank_update, only: block_set_t, block_set_init, updated_matvec, solve_updated, &
-        factor_cost_in_solves, pcg_options_t, pcg_report_t, PCG_CONVERGED, PCG_BREAKDOWN
+    use low_rank_update, only: block_set_t, block_set_init, pcg_work_t, pcg_begin, &
+        pcg_continue, factor_cost_in_solves, pcg_options_t, pcg_report_t, PCG_CONVERGED, &
+        PCG_BREAKDOWN
     use contact_line_search, only: step_choice_t, choose_step, any_crossing
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
@@ -189,6 +190,7 @@ module contact_newton
         real(dp), allocatable :: u(:), fint(:), fext(:), fn(:)
         real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
+        real(dp), allocatable :: work(:)    !< (n_equations) products of the tangent
         type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
         logical, allocatable :: closed(:)
         type(sym_matrix_t) :: matrix        !< the one assembled matrix, filled in place
@@ -268,7 +270,7 @@ contains
         if (st%failed()) return
         call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
-            state%du(n_eq), source=0.0_dp)
+            state%du(n_eq), state%work(n_eq), source=0.0_dp)
         allocate (state%closed(size(map%springs)), state%fn(size(map%springs)), &
             state%fac_closed(size(map%springs)), state%tangent_closed(size(map%springs)))
         state%nprec = options%factor%nprec
@@ -691,7 +693,7 @@ contains
         if (iterative) then
             target = pcg_target(options, map, state, r, settled)
             if (.not. factor_holds(state, state%tangent_closed)) then
-                call updated_correction(state, target, log, piv, r, done, st)
+                call updated_correction(s, map, state, target, log, piv, r, done, st)
                 if (st%failed()) return
                 if (done) then
                     mode = BY_UPDATED_FACTOR
@@ -747,7 +749,9 @@ contains
     !> .false., r untouched) when that budget is spent, or CG does not converge within it,
     !> breaks down, or its Ritz values leave fewer than FREE_PIVOT_DIGITS - the factor's
     !> digits: the tangent may be singular, its factorization will tell.
-    subroutine updated_correction(state, target, log, piv, r, done, st)
+    subroutine updated_correction(s, map, state, target, log, piv, r, done, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         real(dp), intent(in) :: target
         type(analysis_log_t), intent(inout) :: log
@@ -766,11 +770,9 @@ contains
         budget = state%factor_cost - state%solves_since_factor
         if (budget < real(max(1_i4, state%last_updated_solves), dp)) return
         call status_difference(state%tangent_closed, state%fac_closed, active, signs)
-        allocate (x(size(r)))
         opts%max_iterations = max(1_i4, int(budget, i4))
         opts%tolerance = target
-        call solve_updated(state%solver, state%matrix, state%blocks, active, signs, r, x, &
-            opts, rep, st)
+        call tangent_solve(s, map, state, state%tangent_closed, r, opts, x, rep, st)
         if (st%failed()) return
         state%solves = state%solves + rep%iterations
         state%solves_since_factor = state%solves_since_factor + real(rep%iterations, dp)
@@ -793,12 +795,74 @@ contains
         r = x
         done = .true.
         state%updated = state%updated + 1
+        ! the largest bound seen for this status (short CG runs see fewer Ritz values)
+        if (allocated(piv%updated_closed)) then
+            if (all(piv%updated_closed .eqv. state%tangent_closed)) bound = max(bound, &
+                piv%updated_bound)
+        end if
         piv%updated_closed = state%tangent_closed
         piv%updated_bound = bound
         call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
             'factored status: ' // to_text(rep%iterations) // ' solves (PCG), residual ' // &
             real_short(rep%residual) // ' N, digits bound ' // real_digits(bound))
     end subroutine updated_correction
+
+    !> q = K_S p on the free equations, K_S the tangent of contact status `closed`: every
+    !> cell but the DIS_CHOC springs element by element (linear_product, the arithmetic
+    !> of the residual, so CG can reach the tolerance the residual is judged by), plus the
+    !> closed matrix of each spring closed in `closed`.
+    subroutine tangent_product(s, map, state, closed, p, q, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: p(:)
+        real(dp), intent(out) :: q(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: b, i, j, m, ei, ej
+        real(dp) :: t
+        state%du = 0.0_dp
+        state%du(map%free_to_eq) = p
+        call linear_product(s, map, state%linear, state%du, state%work, st)
+        if (st%failed()) return
+        q = state%work(map%free_to_eq)
+        do b = 1, size(closed, kind=i4)
+            if (.not. closed(b)) cycle
+            m = state%blocks%sizes(b)
+            do i = 1, m
+                ei = state%blocks%eqs(i, b)
+                if (ei == 0) cycle
+                t = 0.0_dp
+                do j = 1, m
+                    ej = state%blocks%eqs(j, b)
+                    if (ej > 0) t = t + state%blocks%k(i, j, b) * p(ej)
+                end do
+                q(ei) = q(ei) + t
+            end do
+        end do
+    end subroutine tangent_product
+
+    !> K_S x = b by CG preconditioned with the factor (low_rank_update), the products
+    !> with K_S by tangent_product: the factor's status may be S (refinement) or another.
+    subroutine tangent_solve(s, map, state, closed, b, options, x, report, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: b(:)
+        type(pcg_options_t), intent(in) :: options
+        real(dp), allocatable, intent(out) :: x(:)
+        type(pcg_report_t), intent(out) :: report
+        type(status_t), intent(out) :: st
+        type(pcg_work_t) :: work
+        logical :: more
+        call pcg_begin(work, state%solver, b, options, report, more, st)
+        do while (more .and. st%ok())
+            call tangent_product(s, map, state, closed, work%p, work%q, st)
+            if (st%ok()) call pcg_continue(work, state%solver, report, more, st)
+        end do
+        call move_alloc(work%x, x)
+    end subroutine tangent_solve
 
     !> A tangent solved with its own factor, refined by CG preconditioned with that factor
     !> (at most REFINE_MAX solves, to `target`); a direct solve if CG breaks down (an
@@ -812,15 +876,12 @@ contains
         type(analysis_log_t), intent(inout) :: log
         real(dp), intent(inout) :: r(:)
         type(status_t), intent(out) :: st
-        integer(i4) :: none(0)
         real(dp), allocatable :: x(:)
         type(pcg_options_t) :: opts
         type(pcg_report_t) :: rep
-        allocate (x(size(r)))
         opts%max_iterations = REFINE_MAX
         opts%tolerance = target
-        call solve_updated(state%solver, state%matrix, state%blocks, none, none, r, x, opts, &
-            rep, st)
+        call tangent_solve(s, map, state, state%tangent_closed, r, opts, x, rep, st)
         if (st%failed()) return
         state%solves = state%solves + rep%iterations
         if (rep%outcome /= PCG_BREAKDOWN) then
@@ -846,7 +907,6 @@ contains
         logical, intent(out) :: full
         type(status_t), intent(out) :: st
         type(choc_line_t), allocatable :: lines(:)
-        integer(i4), allocatable :: active(:), signs(:)
         real(dp), allocatable :: q(:)
         type(step_choice_t) :: choice
         character(len=16) :: buf
@@ -862,10 +922,10 @@ contains
         state%du(map%free_to_eq) = p
         call spring_lines(s, map, state%u, state%du, scale, lines, st)
         if (st%failed() .or. .not. any_crossing(lines)) return
-        ! the curvature p^T K_S p of the tangent at u, through the assembled matrix
-        call status_difference(state%closed, state%fac_closed, active, signs)
+        ! the curvature p^T K_S p of the tangent at u (element by element, as the residual)
         allocate (q(size(p)))
-        call updated_matvec(state%matrix, state%blocks, active, signs, p / scale, q)
+        call tangent_product(s, map, state, state%closed, p / scale, q, st)
+        if (st%failed()) return
         call choose_step(lines, -dot_product(p / scale, b / scale), dot_product(p / scale, q), &
             choice)
         if (.not. choice%damped) return

@@ -18,7 +18,8 @@ module assembly_system
         ORIENT_ANGL_NAUT
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
-        plate_local_stiffness, plate_forces_from_local, rotate_to_global
+        rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
+        expand_plate_blocks
     use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
@@ -64,10 +65,11 @@ module assembly_system
     !> What the incremental forces K_lin du need of each linear cell (plate, plane solid),
     !> built once per analysis by the first internal_forces_incremental call that passes
     !> it: the element equations, node coordinates and the element matrix (plates: local
-    !> frame and local matrix, plane QUAD4: the 8x8 matrix). An iteration then costs one
-    !> small matrix-vector product per cell instead of a rebuilt element stiffness
-    !> (doc/performance.md, "SSNL130 decks"); the forces are bit for bit the same.
-    !> Memory: 24 x 24 reals (4.6 kB) per DKQ cell.
+    !> frame and local matrix by blocks (membrane, bending, drilling: plate_local_blocks),
+    !> plane QUAD4: the 8x8 matrix). An iteration then costs one small matrix-vector
+    !> product per cell instead of a rebuilt element stiffness (doc/performance.md,
+    !> "SSNL130 decks"); the forces are bit for bit the same. Memory: 212 reals (1.7 kB)
+    !> per DKQ cell.
     type, public :: linear_cache_t
         logical :: ready = .false.
         integer(i4), allocatable :: slot(:)         !< (size(map%cells)) cached index, 0 = none
@@ -84,7 +86,7 @@ module assembly_system
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, spring_matrices, &
-        spring_lines
+        spring_lines, linear_product
 
 contains
 
@@ -783,6 +785,44 @@ contains
         end do
     end subroutine spring_lines
 
+    !> The product of the stiffness of every cell but the DIS_CHOC springs with du,
+    !> computed element by element as the incremental forces are (plates and plane solids
+    !> from the cache with each cell's rigid motion removed first, linear springs from
+    !> their matrices): its round-off scales with each element's deformation, not with
+    !> |K| |du| as an assembled product's does, which on a plate ~1e12 times stiffer than
+    !> its springs would swamp the residuals the Newton iteration converges to.
+    !>  cache : inout, the linear cells' matrices (built on the first call if needed)
+    !>  du    : in, (n_equations); f : out, (n_equations)
+    !>  st    : out, element failures, naming the cell
+    subroutine linear_product(s, map, cache, du, f, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        real(dp), intent(in) :: du(:)
+        real(dp), intent(out) :: f(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, n, j, eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: ue(MAX_ELEMENT_DOFS), fn
+        logical :: closed
+        if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
+        if (st%failed()) return
+        f = 0.0_dp
+        call add_cached_linear_forces(cache, du, f)
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            if (cache%slot(k) > 0 .or. s%choc(c)) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call gather_into(du, eqs, n, ue)
+            call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, closed, fn, st)
+            if (st%failed()) return
+            do j = 1, n
+                if (eqs(j) > 0) f(eqs(j)) = f(eqs(j)) + fe(j)
+            end do
+        end do
+    end subroutine linear_product
+
     !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
     !>  st : out, element failures (material, geometry), naming the cell
     subroutine build_linear_cache(s, map, cache, st)
@@ -812,7 +852,11 @@ contains
             nn = s%mesh%cell_ptr(c + 1) - p0
             cache%nn(i) = nn
             cache%x(:, 1:nn, i) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
-            cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
+            if (cache%plate(i)) then
+                cache%k_ptr(i + 1) = cache%k_ptr(i) + plate_block_size(nn)
+            else
+                cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
+            end if
         end do
         allocate (cache%k(cache%k_ptr(nc + 1) - 1), cache%slot(size(map%cells)))
         cache%slot = 0
@@ -851,7 +895,7 @@ contains
                 call plate_local_frame(cache%x(:, 1:nn, i), nn, cache%rot(:, :, i), &
                     cache%xy(:, 1:nn, i), st)
                 if (st%failed()) return
-                call plate_local_stiffness(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
+                call plate_local_blocks(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
                     s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             else
                 x2 = cache%x(1:2, 1:4, i)    ! contiguous copy: no array temporary
@@ -881,7 +925,7 @@ contains
             end do
             if (cache%plate(i)) then
                 call remove_plate_rigid_motion(cache%x(:, 1:nn, i), nn, ue(1:n), ud(1:n))
-                call plate_forces_from_local(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
+                call plate_forces_from_blocks(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
                     cache%k(p:q), ud(1:n), fe(1:n))
             else
                 x2 = cache%x(1:2, 1:4, i)
@@ -899,10 +943,15 @@ contains
         integer(i4), intent(in) :: i
         real(dp), intent(out) :: ke(:, :)
         integer(i8) :: p, q
+        real(dp) :: k24(24, 24), k18(18, 18)     ! contiguous: no array temporaries
         p = cache%k_ptr(i)
         q = cache%k_ptr(i + 1) - 1
-        if (cache%plate(i)) then
-            call rotate_to_global(cache%rot(:, :, i), 2 * cache%nn(i), cache%k(p:q), ke)
+        if (cache%plate(i) .and. cache%nn(i) == 4) then
+            call expand_plate_blocks(4_i4, cache%k(p:q), k24)
+            call rotate_to_global(cache%rot(:, :, i), 8_i4, k24, ke)
+        else if (cache%plate(i)) then
+            call expand_plate_blocks(3_i4, cache%k(p:q), k18)
+            call rotate_to_global(cache%rot(:, :, i), 6_i4, k18, ke)
         else
             ke = reshape(cache%k(p:q), [8, 8])
         end if

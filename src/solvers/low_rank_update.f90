@@ -67,8 +67,17 @@ module low_rank_update
         real(dp) :: ritz_max = 1.0_dp           !< matrix: estimates of A^-1 A_new's
     end type pcg_report_t
 
-    public :: block_set_init, updated_matvec, solve_updated, ritz_extremes, &
-        factor_cost_in_solves
+    !> A CG iteration in progress (pcg_begin, pcg_continue): p is the direction whose
+    !> product the caller puts in q; x the solution so far (in the caller's scale).
+    type, public :: pcg_work_t
+        real(dp), allocatable :: x(:), p(:), q(:)
+        real(dp), allocatable :: r(:), z(:), alphas(:), betas(:)
+        real(dp) :: rz = 0.0_dp, scale = 1.0_dp, tolerance = 0.0_dp
+        integer(i4) :: k = 0, kmax = 1
+    end type pcg_work_t
+
+    public :: block_set_init, updated_matvec, solve_updated, pcg_begin, pcg_continue, &
+        ritz_extremes, factor_cost_in_solves
 
 contains
 
@@ -114,8 +123,8 @@ contains
 
     !> Solves (A + sum_k signs(k) K_active(k)) x = b by CG preconditioned with the factor of
     !> A held by `solver` (module header), from x = 0, until max|b - A_new x| <= tolerance
-    !> (CG's recurrence residual) or max_iterations solves. CG runs on b / max|b| (its dot
-    !> products are then free of overflow and underflow whatever the load's scale).
+    !> (CG's recurrence residual) or max_iterations solves; the products with A_new are
+    !> updated_matvec's (pcg_begin / pcg_continue for products of the caller's own).
     !>  solver : inout, factored with the values of a (its solve is the preconditioner)
     !>  a      : in, the factored matrix
     !>  set, active, signs : in, the update (updated_matvec)
@@ -135,60 +144,104 @@ contains
         type(pcg_options_t), intent(in) :: options
         type(pcg_report_t), intent(out) :: report
         type(status_t), intent(out) :: st
-        real(dp), allocatable :: r(:), z(:), p(:), q(:), alphas(:), betas(:)
-        real(dp) :: rz, rz_new, pq, alpha, beta, scale, tolerance
-        integer(i4) :: k, n, kmax
-        n = size(b, kind=i4)
-        if (size(x) /= n .or. a%n /= n) then
+        type(pcg_work_t) :: work
+        logical :: more
+        if (size(x) /= size(b) .or. a%n /= size(b)) then
             call set_error(st, STATUS_INTERNAL, 'solve_updated: sizes differ')
             return
         end if
-        kmax = max(1_i4, options%max_iterations)
-        allocate (r(n), z(n), p(n), q(n), alphas(kmax), betas(kmax))
-        x = 0.0_dp
+        call pcg_begin(work, solver, b, options, report, more, st)
+        do while (more .and. st%ok())
+            call updated_matvec(a, set, active, signs, work%p, work%q)
+            call pcg_continue(work, solver, report, more, st)
+        end do
+        x = work%x
+    end subroutine solve_updated
+
+    !> Starts CG preconditioned by the factor held by `solver` on A_new x = b, from x = 0
+    !> (reverse communication: the caller owns the products with A_new). CG runs on
+    !> b / max|b|, so its dot products are free of overflow whatever the load's scale.
+    !>  work   : out, the iteration; on return with more = .true. the caller sets
+    !>           work%q = A_new work%p and calls pcg_continue
+    !>  report : out, as solve_updated (iterations counts the solves with the factor)
+    !>  more   : out, .false. when done already (b small enough, or n = 0)
+    subroutine pcg_begin(work, solver, b, options, report, more, st)
+        type(pcg_work_t), intent(out) :: work
+        class(direct_solver_t), intent(inout) :: solver
+        real(dp), intent(in) :: b(:)
+        type(pcg_options_t), intent(in) :: options
+        type(pcg_report_t), intent(out) :: report
+        logical, intent(out) :: more
+        type(status_t), intent(out) :: st
+        integer(i4) :: n
+        n = size(b, kind=i4)
+        work%kmax = max(1_i4, options%max_iterations)
+        allocate (work%x(n), work%r(n), work%z(n), work%p(n), work%q(n), &
+            work%alphas(work%kmax), work%betas(work%kmax))
+        work%x = 0.0_dp
         report%residual = max_abs(b)
         report%iterations = 0
+        more = .false.
         if (report%residual <= options%tolerance .or. n == 0) return
-        scale = report%residual
-        r = b / scale
-        tolerance = options%tolerance / scale
-        z = r
-        call solver%solve(z, st)
+        work%scale = report%residual
+        work%r = b / work%scale
+        work%tolerance = options%tolerance / work%scale
+        work%z = work%r
+        call solver%solve(work%z, st)
         if (st%failed()) return
         report%iterations = 1
-        rz = dot(r, z)
-        p = z
-        do k = 1, kmax
-            call updated_matvec(a, set, active, signs, p, q)
-            pq = dot(p, q)
-            if (.not. (pq > 0.0_dp .and. rz > 0.0_dp)) then
-                report%outcome = PCG_BREAKDOWN
-                x = 0.0_dp
-                return
-            end if
-            alpha = rz / pq
-            x = x + (alpha * scale) * p
-            r = r - alpha * q
-            alphas(k) = alpha
-            report%residual = max_abs(r) * scale
-            call ritz_extremes(alphas(1:k), betas(1:k - 1), report%ritz_min, report%ritz_max)
-            if (max_abs(r) <= tolerance) then
-                report%outcome = PCG_CONVERGED
-                return
-            end if
-            if (k == kmax) exit
-            z = r
-            call solver%solve(z, st)
-            if (st%failed()) return
-            report%iterations = report%iterations + 1
-            rz_new = dot(r, z)
-            beta = rz_new / rz
-            betas(k) = beta
-            rz = rz_new
-            p = z + beta * p
-        end do
-        report%outcome = PCG_MAX_ITERATIONS
-    end subroutine solve_updated
+        work%rz = dot(work%r, work%z)
+        work%p = work%z
+        work%k = 0
+        more = .true.
+    end subroutine pcg_begin
+
+    !> One CG step after the caller set work%q = A_new work%p (pcg_begin).
+    !>  more : out, .true.: set work%q = A_new work%p again and call again; .false.: done
+    !>         (report%outcome; the solution is work%x)
+    subroutine pcg_continue(work, solver, report, more, st)
+        type(pcg_work_t), intent(inout) :: work
+        class(direct_solver_t), intent(inout) :: solver
+        type(pcg_report_t), intent(inout) :: report
+        logical, intent(out) :: more
+        type(status_t), intent(out) :: st
+        real(dp) :: pq, alpha, rz_new, beta
+        integer(i4) :: k
+        more = .false.
+        work%k = work%k + 1
+        k = work%k
+        pq = dot(work%p, work%q)
+        if (.not. (pq > 0.0_dp .and. work%rz > 0.0_dp)) then
+            report%outcome = PCG_BREAKDOWN
+            work%x = 0.0_dp
+            return
+        end if
+        alpha = work%rz / pq
+        work%x = work%x + (alpha * work%scale) * work%p
+        work%r = work%r - alpha * work%q
+        work%alphas(k) = alpha
+        report%residual = max_abs(work%r) * work%scale
+        call ritz_extremes(work%alphas(1:k), work%betas(1:k - 1), report%ritz_min, &
+            report%ritz_max)
+        if (max_abs(work%r) <= work%tolerance) then
+            report%outcome = PCG_CONVERGED
+            return
+        end if
+        if (k == work%kmax) then
+            report%outcome = PCG_MAX_ITERATIONS
+            return
+        end if
+        work%z = work%r
+        call solver%solve(work%z, st)
+        if (st%failed()) return
+        report%iterations = report%iterations + 1
+        rz_new = dot(work%r, work%z)
+        beta = rz_new / work%rz
+        work%betas(k) = beta
+        work%rz = rz_new
+        work%p = work%z + beta * work%p
+        more = .true.
+    end subroutine pcg_continue
 
     !> Extreme eigenvalues of the Lanczos matrix of k CG steps with step lengths alphas(1:k)
     !> and direction updates betas(1:k-1) (Golub & Van Loan 11.3.5): diagonal
