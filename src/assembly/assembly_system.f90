@@ -28,6 +28,7 @@ module assembly_system
     use sparse_matrix, only: sym_matrix_t, sym_pattern_from_elements, sym_zero, &
         sym_add_element, envelope_of_elements
     use renumbering, only: renumber_graph, graph_from_elements
+    use huge_pages, only: advise_huge_pages
     implicit none
     private
 
@@ -859,6 +860,7 @@ contains
             end if
         end do
         allocate (cache%k(cache%k_ptr(nc + 1) - 1), cache%slot(size(map%cells)))
+        call advise_huge_pages(cache%k)
         cache%slot = 0
         i = 0
         do k = 1, size(map%cells)

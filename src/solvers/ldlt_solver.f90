@@ -8,6 +8,7 @@ module ldlt_solver
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_INTERNAL
     use sparse_matrix, only: sym_matrix_t
+    use huge_pages, only: advise_huge_pages
     use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec
     use skyline_matrix, only: skyline_t, skyline_profile_size
     use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t
@@ -57,6 +58,7 @@ contains
         end do
         self%factor_terms = self%sky%diag(a%n)
         allocate (self%sky%values(self%sky%diag(a%n)))
+        call advise_huge_pages(self%sky%values)
         self%sky%profile_ready = .true.
         self%sky%factored = .false.
         self%analysed = .true.
