@@ -198,10 +198,11 @@ module contact_newton
         integer(i4) :: current = MATRIX_NONE    !< matrix of the last iteration
         !> the factor (and the assembled matrix) hold the tangent of status fac_closed
         !> (the elastic matrix = every spring closed); fac_usable: regular, so it can
-        !> precondition; fac_digits: digits its pivots lost (NPREC for MUMPS: a bound)
+        !> precondition; fac_digits: digits its pivots lost, at most (MUMPS, which gives no
+        !> pivots: NPREC) and at least (MUMPS: the digits it reported, 0 when none flagged)
         logical :: fac_valid = .false., fac_usable = .false.
         logical, allocatable :: fac_closed(:)
-        real(dp) :: fac_digits = 0.0_dp
+        real(dp) :: fac_digits = 0.0_dp, fac_digits_low = 0.0_dp
         !> the tangent in use and its contact status (rebuilt every REAC_ITER iterations)
         logical :: tangent_set = .false.
         logical, allocatable :: tangent_closed(:)
@@ -763,7 +764,7 @@ contains
         real(dp), allocatable :: x(:)
         type(pcg_options_t) :: opts
         type(pcg_report_t) :: rep
-        real(dp) :: budget, bound
+        real(dp) :: budget, bound, condition
         character(len=:), allocatable :: why
         done = .false.
         if (.not. (state%fac_valid .and. state%fac_usable)) return
@@ -777,15 +778,16 @@ contains
         state%solves = state%solves + rep%iterations
         state%solves_since_factor = state%solves_since_factor + real(rep%iterations, dp)
         state%last_updated_solves = rep%iterations
-        bound = state%fac_digits + log10(max(rep%ritz_max / max(rep%ritz_min, tiny(1.0_dp)), &
-            1.0_dp))
+        condition = log10(max(rep%ritz_max / max(rep%ritz_min, tiny(1.0_dp)), 1.0_dp))
+        bound = state%fac_digits + condition
         why = ''
         if (rep%outcome == PCG_BREAKDOWN) then
             why = 'the tangent is not positive definite'
         else if (rep%outcome /= PCG_CONVERGED) then
             why = 'no convergence in ' // to_text(rep%iterations) // ' solves'
-        else if (bound >= FREE_PIVOT_DIGITS) then
-            why = 'it may be singular (' // real_digits(bound) // ' digits)'
+        else if (state%fac_digits_low + condition >= FREE_PIVOT_DIGITS) then
+            why = 'it may be singular (' // real_digits(state%fac_digits_low + condition) // &
+                ' digits)'
         end if
         if (len(why) > 0) then
             call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
@@ -1097,6 +1099,7 @@ contains
         state%fac_closed = closed
         state%fac_usable = diag%kind /= PIVOT_FREE .and. size(state%held%equations) == 0
         state%fac_digits = diag%digits
+        state%fac_digits_low = diag%digits
         if (.not. diag%digits_known) state%fac_digits = max(diag%digits, &
             real(diag%nprec, dp))
         state%solves_since_factor = 0.0_dp
