@@ -50,10 +50,15 @@ class CaseError(Exception):
 
 
 def case_args(model="a", nx=4, ny=16, newton="tangente", resi=1e-6, renum="RCMK", nprec=11,
-              iter_max=10):
-    """Options of tools/make_ssnl130_case.py for one case (one step to INST 1, no lift)."""
+              iter_max=10, methode="LDLT"):
+    """Options of tools/make_ssnl130_case.py for one case (one step to INST 1, no lift).
+
+    renum None: the method's default ordering (RCMK for LDLT, METIS for MULT_FRONT, AUTO
+    for MUMPS)."""
     args = ["--model", model, "--ny", str(ny), "--newton", newton, "--resi", repr(resi),
-            "--renum", renum, "--nprec", str(nprec), "--iter-max", str(iter_max)]
+            "--methode", methode, "--nprec", str(nprec), "--iter-max", str(iter_max)]
+    if renum is not None:
+        args += ["--renum", renum]
     if model == "a":
         args += ["--nx", str(nx)]
     return args
