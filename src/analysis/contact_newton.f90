@@ -1,4 +1,4 @@
-!> STAT_NON_LINE core: quasi-static time stepping with DIS_CHOC springs (design.md,
+!> STAT_NON_LINE core: quasi-static time stepping with DIS_CHOC / DIS_CONTACT springs (design.md,
 !> "STAT_NON_LINE"; Code_Aster U4.51.03 for the NEWTON/CONVERGENCE keywords).
 !>
 !> Per step (instant t+): imposed values and external forces at t+; then iterations
@@ -34,7 +34,8 @@ module contact_newton
         factor_report_t
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
-        linear_cache_t
+        linear_cache_t, contact_history_t, contact_history_start, contact_history_update, &
+        is_dis_contact
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
@@ -122,9 +123,14 @@ module contact_newton
         real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
         type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
+        type(contact_history_t) :: history  !< DIS_CONTACT springs at the start of the step
         logical, allocatable :: closed(:)
         type(skyline_t) :: elastic, tangent
         logical :: have_elastic = .false., have_tangent = .false.
+        integer(i4) :: elastic_kind = PIVOT_REGULAR   !< pivot class of the elastic matrix
+        !> DIS_CHOC springs present: every correction uses the tangent, rebuilt (Code_Aster)
+        logical :: forced_tangent = .false.
+        real(dp), allocatable :: u_start(:)  !< u at the start of the step (prediction point)
         integer(i4) :: current = MATRIX_NONE
         integer(i4) :: factorizations = 0
         logical :: refactored = .false.
@@ -180,12 +186,24 @@ contains
         lines = renumbering_lines(map)
         call log_add(log, lines(1))
         call log_add(log, lines(2))
-        call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
+        call log_add(log, to_text(size(map%springs)) // ' ' // spring_law(s, map) // ' springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
             state%du(n_eq), source=0.0_dp)
         allocate (state%closed(size(map%springs)), state%fn(size(map%springs)))
         state%nprec = options%factor%nprec
-        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+        call contact_history_start(s, map, state%history, st)
+        if (st%failed()) return
+        call warn_unpressed_dis_contact(s, map, state%history, log)
+        state%forced_tangent = .false.
+        do k = 1, size(map%springs)
+            if (.not. is_dis_contact(s, map%springs(k))) state%forced_tangent = .true.
+        end do
+        if (state%forced_tangent .and. (options%matrix_elastic .or. options%reac_iter /= 1)) &
+            call log_add(log, 'DIS_CHOC springs: the corrections use the tangent matrix, ' // &
+            'rebuilt at every iteration (REAC_ITER = 1), whatever NEWTON/MATRICE and ' // &
+            'REAC_ITER say, as Code_Aster does (its message MECANONLINE5_5)')
+        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st, &
+            state%history)
         if (st%failed()) return
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
@@ -282,10 +300,10 @@ contains
         call log_add(log, 'INST ' // real_e13(t) // ' (step ' // to_text(step) // ')')
         call log_add(log, ' ITER  RESI_GLOB_RELA  RESI_GLOB_MAXI  MATRIX                ' // &
             'CLOSED CHANGED  TIME(s)')
-        state%du = state%u
+        state%u_start = state%u
         call loads_at(s, excit, t, state%u, state%fext, st)
         if (st%failed()) return
-        state%du = state%u - state%du
+        state%du = state%u - state%u_start
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
             resi_history(0:options%iter_glob_maxi), r(map%n_free))
@@ -293,13 +311,18 @@ contains
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
+        ! Prediction (Code_Aster nmprta/nsassp): the imposed-value increments enter through
+        ! the prediction matrix, K du = f_ext(t+) - f_int(t-) - K du_imposed, i.e. the springs
+        ! are linearised about the start of the step (doc/analysis.md, "Prediction").
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
-            state%closed, state%fn, st, state%linear)
+            state%closed, state%fn, st, state%linear, u_ref=state%u_start, &
+            elastic_ref=prediction_is_elastic(options), history=state%history)
         if (st%failed()) return
         do iter = 0, options%iter_glob_maxi
             call system_clock(t0, rate)
             use = choose_matrix(options, iter, step, state)
-            call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)
+            call matrix_for_iteration(s, map, state, use, iter == 0, options%factor, t, log, &
+                piv, st)
             if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
             if (use == MATRIX_ELASTIC) call skyline_solve(state%elastic, r, st)
@@ -310,7 +333,7 @@ contains
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st, state%linear)
+                state%fint, state%closed, state%fn, st, state%linear, history=state%history)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
@@ -366,6 +389,7 @@ contains
                 if (st%failed()) return
             end if
         end if
+        call contact_history_update(s, map, state%u, state%fn, state%history)
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
             to_text(count(state%closed, kind=i4)) // ' of ' // to_text(size(state%closed)) // &
@@ -408,24 +432,37 @@ contains
             resi_maxi <= options%resi_glob_maxi
     end function criteria_met
 
+    !> The prediction's matrix: PREDICTION, or MATRICE when PREDICTION is not given.
+    pure logical function prediction_is_elastic(options) result(elastic)
+        type(newton_options_t), intent(in) :: options
+        elastic = options%matrix_elastic
+        if (options%prediction_given) elastic = options%prediction_elastic
+    end function prediction_is_elastic
+
     !> Which matrix iteration `iter` of step `step` uses; marks a tangent to rebuild by
-    !> dropping it (factor_and_diagnose then assembles and factors).
+    !> dropping it (factor_and_diagnose then assembles and factors). With DIS_CHOC springs
+    !> (state%forced_tangent) Code_Aster rebuilds the tangent at every correction and every
+    !> tangent prediction, whatever MATRICE, REAC_ITER and REAC_INCR say (NonLinear_module:
+    !> getMatrTypeCorr turns the correction matrix to TANGENTE, isMatrUpdate forces the
+    !> update; message MECANONLINE5_5).
     integer(i4) function choose_matrix(options, iter, step, state) result(use)
         type(newton_options_t), intent(in) :: options
         integer(i4), intent(in) :: iter, step
         type(newton_state_t), intent(inout) :: state
-        logical :: elastic
         if (iter == 0) then
-            elastic = options%matrix_elastic
-            if (options%prediction_given) elastic = options%prediction_elastic
-            if (elastic) then
+            if (prediction_is_elastic(options)) then
                 use = MATRIX_ELASTIC
             else
                 use = MATRIX_TANGENT
-                if (options%reac_incr > 0) then
+                if (state%forced_tangent) then
+                    state%have_tangent = .false.
+                else if (options%reac_incr > 0) then
                     if (mod(step - 1, options%reac_incr) == 0) state%have_tangent = .false.
                 end if
             end if
+        else if (state%forced_tangent) then
+            use = MATRIX_TANGENT
+            state%have_tangent = .false.
         else if (options%matrix_elastic) then
             use = MATRIX_ELASTIC
         else
@@ -443,38 +480,51 @@ contains
     !> The matrix of one iteration, with the pivot rules of doc/analysis.md:
     !>  - tangent with springs open and a FREE pivot (an overshooting iterate, or no
     !>    equilibrium): this correction uses the elastic matrix (every spring closed,
-    !>    regular when the supports exist) and piv%n_free counts such iterations;
+    !>    regular when the supports exist) and piv%n_free counts such iterations; unless
+    !>    the elastic matrix is free too: then the free motion is the structure's own (a
+    !>    plate's in-plane motion on vertical springs), not the open springs', and the
+    !>    tangent is used with its pivot reported like any other;
     !>  - tangent with springs open and an ILL-CONDITIONED pivot: used; judged at
     !>    convergence (newton_step) if the converged status is the same;
     !>  - otherwise a flagged matrix goes to report_pivots (STATUS_SINGULAR or a warning).
-    !>  use : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
-    subroutine matrix_for_iteration(s, map, state, use, options, t, log, piv, st)
+    !>  use        : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
+    !>  prediction : in, iteration 0: a tangent is assembled at the start of the step
+    subroutine matrix_for_iteration(s, map, state, use, prediction, options, t, log, piv, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(inout) :: use
+        logical, intent(in) :: prediction
         type(factor_options_t), intent(in) :: options
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(step_pivots_t), intent(inout) :: piv
         type(status_t), intent(out) :: st
-        type(pivot_diagnosis_t) :: diag
-        logical :: open_springs
-        call factor_and_diagnose(s, map, state, use, t, log, diag, st)
+        type(pivot_diagnosis_t) :: diag, elastic_diag
+        logical :: open_springs, tangent_factored
+        call factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
         if (st%failed()) return
         open_springs = .not. all(state%closed)
         piv%free_now = .false.
         if (diag%kind == PIVOT_FREE .and. use == MATRIX_TANGENT .and. open_springs) then
-            call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
-                to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
-                'correction with the elastic matrix')
-            state%have_tangent = .false.
-            piv%free_now = .true.
-            piv%free_where = diag%where
-            use = MATRIX_ELASTIC
-            call factor_and_diagnose(s, map, state, use, t, log, diag, st)
+            tangent_factored = state%refactored
+            call factor_and_diagnose(s, map, state, MATRIX_ELASTIC, prediction, t, log, &
+                elastic_diag, st)
             if (st%failed()) return
-            if (diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, t, log, st)
+            if (state%elastic_kind == PIVOT_FREE) then
+                state%refactored = tangent_factored .or. state%refactored
+                call report_pivots(diag, options, t, log, st)
+            else
+                call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
+                    to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
+                    'correction with the elastic matrix')
+                state%have_tangent = .false.
+                piv%free_now = .true.
+                piv%free_where = diag%where
+                use = MATRIX_ELASTIC
+                if (elastic_diag%kind /= PIVOT_REGULAR) call report_pivots(elastic_diag, &
+                    options, t, log, st)
+            end if
         else if (diag%kind == PIVOT_ILL_CONDITIONED .and. use == MATRIX_TANGENT .and. &
                  open_springs) then
             call log_add(log, '  tangent matrix ill-conditioned at ' // diag%where // &
@@ -492,12 +542,15 @@ contains
     end subroutine matrix_for_iteration
 
     !> Assembles and factors the matrix `use` if it is not ready (see assemble_and_factor);
-    !> diag is PIVOT_REGULAR when the matrix was reused.
-    subroutine factor_and_diagnose(s, map, state, use, t, log, diag, st)
+    !> diag is PIVOT_REGULAR when the matrix was reused (state%elastic_kind keeps the class
+    !> of the elastic matrix). A prediction's tangent is the one at the start of the step,
+    !> before the imposed-value increments (Code_Aster nmprta: zero increment).
+    subroutine factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(in) :: use
+        logical, intent(in) :: prediction
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(pivot_diagnosis_t), intent(out) :: diag
@@ -507,11 +560,16 @@ contains
         if (use == MATRIX_TANGENT .and. state%have_tangent) return
         if (use == MATRIX_ELASTIC) then
             call assemble_and_factor(s, map, state%u, .true., state%elastic, state%nprec, &
-                diag, st, state%linear)
+                diag, st, state%linear, state%history)
             state%have_elastic = st%ok()
+            state%elastic_kind = diag%kind
+        else if (prediction) then
+            call assemble_and_factor(s, map, state%u_start, .false., state%tangent, &
+                state%nprec, diag, st, state%linear, state%history)
+            state%have_tangent = st%ok()
         else
             call assemble_and_factor(s, map, state%u, .false., state%tangent, state%nprec, &
-                diag, st, state%linear)
+                diag, st, state%linear, state%history)
             state%have_tangent = st%ok()
         end if
         if (st%failed()) return
@@ -547,7 +605,8 @@ contains
     !>  nprec : in, SOLVEUR/NPREC (0 = Code_Aster's default 8)
     !>  diag  : out, PIVOT_REGULAR, PIVOT_ILL_CONDITIONED or PIVOT_FREE, and where
     !>  cache : in, optional, the plate/plane matrices (assemble_stiffness)
-    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st, cache)
+    !>  history : in, optional, DIS_CONTACT state at the start of the step
+    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st, cache, history)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -557,13 +616,14 @@ contains
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         type(linear_cache_t), intent(in), optional :: cache
+        type(contact_history_t), intent(in), optional :: history
         type(factor_options_t) :: lenient
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
         lenient%nprec = nprec
         lenient%stop_singular = .false.
-        call assemble_stiffness(s, map, u, elastic, sky, st, cache)
+        call assemble_stiffness(s, map, u, elastic, sky, st, cache, history)
         if (st%failed()) return
         largest = 0.0_dp
         if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
@@ -681,21 +741,21 @@ contains
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
             call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st, &
-                state%linear)
+                state%linear, state%history)
             if (st%failed()) return
             stays_free = diag%kind == PIVOT_FREE
         end if
         if (.not. ((all_open .and. stalled) .or. stays_free)) return
         text = 'INST ' // real_e13(t) // ': no equilibrium: ' // &
             to_text(count(.not. state%closed, kind=i4)) // ' of ' // &
-            to_text(size(state%closed)) // ' DIS_CHOC springs are open (' // &
+            to_text(size(state%closed)) // ' ' // spring_law(s, map) // ' springs are open (' // &
             spring_group(s, map) // ') and the structure is left free'
         if (allocated(piv%free_where)) then
             text = text // ': rigid motion at ' // piv%free_where
         else
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
             if (diag%kind == PIVOT_REGULAR) call assemble_and_factor(s, map, state%u, &
-                .false., sky, state%nprec, diag, st, state%linear)
+                .false., sky, state%nprec, diag, st, state%linear, state%history)
             if (st%failed()) return
             if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
         end if
@@ -703,7 +763,47 @@ contains
             real_e13(resi_maxi) // ' N no longer decreases')
     end subroutine check_no_equilibrium
 
-    !> The cell group made of exactly the DIS_CHOC springs ("group G"), else the first
+    !> A DIS_CONTACT spring that does not start pressed (DIST_1 + DIST_2 <= its length, so
+    !> F- = 0 before the first step) never gets a force in a static analysis: Code_Aster's
+    !> law only follows a compression it already has (element_dis_contact). parasol computes
+    !> the same, and says so once in the .mess, naming the first such spring.
+    subroutine warn_unpressed_dis_contact(s, map, history, log)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(contact_history_t), intent(in) :: history
+        type(analysis_log_t), intent(inout) :: log
+        integer(i4) :: k, n, first
+        n = 0
+        first = 0
+        do k = 1, size(map%springs)
+            if (.not. is_dis_contact(s, map%springs(k))) cycle
+            if (history%fn0(k) < 0.0_dp) cycle
+            n = n + 1
+            if (first == 0) first = map%springs(k)
+        end do
+        if (n == 0) return
+        call log_add(log, 'warning: ' // to_text(n) // ' DIS_CONTACT spring(s) (first ' // &
+            cell_name(s%mesh, first) // ') do not start pressed (DIST_1 + DIST_2 <= their ' // &
+            'length): in a static analysis the DIS_CONTACT law, as Code_Aster integrates it, ' // &
+            'never gives them a force; DIS_CHOC, or DIST_1 + DIST_2 above the length, would')
+    end subroutine warn_unpressed_dis_contact
+
+    !> The springs' law for messages: DIS_CHOC, DIS_CONTACT, or "contact" when mixed.
+    function spring_law(s, map) result(text)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        character(len=:), allocatable :: text
+        integer(i4) :: k, n_contact
+        n_contact = 0
+        do k = 1, size(map%springs)
+            if (is_dis_contact(s, map%springs(k))) n_contact = n_contact + 1
+        end do
+        text = 'DIS_CHOC'
+        if (n_contact == size(map%springs) .and. n_contact > 0) text = 'DIS_CONTACT'
+        if (n_contact > 0 .and. n_contact < size(map%springs)) text = 'contact'
+    end function spring_law
+
+    !> The cell group made of exactly the contact springs ("group G"), else the first
     !> spring's name ("from cell C").
     function spring_group(s, map) result(text)
         type(structure_t), intent(in) :: s

@@ -297,7 +297,7 @@ contains
         call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
         call c%end_fact()
         call c%fact('COMPORTEMENT', max=MANY, req=.true.)
-        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC')
+        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC DIS_CONTACT')
         call c%key('DEFORMATION', 'TXM', def='PETIT', into='PETIT')
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
@@ -323,7 +323,6 @@ contains
         call c%key('RESI_GLOB_MAXI', 'R')
         call c%key('ITER_GLOB_MAXI', 'I', def='10')       ! Code_Aster default
         call c%key('ARRET', 'TXM', def='OUI', into=OUI_NON)
-        call c%rule(RULE_EXCLUS, 'RESI_GLOB_RELA RESI_GLOB_MAXI')
         call c%end_fact()
         call describe_solver(c)
         call c%key('INFO', 'I', def='1', into='1 2')

@@ -11,8 +11,9 @@
 !> function concept owned by the run context (the deck's symbol table): the load set never
 !> owns or frees it, and it must not outlive the run context. Functions are bound to the
 !> parameter names LOAD_PARAMETERS once, when the slot is set.
-!> Distributed loads are evaluated at the element's integration points (assembly layer),
-!> nodal ones at the node, always with INST = the end of the step.
+!> Plate loads are evaluated at the cell's nodes, edge loads at the edge's Gauss points
+!> (assembly layer, as Code_Aster), nodal ones at the node, always with INST = the end of the
+!> step.
 module model_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
