@@ -21,6 +21,7 @@ module analysis_commands
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
     use assembly_system, only: structure_t, structure_check
+    use assembly_loads, only: check_imposed_owners
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
@@ -50,7 +51,7 @@ contains
         real(dp), allocatable :: times(:)
         integer(i4) :: k
         call gather_structure(cmd, s, st)
-        if (st%ok()) call gather_excitations(cmd, excit, st)
+        if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_behaviour(cmd, s, st)
         if (st%ok()) call read_increment(cmd, times, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
@@ -88,7 +89,7 @@ contains
         class(concept_t), pointer :: p
         integer(i4) :: k
         call gather_structure(cmd, s, st)
-        if (st%ok()) call gather_excitations(cmd, excit, st)
+        if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
         allocate (s%choc(s%mesh%n_cells), source=.false.)
@@ -160,14 +161,19 @@ contains
         end if
     end subroutine gather_structure
 
-    !> EXCIT occurrences: CHARGE (char_meca) and optional FONC_MULT.
-    subroutine gather_excitations(cmd, excit, st)
+    !> EXCIT occurrences: CHARGE (char_meca, or char_cine_meca of AFFE_CHAR_CINE) and
+    !> optional FONC_MULT. An equation imposed by an AFFE_CHAR_CINE and by another load is an
+    !> error at the later EXCIT's CHARGE (check_imposed_owners).
+    subroutine gather_excitations(cmd, s, excit, st)
         type(command_t), intent(in) :: cmd
+        type(structure_t), intent(in) :: s
         type(excitation_t), allocatable, intent(out) :: excit(:)
         type(status_t), intent(out) :: st
         type(keyword_set_t) :: occ
         class(concept_t), pointer :: p
         integer(i4) :: k
+        integer(i4), allocatable :: owner(:)
+        allocate (owner(s%dofs%n_equations), source=0_i4)
         allocate (excit(cmd%count('EXCIT')))
         do k = 1, size(excit)
             occ = cmd%occurrence('EXCIT', k)
@@ -176,6 +182,11 @@ contains
             select type (p)
             type is (char_meca_concept_t)
                 excit(k)%load => p%loads
+                call check_imposed_owners(s, p%loads, k, owner, st)
+                if (st%failed()) then
+                    call occ%error_at('CHARGE', st%message, st, code=STATUS_MODEL_ERROR)
+                    return
+                end if
             class default
                 call occ%error_at('CHARGE', 'expected a load (char_meca), got ' // &
                     p%type_name(), st)

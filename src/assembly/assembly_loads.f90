@@ -6,7 +6,7 @@
 module assembly_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use strings, only: real_e13
+    use strings, only: real_e13, to_text
     use mesh_types, only: cell_label, node_name
     use model_types, only: is_plate, is_plane_edge
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS
@@ -19,7 +19,7 @@ module assembly_loads
     implicit none
     private
 
-    public :: mark_imposed, impose_values, add_external_forces
+    public :: mark_imposed, impose_values, add_external_forces, check_imposed_owners
 
 contains
 
@@ -39,6 +39,7 @@ contains
                     do comp = 1, N_COMPONENTS
                         if (.not. item%values(comp)%given) cycle
                         eq = s%dofs%equation(comp, item%nodes(i))
+                        if (eq <= 0 .and. item%blocage) cycle
                         if (eq <= 0) then
                             call set_error(st, STATUS_MODEL_ERROR, 'DDL_IMPO: node ' // &
                                 node_name(s%mesh, item%nodes(i)) // ' has no component ' // &
@@ -51,6 +52,49 @@ contains
             end associate
         end do
     end subroutine mark_imposed
+
+    !> Records which load imposes each equation and refuses an equation imposed by a
+    !> kinematic load (AFFE_CHAR_CINE) and by another load: Code_Aster cannot eliminate an
+    !> equation and dualise it too (nor combine two eliminations of it), and the values could
+    !> differ. Repeats inside one load are left to that load (the last value wins).
+    !>  load  : in, the load set of EXCIT occurrence `which`
+    !>  owner : inout, (n_equations) the EXCIT occurrence imposing each equation (0: none);
+    !>          negative for a kinematic load
+    !>  st    : out, STATUS_MODEL_ERROR naming the node and component
+    subroutine check_imposed_owners(s, load, which, owner, st)
+        type(structure_t), intent(in) :: s
+        type(load_set_t), intent(in) :: load
+        integer(i4), intent(in) :: which
+        integer(i4), intent(inout) :: owner(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, i, comp, eq, me
+        me = which
+        if (load%kinematic) me = -which
+        do k = 1, load%n_items
+            if (load%items(k)%kind /= LOAD_DDL_IMPO) cycle
+            associate (item => load%items(k))
+                do i = 1, size(item%nodes)
+                    do comp = 1, N_COMPONENTS
+                        if (.not. item%values(comp)%given) cycle
+                        eq = s%dofs%equation(comp, item%nodes(i))
+                        if (eq <= 0) cycle
+                        if (owner(eq) /= 0 .and. owner(eq) /= me .and. &
+                            (owner(eq) < 0 .or. me < 0)) then
+                            call set_error(st, STATUS_MODEL_ERROR, 'node ' // &
+                                node_name(s%mesh, item%nodes(i)) // ' component ' // &
+                                trim(COMPONENT_NAMES(comp)) // ' is imposed by EXCIT ' // &
+                                'occurrences ' // to_text(abs(owner(eq))) // ' and ' // &
+                                to_text(which) // ', one of them an AFFE_CHAR_CINE: ' // &
+                                'an eliminated value must be imposed once (remove it from ' // &
+                                'one load)')
+                            return
+                        end if
+                        owner(eq) = me
+                    end do
+                end do
+            end associate
+        end do
+    end subroutine check_imposed_owners
 
     !> Writes the DDL_IMPO values at time t (times factor) into u.
     subroutine impose_values(s, load, t, factor, u, st)
