@@ -1,8 +1,9 @@
 !> Loads of a static analysis on the original equations: which equations DDL_IMPO imposes,
 !> their values at an instant, and the external force vector at an instant (FORCE_NODALE
 !> at nodes; FORCE_COQUE / PRES_REP known at the plate's nodes and FORCE_CONTOUR at the
-!> edge's Gauss points, as Code_Aster discretises them: element_loads, design.md "Loads"). Every value is multiplied by the
-!> FONC_MULT factor of its EXCIT occurrence (evaluated by the caller at the instant).
+!> edge's Gauss points, as Code_Aster discretises them: element_loads, design.md "Loads").
+!> Every value is multiplied by the FONC_MULT factor of its EXCIT occurrence (evaluated by
+!> the caller at the instant).
 module assembly_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR

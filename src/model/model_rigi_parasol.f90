@@ -124,8 +124,9 @@ contains
     !>  vale         : in, KX, KY, KZ for DIS_T springs, KX, KY for 2D_DIS_T springs
     !>  table        : out, one row per raft node, in increasing node number
     !>  st           : out, STATUS_MODEL_ERROR for: unknown or misfitting CARA (K_TR_*: no
-    !>                 DIS_TR), a VALE count other than 3 (3D) / 2 (2D), zero total measure, a spring with no node on
-    !>                 the raft, a raft node without or with two springs, count mismatch
+    !>                 DIS_TR), a VALE count other than 3 (3D) / 2 (2D), zero total measure,
+    !>                 a spring with no node on the raft, a raft node without or with two
+    !>                 springs, count mismatch
     subroutine compute_rigi_parasol(model, mesh, raft_cells, coefficients, spring_cells, &
                                     cara_name, vale, table, st, spring_group)
         type(model_t), intent(in) :: model
