@@ -28,6 +28,26 @@ contains
     subroutine describe_session(c)
         type(catalog_t), intent(inout) :: c
         call c%command('DEBUT', '')
+        call describe_session_bookkeeping(c)
+
+        ! POURSUITE (U4.11.03): continues the session of the previous command file; its
+        ! keywords steer Code_Aster's database and messages, as DEBUT's do.
+        call c%command('POURSUITE', '')
+        call describe_session_bookkeeping(c)
+        call c%key('FORMAT_HDF', 'TXM', into=OUI_NON, noop=.true.)
+
+        call c%command('FIN', '')
+        call c%key('FORMAT_HDF', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('RETASSAGE', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('INFO_RESU', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('PROC0', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('UNITE', 'I', noop=.true.)
+    end subroutine describe_session
+
+    !> The bookkeeping keywords DEBUT and POURSUITE share (U4.11.01, U4.11.03): accepted,
+    !> no effect in parasol.
+    subroutine describe_session_bookkeeping(c)
+        type(catalog_t), intent(inout) :: c
         call c%key('CODE', 'ANY', min=0, max=MANY, noop=.true.)
         call c%key('DEBUG', 'ANY', min=0, max=MANY, noop=.true.)
         call c%key('PAR_LOT', 'TXM', into=OUI_NON, noop=.true.)
@@ -38,14 +58,7 @@ contains
         call c%key('RESERVE_CPU', 'ANY', min=0, max=MANY, noop=.true.)
         call c%key('IGNORE_ALARM', 'TXM', max=MANY, noop=.true.)
         call c%key('INFO', 'I', into='1 2', noop=.true.)
-
-        call c%command('FIN', '')
-        call c%key('FORMAT_HDF', 'TXM', into=OUI_NON, noop=.true.)
-        call c%key('RETASSAGE', 'TXM', into=OUI_NON, noop=.true.)
-        call c%key('INFO_RESU', 'TXM', into=OUI_NON, noop=.true.)
-        call c%key('PROC0', 'TXM', into=OUI_NON, noop=.true.)
-        call c%key('UNITE', 'I', noop=.true.)
-    end subroutine describe_session
+    end subroutine describe_session_bookkeeping
 
     subroutine describe_mesh_and_model(c)
         type(catalog_t), intent(inout) :: c
@@ -364,13 +377,13 @@ contains
         call c%end_fact()
     end subroutine describe_analyses
 
-    !> SOLVEUR factor keyword of the analyses (defaults: Code_Aster's NPREC=8,
-    !> STOP_SINGULIER='OUI'; parasol's default method is its own LDLT skyline).
+    !> SOLVEUR factor keyword of the analyses (defaults as Code_Aster's: METHODE='MUMPS',
+    !> NPREC=8, STOP_SINGULIER='OUI'; RENUM's default depends on the method).
     subroutine describe_solver(c)
         type(catalog_t), intent(inout) :: c
         call c%fact('SOLVEUR')
-        call c%key('METHODE', 'TXM', def='MULT_FRONT', into='LDLT MULT_FRONT MUMPS')
-        call c%key('RENUM', 'TXM', into='RCMK METIS SANS AMD AMF PORD SCOTCH QAMD AUTO')
+        call c%key('METHODE', 'TXM', def='MUMPS', into='LDLT MULT_FRONT MUMPS')
+        call c%key('RENUM', 'TXM', into='RCMK METIS SANS AMD MD AMF PORD SCOTCH QAMD AUTO')
         call c%key('NPREC', 'I', def='8')
         call c%key('STOP_SINGULIER', 'TXM', def='OUI', into=OUI_NON)
         call c%key('ELIM_LAGR', 'TXM', noop=.true.)
@@ -379,7 +392,7 @@ contains
         call c%key('RESI_RELA', 'R', noop=.true.)
         call c%key('POSTTRAITEMENTS', 'TXM', noop=.true.)
         call c%key('TYPE_RESOL', 'TXM', noop=.true.)
-        call c%key('ACCELERATION', 'TXM', noop=.true.)          ! MUMPS tuning
+        call c%key('ACCELERATION', 'TXM', into='AUTO FR FR+ FR++ LR LR+ LR++')  ! MUMPS
         call c%key('LOW_RANK_SEUIL', 'R', noop=.true.)
         call c%key('MATR_DISTRIBUEE', 'TXM', noop=.true.)
         call c%key('PRETRAITEMENTS', 'TXM', noop=.true.)
