@@ -355,7 +355,8 @@ contains
                 piv, st)
             if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
-            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+            call solve_correction(s, map, state, use, iter == 0, options%factor, r, t, log, &
+                piv, st)
             if (st%failed()) return
             if (piv%free_now) then
                 piv%n_free = piv%n_free + 1
@@ -524,8 +525,11 @@ contains
     !>  - tangent with springs open and an ILL-CONDITIONED pivot: used; judged at
     !>    convergence (newton_step) if the converged status is the same;
     !>  - otherwise a flagged matrix goes to report_pivots (STATUS_SINGULAR or a warning).
-    !> With the singularity check off (METHODE='MUMPS', NPREC < 0) free pivots are held by
-    !> the solver and judged after the solve (solve_held), and nothing else is reported.
+    !> With the singularity check off (METHODE='MUMPS', NPREC < 0) the solver holds the free
+    !> pivots and nothing is reported here: a free tangent (held equations) with springs open
+    !> follows the first rule all the same, except that when the elastic matrix holds
+    !> equations too, the load decides after the solve (solve_correction): the structure's
+    !> own free motion is unloaded, the overshoot's is loaded.
     !>  use        : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
     !>  prediction : in, iteration 0: a tangent is assembled at the start of the step
     subroutine matrix_for_iteration(s, map, state, use, prediction, options, t, log, piv, st)
@@ -540,12 +544,12 @@ contains
         type(step_pivots_t), intent(inout) :: piv
         type(status_t), intent(out) :: st
         type(pivot_diagnosis_t) :: diag, elastic_diag, again
-        logical :: open_springs, tangent_factored
+        logical :: open_springs, tangent_factored, check_off
         call factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
         if (st%failed()) return
         open_springs = .not. all(state%closed)
+        check_off = check_disabled(options)
         piv%free_now = .false.
-        if (check_disabled(options)) return
         if (diag%kind == PIVOT_FREE .and. use == MATRIX_TANGENT .and. open_springs) then
             tangent_factored = state%refactored
             if (state%elastic_kind == PIVOT_UNKNOWN) then
@@ -555,7 +559,7 @@ contains
                 state%refactored = tangent_factored .or. state%refactored
             end if
             if (state%elastic_kind == PIVOT_FREE) then
-                call report_pivots(diag, options, t, log, st)
+                if (.not. check_off) call report_pivots(diag, options, t, log, st)
                 if (st%failed()) return
                 ! the factor may hold the elastic matrix just classified: back to the tangent
                 tangent_factored = state%refactored
@@ -576,9 +580,11 @@ contains
                     if (st%failed()) return
                     state%refactored = tangent_factored .or. state%refactored
                 end if
-                if (elastic_diag%kind /= PIVOT_REGULAR) call report_pivots(elastic_diag, &
-                    options, t, log, st)
+                if (elastic_diag%kind /= PIVOT_REGULAR .and. .not. check_off) &
+                    call report_pivots(elastic_diag, options, t, log, st)
             end if
+        else if (check_off) then
+            ! nothing else is reported: held equations are judged after the solve
         else if (diag%kind == PIVOT_ILL_CONDITIONED .and. use == MATRIX_TANGENT .and. &
                  open_springs) then
             call log_add(log, '  tangent matrix ill-conditioned at ' // diag%where // &
@@ -681,12 +687,66 @@ contains
             dp) / 1.0e6_dp) // ' MB estimated')
     end subroutine open_solver
 
+    !> Solves one correction with the factor (solve_held). With the singularity check off
+    !> (METHODE='MUMPS', NPREC < 0) and a tangent kept although it holds equations with
+    !> springs open (matrix_for_iteration: the elastic matrix holds equations too, e.g.
+    !> SSNL130 A's in-plane plate on vertical springs), the load tells the free motions
+    !> apart: the structure's own is unloaded, while a loaded held equation is the
+    !> overshooting iterate (or no equilibrium) of the pivot rules, and this correction is
+    !> solved again with the elastic matrix, as with the check on (piv%free_now counts it
+    !> for check_no_equilibrium). Without that, the overshoot would stop as a loaded free
+    !> equation. A loaded held equation of the elastic matrix stops the analysis there.
+    !>  use : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
+    !>  r   : inout, right-hand side (free equations) in, solution out
+    subroutine solve_correction(s, map, state, use, prediction, options, r, t, log, piv, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(inout) :: use
+        logical, intent(in) :: prediction
+        type(solver_options_t), intent(in) :: options
+        real(dp), intent(inout) :: r(:)
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: rhs(:)
+        character(len=:), allocatable :: loaded_at
+        type(pivot_diagnosis_t) :: diag
+        logical :: tangent_factored
+        if (.not. (check_disabled(options) .and. use == MATRIX_TANGENT .and. &
+                   .not. all(state%closed))) then
+            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+            return
+        end if
+        rhs = r
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st, &
+            loaded_at)
+        if (st%failed() .or. .not. allocated(loaded_at)) return
+        call log_add(log, '  tangent matrix free at ' // loaded_at // ' with ' // &
+            to_text(count(.not. state%closed, kind=i4)) // ' springs open: correction ' // &
+            'with the elastic matrix')
+        tangent_factored = state%refactored
+        call drop(state, MATRIX_TANGENT)
+        piv%free_now = .true.
+        piv%free_where = loaded_at
+        use = MATRIX_ELASTIC
+        call factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
+        if (st%failed()) return
+        state%refactored = tangent_factored .or. state%refactored
+        r = rhs
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+    end subroutine solve_correction
+
     !> Solves with the factor; with held equations (check off) the penalty that holds each
     !> one must carry (almost) nothing: then the equation is free and unloaded, solved with
     !> zero displacement and named once in the .mess; otherwise a load drives a free
     !> motion and STATUS_SINGULAR names its node and component.
     !>  r : inout, right-hand side (free equations) in, solution out
-    subroutine solve_held(s, map, matrix, solver, held, r, t, log, st)
+    !>  loaded_at : out, optional: when given, a loaded held equation is not an error; it is
+    !>              named here (node, component, load carried) and r is zeroed; unallocated
+    !>              when no held equation is loaded
+    subroutine solve_held(s, map, matrix, solver, held, r, t, log, st, loaded_at)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(sym_matrix_t), intent(in) :: matrix
@@ -696,6 +756,7 @@ contains
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
+        character(len=:), allocatable, intent(out), optional :: loaded_at
         real(dp), allocatable :: rhs(:), ax(:)
         real(dp) :: scale, carried, roundoff
         integer(i4) :: k, eq, worst
@@ -719,7 +780,13 @@ contains
                 worst = eq
             end if
         end do
-        if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff)) then
+        if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff) .and. &
+            present(loaded_at)) then
+            loaded_at = describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // &
+                ' (held, carrying ' // real_e13(carried) // ' against ' // real_e13(scale) // ')'
+            r = 0.0_dp
+            return
+        else if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff)) then
             call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': singular ' // &
                 'matrix at ' // describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // &
                 ': the equation is free (SOLVEUR/NPREC < 0 switched the singularity check ' // &
@@ -844,6 +911,7 @@ contains
     !> the largest diagonal term (round-off level: a free motion); PIVOT_ILL_CONDITIONED
     !> when pivots only exceed NPREC; PIVOT_REGULAR otherwise. On return diag%n_flagged
     !> holds the equation to name (free numbering) and diag%where the pivot text after it.
+    !> With the check off (check_disabled) the solver reports only the pivots it held.
     subroutine classify_pivots(report, pivots, largest, options, diag)
         type(factor_report_t), intent(in) :: report
         real(dp), intent(in) :: pivots(:), largest
@@ -874,6 +942,7 @@ contains
         diag%n_flagged = eq
         diag%where = ' (pivot lost ' // real_digits(max(report%max_digits_lost, 0.0_dp)) // &
             ' digits, NPREC = ' // to_text(diag%nprec) // ')'
+        if (check_disabled(options)) diag%where = ' (pivot held: NPREC < 0, check off)'
     end subroutine classify_pivots
 
     !> A flagged matrix that is not an iterate's overshoot: STATUS_SINGULAR (STOP_SINGULIER
@@ -941,7 +1010,8 @@ contains
             state%factored = MATRIX_NONE
             if (st%ok()) state%factored = MATRIX_TANGENT
             if (st%failed()) return
-            stays_free = diag%kind == PIVOT_FREE
+            ! free as the elastic matrix is: the structure's own motion, not the springs'
+            stays_free = diag%kind == PIVOT_FREE .and. state%elastic_kind /= PIVOT_FREE
         end if
         if (.not. ((all_open .and. stalled) .or. stays_free)) return
         text = 'INST ' // real_e13(t) // ': no equilibrium: ' // &
