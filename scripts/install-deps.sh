@@ -3,7 +3,8 @@
 # Needs root (or sudo) only when something is missing.
 set -euo pipefail
 packages=(gfortran cmake ninja-build liblapack-dev libblas-dev libopenblas-dev libmetis-dev
-          python3 python3-numpy python3-meshio)
+          python3 python3-numpy python3-meshio
+          libmedc-dev libmed-tools python3-h5py)   # MED plug-in; mdump and h5py check MED files
 missing=()
 for p in "${packages[@]}"; do
     status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)

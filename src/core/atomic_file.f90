@@ -18,7 +18,7 @@ module atomic_file
         procedure :: discard => atomic_file_discard
     end type atomic_file_t
 
-    public :: open_atomic
+    public :: open_atomic, rename_file
 
 contains
 
@@ -77,7 +77,9 @@ contains
         self%unit = -1
     end subroutine atomic_file_discard
 
-    !> rename(2) through the C library: atomic on one file system.
+    !> rename(2) through the C library: atomic on one file system. Also used to commit files
+    !> that a library writes itself under a temporary name (MED files, result_med).
+    !>  from, to : in, the paths;  ios : out, 0 on success
     subroutine rename_file(from, to, ios)
         use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
         character(len=*), intent(in) :: from, to

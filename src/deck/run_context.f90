@@ -65,6 +65,9 @@ module run_context
         integer :: statement = 0        !< AST node of the statement being evaluated
         integer :: echoed = 0           !< last statement echoed to the .mess
         integer :: ncommand = 0         !< commands run so far
+        !> Result files (MED) written so far in this run: a later IMPR_RESU adds to them, as
+        !> Code_Aster adds to the file of a unit, instead of replacing them.
+        type(string_t), allocatable :: result_files(:)
     contains
         procedure :: register => ctx_register
         procedure :: find_handler => ctx_find_handler
