@@ -25,9 +25,11 @@ usage:
   run_med_case.py aster-mesh PARASOL ASTER_DIR MMED WORKDIR NODES CELLS GROUPS...
       Reads ASTER_DIR/MMED alone: NODES nodes, CELLS cells, each GROUP=SIZE in the .mess.
       Skipped (exit 77) when ASTER_DIR does not exist.
-  run_med_case.py missing-plugin PARASOL DECK MESH WORKDIR
+  run_med_case.py missing-plugin PARASOL DECK MESH WORKDIR WRONG_ABI_SO
       A copy of PARASOL outside the build tree finds no plug-in: a MED deck stops with exit 1
       and the loader's reason, located at LIRE_MAILLAGE/UNITE; a deck without MED still runs.
+      The same with a plug-in file that is not a shared library, and with WRONG_ABI_SO (a
+      plug-in of another version) in its place.
   run_med_case.py not-linked PARASOL
       parasol itself does not need the MED, HDF5 or MPI libraries (readelf NEEDED).
   run_med_case.py installed BUILD_DIR WORKDIR MED_FILE
@@ -285,6 +287,11 @@ def case_bad(argv):
                 set_attr(fam["GRO"], "NBR", value)
                 return
 
+    def same_number(f):   # MED refuses to write this; only a crafted file has it
+        nodes_fas = f["FAS"][first_mesh(f)[0]]["NOEUD"]
+        first = list(nodes_fas.keys())[0]
+        f.copy(nodes_fas[first], nodes_fas, name="COPY_OF_" + first)
+
     def two_meshes(f):
         name = first_mesh(f)[0]
         f.copy(f["ENS_MAA"][name], "ENS_MAA/OTHER")
@@ -314,6 +321,7 @@ def case_bad(argv):
         ("axes_1000", edited(lambda f: set_attr(f["ENS_MAA"][first_mesh(f)[0]], "ESP", 1000)),
          "coordinate axes (a mesh has 1 to 3)"),
         ("two_meshes", edited(two_meshes), "meshes ("),
+        ("family_twice", edited(same_number), "have the same number"),
     ]
     cases += [("truncated_%d" % n, cut(n), "MED file") for n in
               sorted({64, 512, 2048, size // 4, size // 2, 3 * size // 4, size - 1000,
@@ -414,20 +422,33 @@ def case_aster_mesh(argv):
 
 
 def case_missing_plugin(argv):
-    parasol, deck, mesh, workdir = argv[:4]
+    parasol, deck, mesh, workdir, wrong_abi = argv[:5]
     shutil.rmtree(workdir, ignore_errors=True)
     os.makedirs(os.path.join(workdir, "bin"))
     copy = os.path.join(workdir, "bin", "parasol")
     shutil.copy(parasol, copy)
     med = os.path.join(workdir, "med.comm")
     write(med, "DEBUT()\nMAIL = LIRE_MAILLAGE(FORMAT='MED', UNITE=20)\nFIN()\n")
-    rc, _, err = run(copy, med, workdir, ["20=" + os.path.abspath(mesh)])
+    where = "med.comm:2:36: error: LIRE_MAILLAGE/UNITE: FORMAT='MED' needs parasol's MED " \
+            "plug-in, which cannot be loaded: "
+    plugin_dir = os.path.join(workdir, "lib", "parasol")
+    plugin = os.path.join(plugin_dir, "libparasol_med.so")
     problems = []
-    if rc != 1 or "med.comm:2:36: error: LIRE_MAILLAGE/UNITE: FORMAT='MED' needs parasol's " \
-            "MED plug-in, which cannot be loaded: cannot load the shared library" not in err \
-            or "libparasol_med.so" not in err:
-        problems.append("MED deck without the plug-in: exit %d, %r" % (rc, err))
-    problems += ["crash sign %r" % s for s in CRASH_SIGNS if s in err]
+    for case, make, phrase in [
+            ("absent", None, "cannot open shared object file"),
+            ("not a library", lambda: write(plugin, "not a shared library\n"),
+             "cannot load the shared library"),
+            ("another version", lambda: shutil.copy(wrong_abi, plugin),
+             "is of version 99, this parasol needs version 1")]:
+        if make:
+            os.makedirs(plugin_dir, exist_ok=True)
+            make()
+        rc, _, err = run(copy, med, workdir, ["20=" + os.path.abspath(mesh)])
+        expected = where if case != "another version" else \
+            "med.comm:2:36: error: LIRE_MAILLAGE/UNITE: the MED plug-in "
+        if rc != 1 or expected not in err or phrase not in err or len(err.splitlines()) != 1:
+            problems.append("plug-in %s: exit %d, %r" % (case, rc, err))
+        problems += ["plug-in %s: crash sign %r" % (case, s) for s in CRASH_SIGNS if s in err]
     rc, _, err = run(copy, deck, os.path.join(workdir, "ascii"), ["20=" + os.path.abspath(mesh)])
     if rc != 0:
         problems.append("a deck without MED must run without the plug-in: exit %d %r" % (rc, err))
