@@ -53,7 +53,8 @@ module med_file
     end type med_file_t
 
     public :: med_load, med_loaded, med_library_version, med_open, med_close, &
-        med_mesh_count, med_mesh_info, med_mesh_step, med_count, med_read_coordinates, &
+        med_mesh_count, med_mesh_info, med_mesh_step, med_count, med_cell_type, &
+        med_read_coordinates, &
         med_read_connectivity, med_read_names, med_read_families, med_family_count, &
         med_family_group_count, med_family_info, med_create_mesh, med_write_coordinates, &
         med_write_connectivity, med_write_names, med_write_families, med_create_family, &
@@ -124,6 +125,14 @@ module med_file
             integer(c_int), value :: numdt, numit, what, geotype
             integer(c_int) :: n
         end function count_f
+        function cell_type_f(fid, mesh, numdt, numit, it, geotype) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: mesh(*)
+            integer(c_int), value :: numdt, numit, it
+            integer(c_int), intent(out) :: geotype
+            integer(c_int) :: rc
+        end function cell_type_f
         function read_reals_f(fid, mesh, numdt, numit, values) result(rc) bind(c)
             import :: c_int, c_int64_t, c_char, c_double
             integer(c_int64_t), value :: fid
@@ -277,6 +286,7 @@ module med_file
         procedure(mesh_info_f), pointer, nopass :: mesh_info => null()
         procedure(mesh_step_f), pointer, nopass :: mesh_step => null()
         procedure(count_f), pointer, nopass :: count => null()
+        procedure(cell_type_f), pointer, nopass :: cell_type => null()
         procedure(read_reals_f), pointer, nopass :: read_coordinates => null()
         procedure(read_connectivity_f), pointer, nopass :: read_connectivity => null()
         procedure(read_names_f), pointer, nopass :: read_names => null()
@@ -395,6 +405,9 @@ contains
         call find_symbol(plugin%library, 'parasol_med_count', a, st)
         if (st%failed()) return
         call c_f_procpointer(a, plugin%count)
+        call find_symbol(plugin%library, 'parasol_med_cell_type', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%cell_type)
         call find_symbol(plugin%library, 'parasol_med_read_coordinates', a, st)
         if (st%failed()) return
         call c_f_procpointer(a, plugin%read_coordinates)
@@ -662,6 +675,23 @@ contains
         if (n < 0) call fail(st, file, 'cannot count the ' // what_text // ' of mesh ' // &
             mesh, n)
     end function med_count
+
+    !> MED type code of cell type number `it` of the mesh (1..MED_COUNT_CELL_TYPES count).
+    subroutine med_cell_type(file, mesh, numdt, numit, it, geotype, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: mesh
+        integer(i4), intent(in) :: numdt, numit, it
+        integer(i4), intent(out) :: geotype
+        type(status_t), intent(out) :: st
+        integer(c_int) :: rc, code
+        type(fp_state_t) :: fp
+        call fp_begin(fp)
+        rc = plugin%cell_type(file%fid, mesh // c_null_char, int(numdt, c_int), &
+                              int(numit, c_int), int(it, c_int), code)
+        call fp_end(fp)
+        geotype = code
+        if (rc < 0) call fail(st, file, 'cannot read the cell types of mesh ' // mesh, rc)
+    end subroutine med_cell_type
 
     !> Node coordinates into coords(spacedim * n), interlaced.
     subroutine med_read_coordinates(file, mesh, numdt, numit, coords, st)

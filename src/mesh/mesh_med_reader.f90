@@ -29,7 +29,7 @@ module mesh_med_reader
         CELL_TRIA3, CELL_QUAD4
     use mesh_name_index, only: name_index_t, name_add, name_of
     use med_file, only: med_file_t, med_load, med_open, med_close, med_mesh_count, med_mesh_info, &
-        med_mesh_step, med_count, med_read_coordinates, med_read_connectivity, &
+        med_mesh_step, med_count, med_cell_type, med_read_coordinates, med_read_connectivity, &
         med_read_names, med_read_families, med_family_count, med_family_group_count, &
         med_family_info, MED_READ, MED_COUNT_NODES, MED_COUNT_NODE_NAMES, &
         MED_COUNT_NODE_FAMILIES, MED_COUNT_CELLS, MED_COUNT_CELL_NAMES, &
@@ -290,22 +290,31 @@ contains
         logical, allocatable, intent(out) :: named(:)
         type(status_t), intent(out) :: st
         integer(i4) :: counts(N_READ_TYPES), all_counts(N_MED_TYPES)
-        integer(i4) :: n_types, found, t, n, total, first, c, k, np
+        integer(i4) :: n_types, t, n, total, first, c, k, np, code
         integer(i4) :: n_names, n_families
         integer(i4), allocatable :: conn(:)
         integer :: ios
         n_types = med_count(file, mesh, numdt, numit, MED_COUNT_CELL_TYPES, 0_i4, &
                             'cell types', st)
         if (st%failed()) return
-        found = 0
         all_counts = 0
-        do t = 1, N_MED_TYPES
-            n = med_count(file, mesh, numdt, numit, MED_COUNT_CELLS, MED_TYPE_CODES(t), &
+        do k = 1, n_types
+            call med_cell_type(file, mesh, numdt, numit, k, code, st)
+            if (st%failed()) return
+            t = findloc(MED_TYPE_CODES, code, dim=1)
+            if (t == 0) then
+                call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
+                    mesh // ' has cells of MED type ' // to_text(code) // ', which parasol ' &
+                    // 'does not know (structural elements?); it reads POI1, SEG2, TRIA3 ' // &
+                    'and QUAD4')
+                return
+            end if
+            n = med_count(file, mesh, numdt, numit, MED_COUNT_CELLS, code, &
                           trim(MED_TYPE_NAMES(t)) // ' cells', st)
             if (st%failed()) return
             if (n == 0) then
-                n = med_count(file, mesh, numdt, numit, MED_COUNT_DESCENDING_CELLS, &
-                              MED_TYPE_CODES(t), trim(MED_TYPE_NAMES(t)) // ' cells', st)
+                n = med_count(file, mesh, numdt, numit, MED_COUNT_DESCENDING_CELLS, code, &
+                              trim(MED_TYPE_NAMES(t)) // ' cells', st)
                 if (st%failed()) return
                 if (n == 0) cycle
                 call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' &
@@ -314,22 +323,15 @@ contains
                     'connectivity, as Code_Aster')
                 return
             end if
-            found = found + 1
             if (t > N_READ_TYPES) then
                 call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
                     mesh // ' has ' // to_text(n) // ' ' // trim(MED_TYPE_NAMES(t)) // &
-                    ' cells (MED type ' // to_text(MED_TYPE_CODES(t)) // '); parasol reads ' &
-                    // 'POI1, SEG2, TRIA3 and QUAD4 cells only (its elements are linear)')
+                    ' cells (MED type ' // to_text(code) // '); parasol reads POI1, SEG2, ' &
+                    // 'TRIA3 and QUAD4 cells only (its elements are linear)')
                 return
             end if
             all_counts(t) = n
         end do
-        if (found < n_types) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
-                mesh // ' has cells of ' // to_text(n_types - found) // ' kind(s) parasol ' // &
-                'does not know (structural elements?); it reads POI1, SEG2, TRIA3 and QUAD4')
-            return
-        end if
         counts = all_counts(1:N_READ_TYPES)
         if (found < n_types) then
             call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &

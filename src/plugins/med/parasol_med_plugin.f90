@@ -133,6 +133,17 @@ module parasol_med_plugin
             integer(c_int), intent(out) :: changement, transformation
             integer(c_int) :: n
         end function MEDmeshnEntity
+        function MEDmeshEntityInfo(fid, meshname, numdt, numit, entitype, geotypeit, &
+                                   geotypename, geotype) result(rc) &
+            bind(c, name='MEDmeshEntityInfo')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: meshname(*)
+            integer(c_int), value :: numdt, numit, entitype, geotypeit
+            character(kind=c_char), intent(out) :: geotypename(*)
+            integer(c_int), intent(out) :: geotype
+            integer(c_int) :: rc
+        end function MEDmeshEntityInfo
         function MEDmeshNodeCoordinateRd(fid, meshname, numdt, numit, switchmode, &
                                          coordinates) result(rc) &
             bind(c, name='MEDmeshNodeCoordinateRd')
@@ -358,7 +369,8 @@ module parasol_med_plugin
     public :: parasol_med_abi_version, parasol_med_library_version, &
         parasol_med_file_compatibility, parasol_med_open, parasol_med_file_version, &
         parasol_med_close, parasol_med_mesh_count, parasol_med_mesh_info, &
-        parasol_med_mesh_step, parasol_med_count, parasol_med_read_coordinates, &
+        parasol_med_mesh_step, parasol_med_count, parasol_med_cell_type, &
+        parasol_med_read_coordinates, &
         parasol_med_read_connectivity, parasol_med_read_names, parasol_med_read_families, &
         parasol_med_family_count, parasol_med_family_group_count, parasol_med_family_info, &
         parasol_med_create_mesh, parasol_med_write_coordinates, &
@@ -560,6 +572,22 @@ contains
                            transformed)
         call quiet_end()
     end function parasol_med_count
+
+    !> MED type code of cell type number `it` (1-based iterator over the cell types present,
+    !> counted by parasol_med_count with what = 7), MEDmeshEntityInfo.
+    function parasol_med_cell_type(fid, mesh, numdt, numit, it, geotype) result(rc) &
+        bind(c, name='parasol_med_cell_type')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: mesh(*)
+        integer(c_int), value :: numdt, numit, it
+        integer(c_int), intent(out) :: geotype
+        integer(c_int) :: rc
+        character(kind=c_char) :: name(MED_NAME_SIZE + 1)   ! MED writes up to 64 + NUL
+        geotype = 0
+        call quiet_begin()
+        rc = MEDmeshEntityInfo(fid, mesh, numdt, numit, MED_CELL, it, name, geotype)
+        call quiet_end()
+    end function parasol_med_cell_type
 
     !> Node coordinates, interlaced: (spacedim, n) as counted by parasol_med_count.
     function parasol_med_read_coordinates(fid, mesh, numdt, numit, coordinates) result(rc) &
