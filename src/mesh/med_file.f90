@@ -530,10 +530,15 @@ contains
             call fp_begin(fp)
             rc = plugin%compatibility(path // c_null_char, hdf_ok, med_ok)
             call fp_end(fp)
-            if (rc < 0 .or. hdf_ok == 0) then
+            if (hdf_ok == 0) then
                 call set_error(st, STATUS_IO_ERROR, path // ' is not a MED file: it is not ' &
                     // 'even an HDF5 file (MED files are HDF5 files; FORMAT=''MED'' reads ' &
                     // 'them; a .mail file is FORMAT=''ASTER'', a .msh FORMAT=''GMSH'')')
+                return
+            else if (rc < 0) then
+                call set_error(st, STATUS_IO_ERROR, path // ' is an HDF5 file but not a MED ' &
+                    // 'file: it has no MED version header (MED error ' // &
+                    to_text(int(rc, i4)) // ')')
                 return
             end if
         end if

@@ -333,12 +333,6 @@ contains
             all_counts(t) = n
         end do
         counts = all_counts(1:N_READ_TYPES)
-        if (found < n_types) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
-                mesh // ' has cells of ' // to_text(n_types - found) // ' kind(s) parasol ' // &
-                'does not know (structural elements?); it reads POI1, SEG2, TRIA3 and QUAD4')
-            return
-        end if
         if (sum(int(counts, i8) * 4) > huge(1_i4)) then
             call too_many(st, file, sum(int(counts, i8)), 'cells')
             return

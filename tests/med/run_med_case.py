@@ -269,6 +269,11 @@ def case_bad(argv):
     def empty(path):
         open(path, "wb").close()
 
+    def plain_hdf5(path):
+        import h5py
+        with h5py.File(path, "w") as f:
+            f["x"] = [1.0, 2.0]
+
     def edited(fn):
         return lambda path: craft(good, path, fn)
 
@@ -300,6 +305,7 @@ def case_bad(argv):
     cases = [
         ("not_hdf5", text, "is not a MED file: it is not even an HDF5 file"),
         ("empty", empty, "is not a MED file"),
+        ("hdf5_not_med", plain_hdf5, "is an HDF5 file but not a MED file"),
         ("version_2", edited(lambda f: set_attr(f["INFOS_GENERALES"], "MAJ", 2)),
          "was written by MED 2."),
         ("version_5", edited(lambda f: set_attr(f["INFOS_GENERALES"], "MAJ", 5)),
