@@ -18,8 +18,14 @@ endif()
 function(parasol_add_unit_suite pf_file)
   get_filename_component(stem ${pf_file} NAME_WE)
   if(PFUNIT_FOUND)
-    add_pfunit_ctest(${stem} TEST_SOURCES ${pf_file} LINK_LIBRARIES parasol_lib)
-    set_tests_properties(${stem} PROPERTIES LABELS unit
+    # add_pfunit_ctest writes the generated .F90 beside an absolute TEST_SOURCES path (it
+    # takes it for a build-tree file), so the suite is named relative to this folder: the
+    # generated source then goes to the build tree. The test gets the same name as on the
+    # fallback path (unit.<stem>), and the same line-length option (pfunit.md).
+    file(RELATIVE_PATH pf_relative ${CMAKE_CURRENT_SOURCE_DIR} ${pf_file})
+    add_pfunit_ctest(unit.${stem} TEST_SOURCES ${pf_relative} LINK_LIBRARIES parasol_lib)
+    target_compile_options(unit.${stem} PRIVATE -ffree-line-length-none)
+    set_tests_properties(unit.${stem} PROPERTIES LABELS unit
       ENVIRONMENT PARASOL_SOURCE_DIR=${PROJECT_SOURCE_DIR})
     return()
   endif()

@@ -54,6 +54,7 @@ contains
         if (st%ok()) call read_increment(cmd, times, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
+        options%deadline = ctx%deadline            ! polled between Newton iterations
         call structure_check(s, st)
         if (st%failed()) return
         call ctx%write_mess('    ' // to_text(count(s%choc)) // ' DIS_CHOC cell(s), ' // &

@@ -38,6 +38,7 @@ module contact_newton
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
+    use run_deadline, only: deadline_t
     implicit none
     private
 
@@ -94,6 +95,7 @@ module contact_newton
         integer(i4) :: iter_glob_maxi = DEFAULT_ITER_GLOB_MAXI
         type(factor_options_t) :: factor           !< NPREC, STOP_SINGULIER
         character(len=8) :: renum = 'RCMK'         !< SOLVEUR/RENUM
+        type(deadline_t) :: deadline               !< the run's time limit, polled per iteration
     end type newton_options_t
 
     !> One EXCIT occurrence: a char_meca's load set and an optional FONC_MULT of INST.
@@ -297,6 +299,9 @@ contains
             state%closed, state%fn, st, state%linear)
         if (st%failed()) return
         do iter = 0, options%iter_glob_maxi
+            call options%deadline%check('STAT_NON_LINE at INST ' // real_e13(t) // &
+                                        ', Newton iteration ' // to_text(iter), st)
+            if (st%failed()) return
             call system_clock(t0, rate)
             use = choose_matrix(options, iter, step, state)
             call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)

@@ -3,23 +3,27 @@
 !>   0 = ran, every TEST_RESU OK (or none); 2 = ran, some TEST_RESU NOOK;
 !>   1 = stopped on an error (deck, mesh, singular matrix, no convergence).
 !>
-!> Pipeline of a run: read and parse the deck; check pass (every expression evaluated, every
-!> command validated against the catalog, placeholder concepts); run pass (each command
-!> dispatched to its handler). <stem>.mess and <stem>.resu are written atomically in
-!> --outdir. On an error the message goes to stderr and to the .mess, the .mess is committed
+!> Pipeline of a run: read and parse the command files (one deck, several on the command
+!> line, or those of a Code_Aster export file, see export_file); check pass over them in
+!> order (every expression evaluated, every command validated against the catalog,
+!> placeholder concepts); run pass (each command dispatched to its handler). The files
+!> form one session: a file after the first continues it with POURSUITE(). <stem>.mess and
+!> <stem>.resu are written atomically in --outdir (stem: the first deck's, or the export
+!> file's). On an error the message goes to stderr and to the .mess, the .mess is committed
 !> (it is the run's story) and the .resu is discarded (an older one is left untouched).
 module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use kinds, only: i4
+    use kinds, only: i4, dp
     use strings, only: string_t, to_text, starts_with
-    use status, only: status_t, format_status, set_error, STATUS_DECK_ERROR
+    use status, only: status_t, format_status, set_error, add_context, STATUS_DECK_ERROR
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
     use atomic_file, only: open_atomic
     use install_layout, only: data_file_path
     use run_context, only: run_context_t, init_context
     use deck_value, only: append_string
-    use deck_interpreter, only: load_deck, evaluate_deck
+    use deck_interpreter, only: read_source_text, load_source, evaluate_session
+    use export_file, only: export_t, read_export, is_export_path, module_name
     use command_registration, only: register_commands
     implicit none
     private
@@ -31,9 +35,11 @@ module cli
     !> (bundled_deck_path). Its mesh is found beside it (the unit 20 default).
     character(len=*), parameter, public :: BUNDLED_DECK = 'ssnl130a.comm'
 
-    !> Parsed command line.
+    !> Parsed command line. decks: the command files, in order (empty: the bundled deck);
+    !> export: an export file instead (then decks is empty).
     type :: options_t
-        character(len=:), allocatable :: deck, outdir
+        type(string_t), allocatable :: decks(:)
+        character(len=:), allocatable :: export, outdir
         logical :: check = .false.
         integer(i4), allocatable :: units(:)
         type(string_t), allocatable :: unit_paths(:)
@@ -50,7 +56,7 @@ contains
         call get_arguments(args)
         call parse_options(args, opts, exit_status, done)
         if (done) return
-        if (.not. allocated(opts%deck)) then
+        if (size(opts%decks) == 0 .and. .not. allocated(opts%export)) then
             call run_bundled(opts, exit_status)
             return
         end if
@@ -64,18 +70,20 @@ contains
         type(options_t), intent(inout) :: opts
         integer, intent(out) :: exit_status
         logical :: exists
-        opts%deck = bundled_deck_path()
-        inquire (file=opts%deck, exist=exists)
+        character(len=:), allocatable :: deck
+        deck = bundled_deck_path()
+        inquire (file=deck, exist=exists)
         if (.not. exists) then
             write (error_unit, '(a)') 'parasol: error: no DECK given and the bundled deck ' // &
-                opts%deck // ' is missing (give a deck: parasol [options] DECK)'
+                deck // ' is missing (give a deck: parasol [options] DECK)'
             call print_usage(error_unit)
             exit_status = EXIT_ERROR
             return
         end if
+        call append_string(opts%decks, deck)
         write (output_unit, '(a)') 'parasol ' // parasol_version_string // ': no deck given ' // &
             '(usage: parasol [options] [DECK]; parasol --help), running the bundled SSNL130 ' // &
-            'model A deck ' // opts%deck
+            'model A deck ' // deck
         call run_deck(opts, exit_status)
         if (exit_status /= EXIT_ERROR) call echo_test_resu(opts, exit_status)
     end subroutine run_bundled
@@ -89,7 +97,7 @@ contains
         character(len=1024) :: line
         integer :: u, ios
         logical :: echo_next
-        call init_context(ctx, opts%deck, opts%outdir)
+        call init_context(ctx, opts%decks(1)%s, opts%outdir)
         open (newunit=u, file=ctx%output_path('.resu'), status='old', action='read', &
               iostat=ios)
         if (ios /= 0) return
@@ -114,7 +122,8 @@ contains
         end if
     end subroutine echo_test_resu
 
-    !> Options: --unit N=PATH, --outdir DIR, --check, --help, --version, then DECK.
+    !> Options: --unit N=PATH, --outdir DIR, --check, --help, --version; the command files
+    !> (DECK...) or one export file (CASE.export).
     subroutine parse_options(args, opts, exit_status, done)
         type(string_t), intent(in) :: args(:)
         type(options_t), intent(out) :: opts
@@ -124,7 +133,7 @@ contains
         character(len=:), allocatable :: a, value
         exit_status = EXIT_OK; done = .true.
         opts%outdir = ''
-        allocate (opts%units(0), opts%unit_paths(0))
+        allocate (opts%units(0), opts%unit_paths(0), opts%decks(0))
         i = 1
         do while (i <= size(args))
             a = args(i)%s
@@ -158,11 +167,16 @@ contains
                 if (starts_with(a, '-') .and. len(a) > 1) then
                     call usage_error('unknown option ' // a); return
                 end if
-                if (allocated(opts%deck)) then
-                    call usage_error('only one deck can be given (got ' // opts%deck // &
-                                     ' and ' // a // ')'); return
+                if (allocated(opts%export) .or. (is_export_path(a) .and. &
+                    size(opts%decks) > 0)) then
+                    call usage_error('an export file runs alone: give either CASE.export ' // &
+                                     'or the command files (got ' // a // ' too)'); return
                 end if
-                opts%deck = a
+                if (is_export_path(a)) then
+                    opts%export = a
+                else
+                    call append_string(opts%decks, a)
+                end if
             end select
             i = i + 1
         end do
@@ -176,35 +190,70 @@ contains
         end subroutine usage_error
     end subroutine parse_options
 
-    !> Reads, checks and (unless --check) runs one deck.
+    !> Reads, checks and (unless --check) runs the command files: the decks of the
+    !> command line, or those of an export file.
     subroutine run_deck(opts, exit_status)
         type(options_t), intent(in) :: opts
         integer, intent(out) :: exit_status
         type(run_context_t) :: ctx
+        type(export_t) :: exp
         type(status_t) :: st, io
+        type(string_t), allocatable :: files(:)
+        character(len=:), allocatable :: mess_path, resu_path, header
+        integer, allocatable :: file_lines(:)
         integer :: k
-        call init_context(ctx, opts%deck, opts%outdir)
+        if (allocated(opts%export)) then
+            call init_context(ctx, opts%export, opts%outdir)
+            call read_export(opts%export, exp, st)
+            header = 'export file ' // opts%export
+        else
+            call init_context(ctx, opts%decks(1)%s, opts%outdir)
+            header = 'deck'
+            do k = 1, size(opts%decks)
+                header = header // ' ' // opts%decks(k)%s
+            end do
+        end if
+        mess_path = ctx%output_path('.mess')
+        resu_path = ctx%output_path('.resu')
+        if (allocated(opts%export) .and. st%ok()) &
+            call apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
+        if (.not. allocated(opts%export)) then
+            files = opts%decks
+            allocate (file_lines(0))
+        end if
         do k = 1, size(opts%units)
             call ctx%bind_unit(opts%units(k), opts%unit_paths(k)%s)
         end do
         call register_commands(ctx)
         if (.not. opts%check) then
-            call open_atomic(ctx%mess, ctx%output_path('.mess'), io)
-            if (io%ok()) call open_atomic(ctx%resu, ctx%output_path('.resu'), io)
+            call open_atomic(ctx%mess, mess_path, io)
+            if (io%ok()) call open_atomic(ctx%resu, resu_path, io)
             if (io%failed()) then
                 call ctx%mess%discard()
                 write (error_unit, '(a)') 'parasol: ' // format_status(io)
                 exit_status = EXIT_ERROR
                 return
             end if
-            call ctx%write_mess('parasol ' // parasol_version_string // ' -- deck ' // &
-                                ctx%deck_path)
+            call ctx%write_mess('parasol ' // parasol_version_string // ' -- ' // header)
+            if (allocated(opts%export) .and. st%ok()) call describe_export(ctx, exp)
         end if
-        call load_deck(ctx, st)
+        if (st%ok()) then
+            if (allocated(opts%export)) then
+                call load_command_files(ctx, files, st, opts%export, file_lines)
+            else
+                call load_command_files(ctx, files, st)
+            end if
+        end if
         if (st%ok()) call check_pass(ctx, st)
         if (st%ok() .and. opts%check) then
-            write (output_unit, '(a)') ctx%deck_name // ': deck is valid (' // &
-                to_text(int(ctx%ncommand, i4)) // ' commands checked)'
+            if (ctx%ncommand_file == 1) then
+                write (output_unit, '(a)') ctx%sources(1)%name // ': deck is valid (' // &
+                    to_text(int(ctx%ncommand, i4)) // ' commands checked)'
+            else
+                write (output_unit, '(a)') to_text(int(ctx%ncommand_file, i4)) // &
+                    ' command files are valid (' // to_text(int(ctx%ncommand, i4)) // &
+                    ' commands checked)'
+            end if
             exit_status = EXIT_OK
             call ctx%reset_symbols()
             return
@@ -214,11 +263,89 @@ contains
         call ctx%reset_symbols()
     end subroutine run_deck
 
+    !> Takes from an export file what the run needs: its command files (in order), its
+    !> units (F mmed|med|mail|msh NAME D U, and the result files parasol writes on a unit),
+    !> its modules (F nom), its listings (F mess|resu NAME R U) and its time limit.
+    !>  files : out, the command files;  file_lines : out, their F comm lines
+    subroutine apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
+        type(run_context_t), intent(inout) :: ctx
+        type(export_t), intent(in) :: exp
+        type(string_t), allocatable, intent(out) :: files(:)
+        integer, allocatable, intent(out) :: file_lines(:)
+        character(len=:), allocatable, intent(inout) :: mess_path, resu_path
+        integer :: k
+        allocate (files(0), file_lines(0))
+        do k = 1, size(exp%entries)
+            associate (e => exp%entries(k))
+                if (e%folder) cycle
+                select case (e%type)
+                case ('comm')
+                    call append_string(files, e%path)
+                    file_lines = [file_lines, e%line]
+                case ('nom')
+                    call ctx%bind_module(module_name(e%name), e%path)
+                case ('mess', 'resu')
+                    if (e%result .and. e%type == 'mess') mess_path = e%path
+                    if (e%result .and. e%type == 'resu') resu_path = e%path
+                case ('mmed', 'med', 'mail', 'msh', 'rmed')
+                    if (e%unit > 0) call ctx%bind_unit(e%unit, e%path)
+                end select
+            end associate
+        end do
+        if (exp%time_limit > 0.0_dp) call ctx%deadline%start(exp%time_limit, &
+            exp%path // ':' // to_text(int(exp%time_limit_line, i4)) // ' (P time_limit)')
+    end subroutine apply_export
+
+    !> Records in the .mess each line of the export file and what parasol does with it.
+    subroutine describe_export(ctx, exp)
+        type(run_context_t), intent(inout) :: ctx
+        type(export_t), intent(in) :: exp
+        integer :: k
+        do k = 1, size(exp%params)
+            associate (p => exp%params(k))
+                if (p%kind == 'P' .and. p%name == 'time_limit') then
+                    call ctx%write_mess('  P time_limit ' // p%value // ' (line ' // &
+                        to_text(int(p%line, i4)) // '): wall-clock limit of the run, in s')
+                else
+                    call ctx%write_mess('  ' // p%kind // ' ' // p%name // ' ' // p%value // &
+                        ' (line ' // to_text(int(p%line, i4)) // '): recorded, no effect ' // &
+                        'in parasol')
+                end if
+            end associate
+        end do
+        do k = 1, size(exp%entries)
+            call ctx%write_mess('  ' // exp%describe(k))
+        end do
+    end subroutine describe_export
+
+    !> Reads and parses each command file; they form the session, in this order.
+    !>  export, lines : optional, the export file and the F comm line of each file: a file
+    !>  that cannot be read is located there
+    subroutine load_command_files(ctx, files, st, export, lines)
+        type(run_context_t), intent(inout) :: ctx
+        type(string_t), intent(in) :: files(:)
+        type(status_t), intent(inout) :: st
+        character(len=*), intent(in), optional :: export
+        integer, intent(in), optional :: lines(:)
+        character(len=:), allocatable :: text
+        integer :: k, src, slash
+        do k = 1, size(files)
+            call read_source_text(files(k)%s, 'the deck', text, st)
+            if (st%failed() .and. present(export) .and. present(lines)) &
+                call add_context(st, file=export, line=lines(k))
+            if (st%failed()) return
+            slash = index(files(k)%s, '/', back=.true.)
+            call load_source(ctx, text, files(k)%s, files(k)%s(1:slash), '', src, st)
+            if (st%failed()) return
+        end do
+        ctx%ncommand_file = size(files)
+    end subroutine load_command_files
+
     subroutine check_pass(ctx, st)
         type(run_context_t), intent(inout) :: ctx
         type(status_t), intent(inout) :: st
         ctx%checking = .true.
-        call evaluate_deck(ctx, st)
+        call evaluate_session(ctx, st)
         ctx%checking = .false.
         if (st%failed()) return
         call ctx%write_mess('check pass: the deck is valid (' // &
@@ -231,9 +358,9 @@ contains
         call ctx%reset_symbols()
         ctx%ncommand = 0
         ctx%echoed = 0
-        call evaluate_deck(ctx, st)
-        if (st%ok() .and. .not. ctx%finished) call ctx%write_mess('warning: the deck ' // &
-            'has no FIN(); the listings are closed at its end')
+        call evaluate_session(ctx, st)
+        if (st%ok() .and. .not. ctx%finished) call ctx%write_mess('warning: ' // &
+            ctx%deck_name // ' has no FIN(); the listings are closed at its end')
     end subroutine run_pass
 
     !> Reports an error (stderr and .mess), writes the verdict, commits or discards files.
@@ -287,12 +414,15 @@ contains
     subroutine print_usage(unit)
         integer, intent(in) :: unit
         write (unit, '(a)') &
-            'usage: parasol [options] [DECK]', &
+            'usage: parasol [options] [DECK [DECK.com1 ...] | CASE.export]', &
             '  DECK               the deck (.comm); without one, parasol runs its bundled', &
-            '                     SSNL130 model A deck', &
+            '                     SSNL130 model A deck; several command files run in order', &
+            '                     in one session (POURSUITE() continues the previous one)', &
+            '  CASE.export        a Code_Aster export file: its F comm files run in order,', &
+            '                     its F lines bind units and modules, P time_limit applies', &
             '  --unit N=PATH      bind logical unit N to a file (LIRE_MAILLAGE reads unit 20)', &
             '  --outdir DIR       where <stem>.mess, <stem>.resu and result files go', &
-            '  --check            parse and validate the deck, run nothing', &
+            '  --check            parse and validate the command files, run nothing', &
             '  --help, --version', &
             'exit status: 0 = ran, every TEST_RESU OK; 2 = some TEST_RESU NOOK;', &
             '             1 = stopped on an error'

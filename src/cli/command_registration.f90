@@ -3,7 +3,7 @@
 !> without a registered handler stops the run with "COMMAND is not implemented yet".
 module command_registration
     use run_context, only: run_context_t
-    use session_commands, only: run_debut, run_fin
+    use session_commands, only: run_debut, run_poursuite, run_fin
     use function_commands, only: run_defi_constante, run_defi_fonction, run_formule, &
         run_defi_list_reel
     use test_resu_command, only: run_test_resu
@@ -24,7 +24,9 @@ contains
     !> also run in the check pass (at_check), so `parasol --check` reports their errors.
     subroutine register_commands(ctx)
         type(run_context_t), intent(inout) :: ctx
-        call ctx%register('DEBUT', run_debut)
+        ! DEBUT and POURSUITE decide which names a command file sees: the check pass too.
+        call ctx%register('DEBUT', run_debut, at_check=.true.)
+        call ctx%register('POURSUITE', run_poursuite, at_check=.true.)
         call ctx%register('FIN', run_fin)
         call ctx%register('DEFI_CONSTANTE', run_defi_constante, at_check=.true.)
         call ctx%register('DEFI_FONCTION', run_defi_fonction, at_check=.true.)

@@ -4,6 +4,8 @@
 module atomic_file
     use kinds, only: i4
     use status, only: status_t, set_error, STATUS_IO_ERROR
+    use strings, only: to_text
+    use system_error, only: last_errno, errno_text, process_id
     implicit none
     private
 
@@ -18,30 +20,79 @@ module atomic_file
         procedure :: discard => atomic_file_discard
     end type atomic_file_t
 
-    public :: open_atomic, rename_file
+    public :: open_atomic, rename_file, delete_file
 
 contains
 
-    !> Opens `path` for writing through a temporary file `path.partial`.
+    !> Opens `path` for writing through a temporary file beside it, `path.<pid>.partial`
+    !> (unique per process, so that two runs writing into one folder never share it).
     !>  file : out, the open file
     !>  path : in, the final file name
-    !>  st   : out, STATUS_IO_ERROR naming the path when it cannot be created
+    !>  st   : out, STATUS_IO_ERROR naming the path (never the temporary name) and the
+    !>         system's reason, e.g. "No such file or directory" for a missing folder
     subroutine open_atomic(file, path, st)
         type(atomic_file_t), intent(out) :: file
         character(len=*), intent(in) :: path
         type(status_t), intent(out) :: st
-        integer :: ios
-        character(len=256) :: msg
+        integer :: ios, code
         file%path = path
-        file%temp_path = path // '.partial'
+        file%temp_path = path // '.' // to_text(int(process_id(), i4)) // '.partial'
+        ! create it with open(2) first: a failure then comes with errno, the system's reason
+        code = create_file(file%temp_path)
+        if (code /= 0) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot create ' // path // ': ' // &
+                errno_text(code) // folder_hint(code))
+            return
+        end if
         open (newunit=file%unit, file=file%temp_path, status='replace', action='write', &
-              form='formatted', access='sequential', iostat=ios, iomsg=msg)
+              form='formatted', access='sequential', iostat=ios)
         if (ios /= 0) then
             file%unit = -1
-            call set_error(st, STATUS_IO_ERROR, 'cannot create ' // path // ': ' // trim(msg) &
-                           // ' (check that the output directory exists and is writable)')
+            call set_error(st, STATUS_IO_ERROR, 'cannot create ' // path // &
+                ' (the file system refused to open it for writing)')
         end if
     end subroutine open_atomic
+
+    !> What to check for the usual errno values of a file creation.
+    function folder_hint(code) result(text)
+        integer, intent(in) :: code
+        character(len=:), allocatable :: text
+        integer, parameter :: ENOENT = 2, EACCES = 13, ENOTDIR = 20, EROFS = 30
+        select case (code)
+        case (ENOENT, ENOTDIR)
+            text = ' (the output folder must exist: create it or give another --outdir)'
+        case (EACCES, EROFS)
+            text = ' (the output folder must be writable)'
+        case default
+            text = ''
+        end select
+    end function folder_hint
+
+    !> Creates (or truncates) `path` with open(2); returns 0 or errno.
+    integer function create_file(path) result(code)
+        use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+        character(len=*), intent(in) :: path
+        interface
+            integer(c_int) function c_creat(pathname, mode) bind(c, name='creat')
+                import :: c_int, c_char
+                character(kind=c_char), intent(in) :: pathname(*)
+                integer(c_int), value :: mode
+            end function c_creat
+            integer(c_int) function c_close(fd) bind(c, name='close')
+                import :: c_int
+                integer(c_int), value :: fd
+            end function c_close
+        end interface
+        integer(c_int) :: fd, rc
+        integer(c_int), parameter :: MODE_RW_R_R = int(o'644', c_int)
+        code = 0
+        fd = c_creat(path // c_null_char, MODE_RW_R_R)
+        if (fd < 0) then
+            code = last_errno()
+            return
+        end if
+        rc = c_close(fd)
+    end function create_file
 
     logical function atomic_file_is_open(self)
         class(atomic_file_t), intent(in) :: self
@@ -64,8 +115,19 @@ contains
         if (self%unit == -1) return
         close (self%unit, iostat=ios)
         self%unit = -1
-        if (ios == 0) call rename_file(self%temp_path, self%path, ios)
-        if (ios /= 0) call set_error(st, STATUS_IO_ERROR, 'cannot write ' // self%path)
+        if (ios /= 0) then
+            call delete_file(self%temp_path)
+            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // self%path // &
+                ' (closing it failed: is the disk full?)')
+            return
+        end if
+        call rename_file(self%temp_path, self%path, ios)
+        if (ios /= 0) then
+            ios = last_errno()
+            call delete_file(self%temp_path)
+            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // self%path // ': ' // &
+                errno_text(ios))
+        end if
     end subroutine atomic_file_commit
 
     !> Closes and deletes the temporary file: the final name is left untouched.
@@ -76,6 +138,20 @@ contains
         close (self%unit, status='delete', iostat=ios)
         self%unit = -1
     end subroutine atomic_file_discard
+
+    !> Removes `path` (unlink(2)); a failure is ignored (the file may be gone already).
+    subroutine delete_file(path)
+        use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+        character(len=*), intent(in) :: path
+        interface
+            integer(c_int) function c_unlink(pathname) bind(c, name='unlink')
+                import :: c_int, c_char
+                character(kind=c_char), intent(in) :: pathname(*)
+            end function c_unlink
+        end interface
+        integer(c_int) :: rc
+        rc = c_unlink(path // c_null_char)
+    end subroutine delete_file
 
     !> rename(2) through the C library: atomic on one file system. Also used to commit files
     !> that a library writes itself under a temporary name (MED files, result_med).

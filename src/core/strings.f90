@@ -15,7 +15,8 @@ module strings
         module procedure int4_to_text, int8_to_text, real_to_text
     end interface to_text
 
-    public :: to_upper, to_lower, to_text, real_e13, real_short, starts_with, ends_with
+    public :: to_upper, to_lower, to_text, real_e13, real_short, starts_with, ends_with, &
+        join_words
 
 contains
 
@@ -124,5 +125,18 @@ contains
         if (len(suffix) > len(text)) return
         ends_with = text(len(text) - len(suffix) + 1:) == suffix
     end function ends_with
+
+    !> The words joined by `separator` (e.g. ', ').
+    pure function join_words(words, separator) result(text)
+        type(string_t), intent(in) :: words(:)
+        character(len=*), intent(in) :: separator
+        character(len=:), allocatable :: text
+        integer :: k
+        text = ''
+        do k = 1, size(words)
+            if (k > 1) text = text // separator
+            text = text // words(k)%s
+        end do
+    end function join_words
 
 end module strings

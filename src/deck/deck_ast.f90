@@ -3,6 +3,7 @@
 !> that starts it, so every later error can be located in the deck.
 module deck_ast
     use kinds, only: i4
+    use strings, only: string_t
     implicit none
     private
 
@@ -12,7 +13,10 @@ module deck_ast
         N_IFEXP = 12, N_CALL = 13, N_KWARG = 14
     !> Statements:
     integer, parameter, public :: N_MODULE = 20, N_ASSIGN = 21, N_EXPR = 22, N_DEF = 23, &
-        N_IF = 24, N_RETURN = 25, N_BLOCK = 26, N_PASS = 27
+        N_IF = 24, N_RETURN = 25, N_BLOCK = 26, N_PASS = 27, N_FOR = 28, N_BREAK = 29, &
+        N_CONTINUE = 30, N_IMPORT = 31, N_FROM_IMPORT = 32
+    !> Indexing, slicing and attributes (expressions):
+    integer, parameter, public :: N_INDEX = 15, N_SLICE = 16, N_ATTR = 17
 
     !> One node. `text` holds the name, operator, literal spelling or string value.
     !> Children by kind:
@@ -24,22 +28,34 @@ module deck_ast
     !>   N_ASSIGN(target) [value];  N_EXPR [value];  N_RETURN [value]
     !>   N_DEF(name) [N_NAME parameters..., N_BLOCK body];  N_IF [condition, then, else?]
     !>   N_MODULE / N_BLOCK [statements...]
+    !>   N_INDEX [sequence, index];  N_ATTR(attribute) [object] (only as a callee: L.append)
+    !>   N_SLICE(parts) [sequence, start?, stop?, step?]: parts is 3 characters, '1' where
+    !>     start, stop, step are written ('010' for s[:j]), the written ones are the children
+    !>   N_FOR(variable) [sequence, N_BLOCK body];  N_BREAK;  N_CONTINUE
+    !>   N_IMPORT(dotted module name) [];  N_FROM_IMPORT(dotted module) [N_NAME names or '*']
     type, public :: node_t
         integer(i4) :: kind = 0
         character(len=:), allocatable :: text
         integer(i4) :: line = 0, col = 0
         integer(i4) :: end_line = 0          !< statements: last source line
+        integer(i4) :: file = 0              !< source file (ast%files), 0 if unknown
         integer(i4), allocatable :: kids(:)  !< exactly the children once sealed
         integer(i4) :: nk = 0                !< children while building
     end type node_t
 
-    !> The node pool; node 1..n. `root` is the N_MODULE node of a parsed deck.
+    !> The node pool; node 1..n. `root` is the N_MODULE node of a parsed deck. Several
+    !> source files (the command files of a session, imported modules) share one pool;
+    !> each node records its file (files(node%file)), so any node can be located.
     type, public :: ast_t
         type(node_t), allocatable :: nodes(:)
         integer(i4) :: n = 0
         integer(i4) :: root = 0
+        type(string_t), allocatable :: files(:)   !< file names as used in messages
+        integer(i4) :: current_file = 0           !< file of the nodes being added
     contains
         procedure :: add => ast_add
+        procedure :: use_file => ast_use_file
+        procedure :: file_name => ast_file_name
         procedure :: add_kid => ast_add_kid
         procedure :: nkids => ast_nkids
         procedure :: kid => ast_kid
@@ -69,8 +85,45 @@ contains
         self%nodes(id)%line = line
         self%nodes(id)%col = col
         self%nodes(id)%end_line = line
+        self%nodes(id)%file = self%current_file
         allocate (self%nodes(id)%kids(0))
     end function ast_add
+
+    !> Makes `name` the file of the nodes added from now on (registered on first use).
+    subroutine ast_use_file(self, name)
+        class(ast_t), intent(inout) :: self
+        character(len=*), intent(in) :: name
+        type(string_t), allocatable :: bigger(:)
+        integer :: k
+        if (.not. allocated(self%files)) allocate (self%files(0))
+        do k = 1, size(self%files)
+            if (self%files(k)%s == name) then
+                self%current_file = int(k, i4)
+                return
+            end if
+        end do
+        allocate (bigger(size(self%files) + 1))
+        do k = 1, size(self%files)
+            bigger(k)%s = self%files(k)%s
+        end do
+        bigger(size(bigger))%s = name
+        call move_alloc(bigger, self%files)
+        self%current_file = int(size(self%files), i4)
+    end subroutine ast_use_file
+
+    !> The file name of node `id` ('' if unknown).
+    function ast_file_name(self, id) result(name)
+        class(ast_t), intent(in) :: self
+        integer, intent(in) :: id
+        character(len=:), allocatable :: name
+        integer :: f
+        name = ''
+        if (id < 1 .or. id > self%n) return
+        f = self%nodes(id)%file
+        if (f < 1) return
+        if (f > size(self%files)) return
+        name = self%files(f)%s
+    end function ast_file_name
 
     !> Appends `child` to the children of `parent` (amortized: capacity doubles; `seal`
     !> trims the arrays when the parse is complete).

@@ -21,16 +21,30 @@ module deck_interpreter
     use deck_validate, only: validate_command
     use deck_math
     use deck_suggest, only: did_you_mean
-    use run_context, only: run_context_t
+    use deck_sequence, only: sequence_item, sequence_slice, sequence_length, range_steps
+    use run_context, only: run_context_t, SCOPE_SESSION
     implicit none
     private
 
     !> Deepest chain of def calls (recursion is not part of deck practice).
     integer, parameter :: MAX_CALL_DEPTH = 50
-    !> Longest string or tuple built by * repetition.
+    !> Longest string, tuple or list built by *, + or append.
     integer, parameter :: MAX_REPEAT = 1000000
+    !> Loop iterations in one pass over a session: far beyond deck practice (loops over
+    !> groups, cells or instants), and a bound so that no deck hangs parasol.
+    integer(i8), parameter :: MAX_LOOP_ITERATIONS = 1000000_i8
+    !> Sequence items built or scanned in one pass: +, *, slices and append copy the
+    !> sequence (values are flat copies), so a list of N items built by append costs about
+    !> N**2 items; this bound (a few seconds of work) keeps a deck from hanging parasol.
+    integer(i8), parameter :: MAX_BUILT_ITEMS = 20000000_i8
+    !> Modules imported inside one another.
+    integer, parameter :: MAX_IMPORT_DEPTH = 20
+    !> ctx%loop_control after break / continue.
+    integer, parameter :: LOOP_BREAK = 1, LOOP_CONTINUE = 2
 
-    !> Local variables of one def call.
+    !> Local variables of one def call. `caller` is the frame of the calling def (null at
+    !> top level): list.append updates every name bound to the same list (Python's shared
+    !> lists) in these frames too.
     type, public :: frame_t
         type(string_t), allocatable :: names(:)
         type(value_t), allocatable :: values(:)
@@ -38,54 +52,112 @@ module deck_interpreter
         integer :: depth = 0
         logical :: returned = .false.
         type(value_t) :: ret
+        type(frame_t), pointer :: caller => null()
     end type frame_t
 
     public :: load_deck, deck_from_text, evaluate_deck, eval_expression, call_def_values
+    public :: read_source_text, load_source, evaluate_session
 
 contains
 
-    !> Reads the deck file of ctx, checks its bytes, keeps its lines and parses it.
+    !> Reads the deck file of ctx, checks its bytes, keeps its lines and parses it: the
+    !> first command file of the session.
     !>  st : out, STATUS_IO_ERROR if unreadable; STATUS_DECK_ERROR located for bad content
     subroutine load_deck(ctx, st)
         type(run_context_t), intent(inout) :: ctx
         type(status_t), intent(out) :: st
         character(len=:), allocatable :: text
+        call read_source_text(ctx%deck_path, 'the deck', text, st)
+        if (st%failed()) return
+        call deck_from_text(ctx, text, st)
+    end subroutine load_deck
+
+    !> Reads a whole text file.
+    !>  path : in;  what : in, what it is for messages ('the deck', 'the module m')
+    !>  text : out;  st : out, STATUS_IO_ERROR naming the file when it cannot be read
+    subroutine read_source_text(path, what, text, st)
+        character(len=*), intent(in) :: path, what
+        character(len=:), allocatable, intent(out) :: text
+        type(status_t), intent(out) :: st
         integer :: unit, ios, length
         character(len=256) :: msg
-        open (newunit=unit, file=ctx%deck_path, access='stream', form='unformatted', &
+        text = ''
+        open (newunit=unit, file=path, access='stream', form='unformatted', &
               status='old', action='read', iostat=ios, iomsg=msg)
         if (ios /= 0) then
-            call set_error(st, STATUS_IO_ERROR, 'cannot open the deck ' // ctx%deck_path // &
+            call set_error(st, STATUS_IO_ERROR, 'cannot open ' // what // ' ' // path // &
                            ': ' // trim(msg))
             return
         end if
         inquire (unit=unit, size=length)
+        deallocate (text)
         allocate (character(len=max(length, 0)) :: text)
         if (length > 0) read (unit, iostat=ios) text
         close (unit)
         if (ios /= 0) then
-            call set_error(st, STATUS_IO_ERROR, 'cannot read the deck ' // ctx%deck_path)
-            return
+            call set_error(st, STATUS_IO_ERROR, 'cannot read ' // what // ' ' // path)
         end if
-        call deck_from_text(ctx, text, st)
-    end subroutine load_deck
+    end subroutine read_source_text
 
-    !> Parses deck text into ctx (also used by tests without a file).
+    !> Parses deck text into ctx as its first command file (also used by tests without
+    !> a file).
     subroutine deck_from_text(ctx, text, st)
         type(run_context_t), intent(inout) :: ctx
         character(len=*), intent(in) :: text
         type(status_t), intent(out) :: st
-        call check_bytes(text, ctx%deck_name, st)
+        integer :: k
+        call load_source(ctx, text, ctx%deck_name, ctx%deck_dir, '', k, st)
         if (st%failed()) return
-        call split_lines(text, ctx%lines)
-        call parse_deck(text, ctx%deck_name, ctx%ast, st)
-        if (st%failed()) return
-        if (ctx%ast%nkids(ctx%ast%root) == 0) then
-            call set_error(st, STATUS_DECK_ERROR, 'empty deck: no statement to run (a deck ' &
-                // 'starts with DEBUT() and ends with FIN())', file=ctx%deck_name, &
-                line=1, column=1)
-        end if
+        ctx%ncommand_file = max(ctx%ncommand_file, 1)
+        call ctx%begin_file(1)
     end subroutine deck_from_text
+
+    !> Checks, splits and parses the text of one source file and registers it in ctx.
+    !>  name : in, the file as named in messages;  dir : in, its folder ('' or ending '/')
+    !>  module : in, '' for a command file, else the module name
+    !>  k : out, its source index;  st : out, located errors (bytes, syntax, empty file)
+    subroutine load_source(ctx, text, name, dir, module, k, st)
+        type(run_context_t), intent(inout) :: ctx
+        character(len=*), intent(in) :: text, name, dir, module
+        integer, intent(out) :: k
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: lines(:)
+        k = 0
+        call check_bytes(text, name, st)
+        if (st%failed()) return
+        call split_lines(text, lines)
+        call parse_deck(text, name, ctx%ast, st)
+        if (st%failed()) return
+        if (ctx%ast%nkids(ctx%ast%root) == 0 .and. len(module) == 0) then
+            call set_error(st, STATUS_DECK_ERROR, 'empty deck: no statement to run (a deck ' &
+                // 'starts with DEBUT() and ends with FIN())', file=name, line=1, column=1)
+            return
+        end if
+        k = ctx%add_source(name, dir, module, lines, int(ctx%ast%nodes(ctx%ast%root)%file), &
+                           int(ctx%ast%root))
+    end subroutine load_source
+
+    !> Evaluates the command files of the session in order (one pass). Each file after the
+    !> first starts with the earlier files' names put aside: POURSUITE() brings them back.
+    !> The .mess shows where each file starts.
+    !>  st : out, the first error, located
+    subroutine evaluate_session(ctx, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(status_t), intent(out) :: st
+        integer :: k
+        do k = 1, ctx%ncommand_file
+            call ctx%begin_file(k)
+            if (ctx%ncommand_file > 1) then
+                call ctx%write_mess('')
+                call ctx%write_mess('# ==== command file ' // to_text(int(k, i4)) // ' of ' &
+                    // to_text(int(ctx%ncommand_file, i4)) // ': ' // ctx%deck_name)
+            end if
+            call evaluate_deck(ctx, st)
+            if (st%failed()) return
+            if (k < ctx%ncommand_file .and. .not. ctx%finished) call ctx%write_mess( &
+                'warning: ' // ctx%deck_name // ' has no FIN(); the next file starts')
+        end do
+    end subroutine evaluate_session
 
     subroutine split_lines(text, lines)
         character(len=*), intent(in) :: text
@@ -151,13 +223,25 @@ contains
             case (N_ASSIGN)
                 call eval(ctx, node%kids(1), v, st, frame, target=node%text)
                 if (st%failed()) return
-                call assign(ctx, node%text, v, node%line, frame)
+                call assign(ctx, id, node%text, v, frame)
             case (N_EXPR)
-                call eval(ctx, node%kids(1), v, st, frame)
+                if (is_append(ctx, node%kids(1))) then
+                    call exec_append(ctx, node%kids(1), st, frame)
+                else
+                    call eval(ctx, node%kids(1), v, st, frame)
+                end if
             case (N_DEF)
                 v%kind = VK_DEF; v%s = node%text; v%i = id
                 v%line = node%line; v%col = node%col
-                call assign(ctx, node%text, v, node%line, frame)
+                call assign(ctx, id, node%text, v, frame)
+            case (N_FOR)
+                call exec_for(ctx, id, st, frame)
+            case (N_BREAK)
+                ctx%loop_control = LOOP_BREAK
+            case (N_CONTINUE)
+                ctx%loop_control = LOOP_CONTINUE
+            case (N_IMPORT, N_FROM_IMPORT)
+                call exec_import(ctx, id, st)
             case (N_IF)
                 call eval(ctx, node%kids(1), v, st, frame)
                 if (st%failed()) return
@@ -194,17 +278,20 @@ contains
         do k = 1, ctx%ast%nkids(block)
             call exec_statement(ctx, ctx%ast%kid(block, k), st, frame)
             if (st%failed()) return
+            if (ctx%loop_control /= 0) return         ! break/continue: the loop decides
             if (present(frame)) then
                 if (frame%returned) return
             end if
         end do
     end subroutine exec_block
 
-    subroutine assign(ctx, name, v, line, frame)
+    !> Binds `name` to v: a local of the def being run, else a name of the namespace of
+    !> statement `id`'s file (the session's, or a module's).
+    subroutine assign(ctx, id, name, v, frame)
         type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
         character(len=*), intent(in) :: name
         type(value_t), intent(in) :: v
-        integer, intent(in) :: line
         type(frame_t), intent(inout), optional :: frame
         integer :: k
         if (present(frame)) then
@@ -218,9 +305,555 @@ contains
             call append_value(frame%values, v)
             frame%n = frame%n + 1
         else
-            call ctx%set_symbol(name, v, line)
+            call ctx%set_symbol(name, v, int(ctx%ast%nodes(id)%line), scope_of(ctx, id))
         end if
     end subroutine assign
+
+    !> The namespace of the code of node `id` (SCOPE_SESSION or a module's).
+    pure integer function scope_of(ctx, id)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        scope_of = ctx%scope_of_file(int(ctx%ast%nodes(id)%file))
+    end function scope_of
+
+    ! ---- loops ------------------------------------------------------------------------------
+
+    !> for NAME in SEQUENCE: body. SEQUENCE is range(...) (counted, never built), a tuple or
+    !> a list (a list appended to in the body is walked to its new end, as in Python).
+    !> Every iteration counts against MAX_LOOP_ITERATIONS and polls the time limit.
+    recursive subroutine exec_for(ctx, id, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        integer :: seq, body, slot, cursor
+        integer(i8) :: first, step, count, k
+        type(value_t) :: v, item_value
+        character(len=:), allocatable :: name
+        name = ctx%ast%nodes(id)%text
+        seq = ctx%ast%kid(id, 1)
+        body = ctx%ast%kid(id, 2)
+        if (is_range_call(ctx, seq, frame)) then
+            call range_bounds(ctx, seq, first, step, count, st, frame)
+            if (st%failed()) return
+            do k = 1, count
+                call next_iteration(ctx, id, st)
+                if (st%failed()) return
+                call assign(ctx, id, name, int_value(first + (k - 1) * step), frame)
+                if (loop_body_done(ctx, body, st, frame)) exit
+            end do
+            return
+        end if
+        call eval(ctx, seq, v, st, frame)
+        if (st%failed()) return
+        if (v%kind /= VK_TUPLE .and. v%kind /= VK_LIST) then
+            call fail(st, ctx, seq, 'a for loop walks a tuple, a list or range(...), got ' // &
+                      kind_label(v)); return
+        end if
+        call push_loop(ctx, v, slot)
+        ! A cursor on the flat tree of the sequence (deck_value): append only adds atoms at
+        ! the end, so the cursor stays valid when the list grows and the loop walks on.
+        cursor = 1
+        do
+            if (.not. allocated(ctx%loops(slot)%tree)) exit
+            if (cursor > size(ctx%loops(slot)%tree)) exit
+            call next_iteration(ctx, id, st)
+            if (st%failed()) exit
+            item_value = tree_item(ctx%loops(slot), cursor)
+            cursor = cursor + 1 + ctx%loops(slot)%tree(cursor)%nsub
+            call assign(ctx, id, name, item_value, frame)
+            if (loop_body_done(ctx, body, st, frame)) exit
+        end do
+        ctx%nloop = ctx%nloop - 1
+    end subroutine exec_for
+
+    !> The item whose atom is tree(j) of composite v.
+    function tree_item(v, j) result(x)
+        type(value_t), intent(in) :: v
+        integer, intent(in) :: j
+        type(value_t) :: x
+        type(value_t) :: one
+        one%kind = VK_TUPLE
+        one%tree = v%tree(j:j + v%tree(j)%nsub)
+        x = item(one, 1)
+    end function tree_item
+
+    !> Runs the body once; true when the loop must stop (break, return, error).
+    recursive logical function loop_body_done(ctx, body, st, frame) result(done)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: body
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        call exec_block(ctx, body, st, frame)
+        done = st%failed() .or. ctx%loop_control == LOOP_BREAK
+        ctx%loop_control = 0
+        if (present(frame)) done = done .or. frame%returned
+    end function loop_body_done
+
+    !> Counts one iteration against MAX_LOOP_ITERATIONS and polls the time limit.
+    subroutine next_iteration(ctx, id, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(status_t), intent(inout) :: st
+        ctx%iterations = ctx%iterations + 1
+        if (ctx%iterations > MAX_LOOP_ITERATIONS) then
+            call fail(st, ctx, id, 'more than ' // to_text(MAX_LOOP_ITERATIONS) // &
+                ' loop iterations in all (the limit MAX_LOOP_ITERATIONS keeps a deck from ' // &
+                'hanging parasol; is a loop endless?)'); return
+        end if
+        call ctx%deadline%check('the for loop at ' // node_where(ctx, id), st)
+        call add_context(st, file=node_file(ctx, id), line=int(ctx%ast%nodes(id)%line), &
+                         column=int(ctx%ast%nodes(id)%col))
+    end subroutine next_iteration
+
+    !> True when node `seq` is a call of the built-in range (not a deck name `range`).
+    logical function is_range_call(ctx, seq, frame)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: seq
+        type(frame_t), intent(in), optional :: frame
+        integer :: callee
+        is_range_call = .false.
+        if (ctx%ast%nodes(seq)%kind /= N_CALL) return
+        callee = ctx%ast%kid(seq, 1)
+        if (ctx%ast%nodes(callee)%kind /= N_NAME) return
+        if (ctx%ast%nodes(callee)%text /= 'range') return
+        is_range_call = .not. shadowed(ctx, 'range', scope_of(ctx, seq), frame)
+    end function is_range_call
+
+    !> range(stop) | range(start, stop[, step]) with integers: first value, step, count.
+    recursive subroutine range_bounds(ctx, seq, first, step, count, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: seq
+        integer(i8), intent(out) :: first, step, count
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        type(value_t), allocatable :: args(:)
+        type(value_t) :: kwargs
+        integer(i8) :: b(3)
+        integer :: k
+        character(len=:), allocatable :: message
+        first = 0; step = 1; count = 0
+        call eval_arguments(ctx, seq, args, kwargs, st, frame)
+        if (st%failed()) return
+        if (nitems(kwargs) > 0 .or. size(args) < 1 .or. size(args) > 3) then
+            call fail(st, ctx, seq, 'range() takes 1 to 3 integers: range(stop), ' // &
+                      'range(start, stop) or range(start, stop, step)'); return
+        end if
+        do k = 1, size(args)
+            if (args(k)%kind /= VK_INT) then
+                call fail(st, ctx, seq, 'range() takes integers, got ' // &
+                          kind_label(args(k)) // ' (use int(...))'); return
+            end if
+            b(k) = args(k)%i
+        end do
+        if (size(args) == 1) then
+            b(2) = b(1); b(1) = 0
+        end if
+        if (size(args) == 3) step = b(3)
+        first = b(1)
+        call range_steps(b(1), b(2), step, count, message)
+        if (len(message) > 0) call fail(st, ctx, seq, message)
+    end subroutine range_bounds
+
+    !> Pushes the sequence a for loop walks (lists only matter: append may grow them).
+    subroutine push_loop(ctx, v, slot)
+        type(run_context_t), intent(inout) :: ctx
+        type(value_t), intent(in) :: v
+        integer, intent(out) :: slot
+        type(value_t), allocatable :: bigger(:)
+        logical, allocatable :: grown(:)
+        integer :: k
+        if (ctx%nloop == size(ctx%loops)) then
+            allocate (bigger(2 * ctx%nloop), grown(2 * ctx%nloop))
+            do k = 1, ctx%nloop
+                bigger(k) = ctx%loops(k)
+                grown(k) = ctx%loop_grown(k)
+            end do
+            call move_alloc(bigger, ctx%loops)
+            call move_alloc(grown, ctx%loop_grown)
+        end if
+        ctx%nloop = ctx%nloop + 1
+        slot = ctx%nloop
+        ctx%loops(slot) = v
+        ctx%loop_grown(slot) = .false.
+    end subroutine push_loop
+
+    ! ---- list.append --------------------------------------------------------------------
+
+    !> True when expression `e` is a call NAME.append(...).
+    logical function is_append(ctx, e)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: e
+        is_append = .false.
+        if (ctx%ast%nodes(e)%kind /= N_CALL) return
+        is_append = ctx%ast%nodes(ctx%ast%kid(e, 1))%kind == N_ATTR
+    end function is_append
+
+    !> NAME.append(VALUE) as a statement. Python lists are shared between the names bound
+    !> to them; parasol's values are copies, so the list is identified (value_t%i of a list)
+    !> and every name and loop bound to it is updated: the deck's names, the module names,
+    !> the locals of the running defs, the lists for loops walk. A copy parasol cannot
+    !> update (the list inside a tuple, a list or a _F) is a located error rather than a
+    !> silent difference from Python.
+    recursive subroutine exec_append(ctx, e, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: e
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional, target :: frame
+        integer :: attr, target_node, k
+        type(value_t) :: old, x, new
+        type(value_t), allocatable :: args(:)
+        type(value_t) :: kwargs
+        type(frame_t), pointer :: f
+        integer(i8) :: n
+        character(len=:), allocatable :: name
+        attr = ctx%ast%kid(e, 1)
+        target_node = ctx%ast%kid(attr, 1)
+        if (ctx%ast%nodes(target_node)%kind /= N_NAME) then
+            call fail(st, ctx, attr, 'append works on a list held by a name ' // &
+                      '(NAME.append(VALUE))'); return
+        end if
+        name = ctx%ast%nodes(target_node)%text
+        call eval(ctx, target_node, old, st, frame)
+        if (st%failed()) return
+        if (old%kind /= VK_LIST) then
+            call fail(st, ctx, attr, name // ' is ' // kind_label(old) // ', append needs ' // &
+                      'a list (a tuple cannot grow: build a list [ ... ])'); return
+        end if
+        call eval_arguments(ctx, e, args, kwargs, st, frame)
+        if (st%failed()) return
+        if (size(args) /= 1 .or. nitems(kwargs) > 0) then
+            call fail(st, ctx, attr, 'append takes one value: ' // name // '.append(VALUE)')
+            return
+        end if
+        x = args(1)
+        if (holds_list(x, old%i)) then
+            call fail(st, ctx, attr, 'a list cannot be appended to itself'); return
+        end if
+        if (nitems(old) + 1 > MAX_REPEAT) then
+            call fail(st, ctx, attr, 'list too long (more than ' // &
+                      to_text(int(MAX_REPEAT, i4)) // ' items)'); return
+        end if
+        new = appended(old, x)
+        ! The work: the copy, and the scan of every name for other copies of the list.
+        n = size(new%tree)
+        do k = 1, ctx%nsymbol
+            if (allocated(ctx%symbols(k)%value%tree)) n = n + size(ctx%symbols(k)%value%tree)
+        end do
+        call count_built(ctx, attr, n, st)
+        if (st%failed()) return
+        ! Every copy of the list: frames (this def and its callers), namespaces, loops.
+        if (present(frame)) then
+            f => frame
+            do while (associated(f))
+                do k = 1, f%n
+                    call update_copy(f%values(k), f%names(k)%s)
+                    if (st%failed()) return
+                end do
+                f => f%caller
+            end do
+        end if
+        do k = 1, ctx%nsymbol
+            call update_copy(ctx%symbols(k)%value, ctx%symbols(k)%name)
+            if (st%failed()) return
+        end do
+        do k = 1, ctx%nloop
+            if (ctx%loops(k)%kind == VK_LIST .and. ctx%loops(k)%i == old%i) then
+                ctx%loops(k) = new
+                ctx%loop_grown(k) = .true.
+            else if (holds_list(ctx%loops(k), old%i)) then
+                call fail(st, ctx, attr, 'the list ' // name // ' is also inside the ' // &
+                    'sequence a running for loop walks; parasol cannot update that copy ' // &
+                    '(append to a list before putting it in a tuple or list)'); return
+            end if
+        end do
+    contains
+        subroutine update_copy(v, holder)
+            type(value_t), intent(inout) :: v
+            character(len=*), intent(in) :: holder
+            integer :: line, col
+            if (v%kind == VK_LIST .and. v%i == old%i) then
+                line = v%line; col = v%col
+                v = new
+                v%line = line; v%col = col
+            else if (holds_list(v, old%i)) then
+                call fail(st, ctx, attr, 'the list ' // name // ' is also inside ' // holder &
+                    // ' (' // kind_label(v) // '); Python would change that copy too, ' // &
+                    'parasol cannot (append to a list before putting it in a tuple, a ' // &
+                    'list or a _F)')
+            end if
+        end subroutine update_copy
+    end subroutine exec_append
+
+    !> The list `list` with x appended (same identity), built on the flat tree.
+    function appended(list, x) result(v)
+        type(value_t), intent(in) :: list, x
+        type(value_t) :: v
+        type(value_t) :: one
+        integer :: n
+        one = sequence_value(VK_LIST, [x])          ! x's atom and its descendants
+        n = 0
+        if (allocated(list%tree)) n = size(list%tree)
+        v%kind = VK_LIST
+        v%i = list%i
+        allocate (v%tree(n + size(one%tree)))
+        if (n > 0) v%tree(1:n) = list%tree
+        v%tree(n + 1:) = one%tree
+    end function appended
+
+    !> True when composite v holds, at any depth, the list of identity `id`.
+    pure logical function holds_list(v, id)
+        type(value_t), intent(in) :: v
+        integer(i8), intent(in) :: id
+        integer :: j
+        holds_list = v%kind == VK_LIST .and. v%i == id
+        if (holds_list .or. .not. allocated(v%tree)) return
+        do j = 1, size(v%tree)
+            if (v%tree(j)%kind == VK_LIST .and. v%tree(j)%i == id) then
+                holds_list = .true.
+                return
+            end if
+        end do
+    end function holds_list
+
+    !> A new list value (its own identity, for append).
+    function new_list(ctx, items) result(v)
+        type(run_context_t), intent(inout) :: ctx
+        type(value_t), intent(in) :: items(:)
+        type(value_t) :: v
+        v = sequence_value(VK_LIST, items)
+        ctx%next_list = ctx%next_list + 1
+        v%i = ctx%next_list
+    end function new_list
+
+    !> Counts n items built against MAX_BUILT_ITEMS.
+    subroutine count_built(ctx, id, n, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        integer(i8), intent(in) :: n
+        type(status_t), intent(inout) :: st
+        ctx%built = ctx%built + n
+        if (ctx%built > MAX_BUILT_ITEMS) call fail(st, ctx, id, 'more than ' // &
+            to_text(MAX_BUILT_ITEMS) // ' sequence items built in all (the limit ' // &
+            'MAX_BUILT_ITEMS keeps a deck from hanging parasol; +, slices and append ' // &
+            'copy the sequence)')
+    end subroutine count_built
+
+    ! ---- imports ----------------------------------------------------------------------------
+
+    !> import M / from M import * | A, B. `math` and `code_aster.Commands` are built in
+    !> (no-ops); any other module is NAME.py, bound by an export file's `F nom` line or
+    !> beside the importing file, run once per pass in a namespace of its own; the names
+    !> asked for are then bound in the importing file's namespace.
+    recursive subroutine exec_import(ctx, id, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(status_t), intent(inout) :: st
+        character(len=:), allocatable :: module
+        integer :: k, src, name_node
+        if (ctx%ast%nodes(id)%kind == N_IMPORT) then
+            do k = 1, ctx%ast%nkids(id)
+                module = ctx%ast%nodes(ctx%ast%kid(id, k))%text
+                select case (module)
+                case ('math', 'code_aster', 'code_aster.Commands')
+                case default
+                    call fail(st, ctx, id, 'import ' // module // ': only "import math" is ' &
+                        // 'supported; a module of the deck is read with from ' // module // &
+                        ' import NAME (or *)'); return
+                end select
+            end do
+            return
+        end if
+        module = ctx%ast%nodes(id)%text
+        select case (module)
+        case ('math')
+            do k = 1, ctx%ast%nkids(id)
+                name_node = ctx%ast%kid(id, k)
+                call check_math_name(ctx, name_node, st)
+                if (st%failed()) return
+            end do
+            return
+        case ('code_aster.Commands')
+            do k = 1, ctx%ast%nkids(id)
+                name_node = ctx%ast%kid(id, k)
+                if (ctx%ast%nodes(name_node)%text == '*') cycle
+                if (ctx%catalog%find_command(ctx%ast%nodes(name_node)%text) > 0) cycle
+                if (ctx%ast%nodes(name_node)%text == '_F') cycle
+                call fail(st, ctx, name_node, 'code_aster.Commands has no command ' // &
+                    ctx%ast%nodes(name_node)%text // ' known to parasol' // &
+                    did_you_mean(ctx%ast%nodes(name_node)%text, command_names(ctx))); return
+            end do
+            return
+        end select
+        if (module == 'code_aster' .or. index(module, 'code_aster.') == 1 .or. &
+            index(module, '.') > 0) then
+            call fail(st, ctx, id, 'module ' // module // ' is not available in parasol ' // &
+                '(built in: math, code_aster.Commands; a module of the deck is NAME.py)')
+            return
+        end if
+        call import_module(ctx, id, module, src, st)
+        if (st%failed()) return
+        call bind_imported(ctx, id, src, st)
+    end subroutine exec_import
+
+    !> from math import NAME: NAME must be one of the built-in math names.
+    subroutine check_math_name(ctx, name_node, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: name_node
+        type(status_t), intent(inout) :: st
+        character(len=:), allocatable :: name
+        name = ctx%ast%nodes(name_node)%text
+        if (name == '*' .or. name == 'pi' .or. name == 'e') return
+        if (builtin_id(name) > 0) return
+        call fail(st, ctx, name_node, 'math.' // name // ' is not built into parasol ' // &
+            '(known: sqrt exp log log10 sin cos tan asin acos atan atan2 sinh cosh tanh ' // &
+            'floor ceil pi e)')
+    end subroutine check_math_name
+
+    !> Finds, loads (first time) and runs (once per pass) module `module`; src is its
+    !> source index. A module being imported again further down is an import cycle.
+    recursive subroutine import_module(ctx, id, module, src, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: module
+        integer, intent(out) :: src
+        type(status_t), intent(inout) :: st
+        character(len=:), allocatable :: path, dir, text, chain
+        integer :: k, slash, saved_statement, saved_root
+        type(status_t) :: lst
+        src = 0
+        do k = 1, ctx%nsource
+            if (ctx%sources(k)%module == module) src = k
+        end do
+        if (src == 0) then
+            call find_module(ctx, id, module, path, st)
+            if (st%failed()) return
+            call read_source_text(path, 'the module file', text, lst)
+            if (lst%failed()) then
+                call fail(st, ctx, id, lst%message); return
+            end if
+            slash = index(path, '/', back=.true.)
+            dir = path(1:slash)
+            saved_root = ctx%ast%root
+            call load_source(ctx, text, path, dir, module, src, lst)
+            ctx%ast%root = saved_root
+            if (lst%failed()) then
+                st = lst; return
+            end if
+        end if
+        select case (ctx%sources(src)%state)
+        case (2)
+            return                                 ! run already in this pass
+        case (1)
+            chain = ''
+            do k = 1, ctx%nsource
+                if (ctx%sources(k)%state == 1) chain = chain // ctx%sources(k)%name // ' -> '
+            end do
+            call fail(st, ctx, id, 'import cycle: ' // chain // ctx%sources(src)%name // &
+                ' (a module cannot import, directly or not, a module that imports it)'); return
+        end select
+        if (ctx%import_depth >= MAX_IMPORT_DEPTH) then
+            call fail(st, ctx, id, 'modules imported more than ' // &
+                to_text(int(MAX_IMPORT_DEPTH, i4)) // ' deep'); return
+        end if
+        ctx%sources(src)%state = 1
+        call ctx%write_mess('  -- import of module ' // module // ' from ' // &
+                            ctx%sources(src)%name // ' (' // node_where(ctx, id) // ')')
+        ctx%import_depth = ctx%import_depth + 1
+        saved_statement = ctx%statement
+        do k = 1, ctx%ast%nkids(ctx%sources(src)%root)
+            call exec_statement(ctx, ctx%ast%kid(ctx%sources(src)%root, k), st)
+            if (st%failed()) exit
+        end do
+        ctx%statement = saved_statement
+        ctx%import_depth = ctx%import_depth - 1
+        if (st%failed()) return
+        ctx%sources(src)%state = 2
+    end subroutine import_module
+
+    !> The file of module `module`: an `F nom` binding, else NAME.py beside the file that
+    !> imports it.
+    subroutine find_module(ctx, id, module, path, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=*), intent(in) :: module
+        character(len=:), allocatable, intent(out) :: path
+        type(status_t), intent(inout) :: st
+        integer :: k, src
+        logical :: exists
+        do k = size(ctx%module_names), 1, -1
+            if (ctx%module_names(k)%s == module) then
+                path = ctx%module_paths(k)%s
+                return
+            end if
+        end do
+        src = ctx%source_of_file(int(ctx%ast%nodes(id)%file))
+        path = module // '.py'
+        if (src > 0) path = ctx%sources(src)%dir // module // '.py'
+        inquire (file=path, exist=exists)
+        if (exists) return
+        call fail(st, ctx, id, 'module ' // module // ' not found: no file ' // path // &
+            ' and no "F nom ' // module // '.py" line in the export file (a module of the ' // &
+            'deck is NAME.py beside it)')
+    end subroutine find_module
+
+    !> Binds the names an import asks for (or every public name for *) from module src's
+    !> namespace into the namespace of the importing statement.
+    subroutine bind_imported(ctx, id, src, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id, src
+        type(status_t), intent(inout) :: st
+        integer :: k, j, name_node, target_scope, n
+        type(string_t), allocatable :: known(:)
+        character(len=:), allocatable :: name
+        type(value_t) :: v
+        target_scope = scope_of(ctx, id)
+        if (ctx%ast%nodes(ctx%ast%kid(id, 1))%text == '*') then
+            n = ctx%nsymbol                    ! set_symbol may append: walk the old ones
+            do j = 1, n
+                if (ctx%symbols(j)%scope /= src) cycle
+                name = ctx%symbols(j)%name     ! copies: set_symbol may move the table
+                if (name(1:1) == '_') cycle    ! Python: * skips the _names
+                v = ctx%symbols(j)%value
+                call ctx%set_symbol(name, v, int(ctx%ast%nodes(id)%line), target_scope)
+            end do
+            return
+        end if
+        do k = 1, ctx%ast%nkids(id)
+            name_node = ctx%ast%kid(id, k)
+            name = ctx%ast%nodes(name_node)%text
+            j = ctx%find_symbol(name, src)
+            if (j == 0) then
+                allocate (known(0))
+                do j = 1, ctx%nsymbol
+                    if (ctx%symbols(j)%scope == src) call append_string(known, &
+                        ctx%symbols(j)%name)
+                end do
+                call fail(st, ctx, name_node, 'cannot import ' // name // ' from ' // &
+                    ctx%sources(src)%name // ' (it does not define it' // &
+                    did_you_mean(name, known) // ')'); return
+            end if
+            v = ctx%symbols(j)%value
+            call ctx%set_symbol(name, v, int(ctx%ast%nodes(id)%line), target_scope)
+        end do
+    end subroutine bind_imported
+
+    !> 'file:line' of node id, for messages.
+    function node_where(ctx, id) result(text)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=:), allocatable :: text
+        text = node_file(ctx, id) // ':' // to_text(int(ctx%ast%nodes(id)%line, i4))
+    end function node_where
+
+    !> The file of node id as named in messages (the current command file if unknown).
+    function node_file(ctx, id) result(name)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        character(len=:), allocatable :: name
+        name = ctx%ast%file_name(id)
+        if (len(name) == 0) name = ctx%deck_name
+    end function node_file
 
     ! ---- expressions ------------------------------------------------------------------------
 
@@ -273,7 +906,16 @@ contains
                 call eval(ctx, ctx%ast%kid(id, k), list%items(k), st, frame)
                 if (st%failed()) return
             end do
-            v = pack_values(merge(VK_TUPLE, VK_LIST, ctx%ast%nodes(id)%kind == N_TUPLE), list)
+            if (ctx%ast%nodes(id)%kind == N_TUPLE) then
+                v = pack_values(VK_TUPLE, list)
+            else
+                v = new_list(ctx, list%items)
+            end if
+        case (N_INDEX, N_SLICE)
+            call eval_subscript(ctx, id, v, st, frame)
+        case (N_ATTR)
+            call fail(st, ctx, id, 'LIST.append(VALUE) is a statement of its own (it ' // &
+                      'returns None)')
         case (N_UNARY)
             call eval(ctx, ctx%ast%kid(id, 1), a, st, frame)
             if (st%failed()) return
@@ -310,7 +952,61 @@ contains
         end if
     end subroutine eval
 
-    !> Name lookup: locals of the def, deck variables, built-ins.
+    !> seq[i] and seq[start:stop:step] on a tuple or list (deck_sequence); a slice of a
+    !> list is a new list.
+    recursive subroutine eval_subscript(ctx, id, v, st, frame)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(frame_t), intent(inout), optional :: frame
+        type(value_t) :: seq, b
+        type(value_t), allocatable :: items(:)
+        character(len=:), allocatable :: message, parts
+        logical :: given(3)
+        integer(i8) :: bounds(3)
+        integer :: k, j
+        call eval(ctx, ctx%ast%kid(id, 1), seq, st, frame)
+        if (st%failed()) return
+        given = .false.; bounds = 0
+        if (ctx%ast%nodes(id)%kind == N_INDEX) then
+            parts = '100'
+        else
+            parts = ctx%ast%nodes(id)%text
+        end if
+        j = 1
+        do k = 1, 3
+            if (parts(k:k) /= '1') cycle
+            j = j + 1
+            call eval(ctx, ctx%ast%kid(id, j), b, st, frame)
+            if (st%failed()) return
+            if (b%kind == VK_NONE .and. ctx%ast%nodes(id)%kind == N_SLICE) cycle
+            if (b%kind /= VK_INT) then
+                call fail(st, ctx, ctx%ast%kid(id, j), 'an index must be an integer, got ' // &
+                          kind_label(b) // ' (use int(...))'); return
+            end if
+            given(k) = .true.; bounds(k) = b%i
+        end do
+        if (ctx%ast%nodes(id)%kind == N_INDEX) then
+            call sequence_item(seq, bounds(1), v, message)
+            if (len(message) > 0) call fail(st, ctx, id, message)
+            return
+        end if
+        call sequence_slice(seq, given, bounds, items, message)
+        if (len(message) > 0) then
+            call fail(st, ctx, id, message); return
+        end if
+        call count_built(ctx, id, int(size(items), i8), st)
+        if (st%failed()) return
+        if (seq%kind == VK_LIST) then
+            v = new_list(ctx, items)
+        else
+            v = sequence_value(VK_TUPLE, items)
+        end if
+    end subroutine eval_subscript
+
+    !> Name lookup: locals of the def, names of the code's namespace (the session's or its
+    !> module's), built-ins.
     subroutine lookup(ctx, id, v, st, frame)
         type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
@@ -328,12 +1024,17 @@ contains
                 end if
             end do
         end if
-        k = ctx%find_symbol(name)
+        k = ctx%find_symbol(name, scope_of(ctx, id))
         if (k > 0) then
             v = ctx%symbols(k)%value
             return
         end if
         select case (name)
+        case ('len')
+            v%kind = VK_BUILTIN; v%s = name; return
+        case ('range')
+            call fail(st, ctx, id, 'range() is only supported as the sequence of a for ' // &
+                      'loop (for i in range(n):)'); return
         case ('pi', 'math.pi')
             v = real_value(PI_VALUE); return
         case ('math.e')
@@ -363,7 +1064,7 @@ contains
         integer, intent(in) :: id
         character(len=*), intent(in) :: name
         type(status_t), intent(inout) :: st
-        integer :: k, s
+        integer :: k, s, root, src
         type(string_t), allocatable :: known(:)
         if (len(name) > 5) then
             if (name(1:5) == 'math.') then
@@ -373,8 +1074,17 @@ contains
                 return
             end if
         end if
-        do k = 1, ctx%ast%nkids(ctx%ast%root)
-            s = ctx%ast%kid(ctx%ast%root, k)
+        if (ctx%stashed_name(name) .and. scope_of(ctx, id) == SCOPE_SESSION) then
+            call fail(st, ctx, id, 'name ' // name // ' is not defined yet in this file: ' // &
+                'it belongs to the session of the earlier command files (continue it with ' // &
+                'POURSUITE() before this line)')
+            return
+        end if
+        root = ctx%ast%root
+        src = ctx%source_of_file(int(ctx%ast%nodes(id)%file))
+        if (src > 0) root = ctx%sources(src)%root
+        do k = 1, ctx%ast%nkids(root)
+            s = ctx%ast%kid(root, k)
             if ((ctx%ast%nodes(s)%kind == N_ASSIGN .or. ctx%ast%nodes(s)%kind == N_DEF) .and. &
                 ctx%ast%nodes(s)%text == name .and. s /= ctx%statement) then
                 if (ctx%ast%nodes(s)%line >= ctx%ast%nodes(id)%line) then
@@ -387,7 +1097,8 @@ contains
         end do
         allocate (known(0))
         do k = 1, ctx%nsymbol
-            call append_string(known, ctx%symbols(k)%name)
+            if (ctx%symbols(k)%scope == scope_of(ctx, id)) &
+                call append_string(known, ctx%symbols(k)%name)
         end do
         do k = 1, ctx%catalog%ncmd
             call append_string(known, ctx%catalog%cmds(k)%name)
@@ -415,7 +1126,7 @@ contains
             name = ctx%ast%nodes(callee)%text
             block
                 icmd = ctx%catalog%find_command(name)
-                if (.not. shadowed(ctx, name, frame)) then
+                if (.not. shadowed(ctx, name, scope_of(ctx, id), frame)) then
                     if (icmd > 0 .or. name == '_F') then
                         call eval_arguments(ctx, id, args, kwargs, st, frame)
                         if (st%failed()) return
@@ -432,8 +1143,7 @@ contains
                         end if
                         return
                     end if
-                    if (is_command_like(name) .and. ctx%find_symbol(name) == 0 .and. &
-                        builtin_id(name) == 0) then
+                    if (is_command_like(name) .and. builtin_id(name) == 0) then
                         call fail(st, ctx, callee, 'unknown command ' // name // &
                                   did_you_mean(name, command_names(ctx)))
                         return
@@ -451,7 +1161,11 @@ contains
         end if
         select case (f%kind)
         case (VK_BUILTIN)
-            call call_builtin(ctx, id, f%s, args, v, st)
+            if (f%s == 'len') then
+                call call_len(ctx, id, args, v, st)
+            else
+                call call_builtin(ctx, id, f%s, args, v, st)
+            end if
         case (VK_DEF)
             call call_def_values(ctx, int(f%i), args, v, st, id, frame)
         case (VK_CONCEPT)
@@ -461,18 +1175,40 @@ contains
         end select
     end subroutine eval_call
 
-    logical function shadowed(ctx, name, frame)
+    !> True when `name` is a local of the def or a name of namespace `scope`.
+    logical function shadowed(ctx, name, scope, frame)
         type(run_context_t), intent(in) :: ctx
         character(len=*), intent(in) :: name
+        integer, intent(in) :: scope
         type(frame_t), intent(in), optional :: frame
         integer :: k
-        shadowed = ctx%find_symbol(name) > 0
+        shadowed = ctx%find_symbol(name, scope) > 0
         if (present(frame)) then
             do k = 1, frame%n
                 if (frame%names(k)%s == name) shadowed = .true.
             end do
         end if
     end function shadowed
+
+    !> len(x) of a tuple, a list or a string.
+    subroutine call_len(ctx, id, args, v, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: args(:)
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        integer(i8) :: n
+        character(len=:), allocatable :: message
+        if (size(args) /= 1) then
+            call fail(st, ctx, id, 'len() takes 1 argument, got ' // &
+                      to_text(int(size(args), i4))); return
+        end if
+        call sequence_length(args(1), n, message)
+        if (len(message) > 0) then
+            call fail(st, ctx, id, message); return
+        end if
+        v = int_value(n)
+    end subroutine call_len
 
     !> Upper-case names with an underscore or of 4+ letters look like command names.
     pure logical function is_command_like(name)
@@ -543,8 +1279,8 @@ contains
         type(value_t), intent(in) :: args(:)
         type(value_t), intent(out) :: v
         type(status_t), intent(inout) :: st
-        type(frame_t), intent(in), optional :: frame
-        type(frame_t) :: local
+        type(frame_t), intent(inout), optional, target :: frame
+        type(frame_t), target :: local
         integer :: np, k
         np = ctx%ast%nkids(def_node) - 1
         if (size(args) /= np) then
@@ -553,7 +1289,10 @@ contains
             return
         end if
         local%depth = 1
-        if (present(frame)) local%depth = frame%depth + 1
+        if (present(frame)) then
+            local%depth = frame%depth + 1
+            local%caller => frame
+        end if
         if (local%depth > MAX_CALL_DEPTH) then
             call fail(st, ctx, call_id, 'def calls nested deeper than ' // &
                       to_text(int(MAX_CALL_DEPTH, i4)) // ' (recursion is not supported)')
@@ -673,12 +1412,24 @@ contains
         class(concept_t), pointer :: ptr
         integer :: h, line, col
         logical :: run_it
+        character(len=:), allocatable :: file
         line = ctx%ast%nodes(name_node)%line; col = ctx%ast%nodes(name_node)%col
+        file = node_file(ctx, name_node)
         if (ctx%finished) then
             call fail(st, ctx, name_node, 'command ' // ctx%catalog%cmds(icmd)%name // &
                       ' after FIN (FIN ends the deck)'); return
         end if
-        call validate_command(ctx%catalog, icmd, kwargs, ctx%deck_name, line, col, cmd, st)
+        if (ctx%import_depth > 0) then
+            call fail(st, ctx, name_node, 'command ' // ctx%catalog%cmds(icmd)%name // &
+                ' while a module is imported (a module gives def functions and values; ' // &
+                'call commands in the command file)'); return
+        end if
+        call ctx%deadline%check(ctx%catalog%cmds(icmd)%name // ' at ' // &
+                                node_where(ctx, name_node), st)
+        if (st%failed()) then
+            call add_context(st, file=file, line=line, column=col); return
+        end if
+        call validate_command(ctx%catalog, icmd, kwargs, file, line, col, cmd, st)
         if (st%failed()) return
         cmd%source = statement_source(ctx)
         h = ctx%find_handler(cmd%name)
@@ -688,7 +1439,7 @@ contains
             call echo_statement(ctx, cmd%name, line)
             if (h == 0) then
                 call set_error(st, STATUS_NOT_IMPLEMENTED, cmd%name // &
-                    ' is not implemented yet', file=ctx%deck_name, line=line, column=col)
+                    ' is not implemented yet', file=file, line=line, column=col)
                 return
             end if
         end if
@@ -697,7 +1448,7 @@ contains
                 type(status_t) :: hst
                 call ctx%handlers(h)%run(ctx, cmd, result, hst)
                 if (hst%failed()) then
-                    call add_context(hst, file=ctx%deck_name, line=line, column=col, &
+                    call add_context(hst, file=file, line=line, column=col, &
                                      command=cmd%name)
                     st = hst
                     return
@@ -714,7 +1465,7 @@ contains
         if (cmd%name == 'FIN') ctx%finished = .true.
         if (.not. allocated(result)) then
             if (len(cmd%result_type) > 0) call set_error(st, STATUS_INTERNAL, cmd%name // &
-                ' produced no result', file=ctx%deck_name, line=line, column=col)
+                ' produced no result', file=file, line=line, column=col)
             return
         end if
         result%name = ''
@@ -790,7 +1541,7 @@ contains
     end subroutine unary
 
     subroutine binary(ctx, id, op, a, b, v, st)
-        type(run_context_t), intent(in) :: ctx
+        type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
         character(len=*), intent(in) :: op
         type(value_t), intent(in) :: a, b
@@ -817,13 +1568,27 @@ contains
             return
         end if
         if (op == '+' .and. a%kind == VK_STR .and. b%kind == VK_STR) then
+            if (real(len(a%s), dp) + real(len(b%s), dp) > real(MAX_REPEAT, dp)) then
+                call fail(st, ctx, id, 'string too long (more than ' // &
+                          to_text(int(MAX_REPEAT, i4)) // ' characters)'); return
+            end if
             v = str_value(a%s // b%s); return
         end if
         if (op == '+' .and. (a%kind == VK_TUPLE .or. a%kind == VK_LIST) .and. &
             b%kind == a%kind) then
+            if (nitems(a) + nitems(b) > MAX_REPEAT) then
+                call fail(st, ctx, id, kind_label(a) // ' too long (more than ' // &
+                          to_text(int(MAX_REPEAT, i4)) // ' items)'); return
+            end if
+            call count_built(ctx, id, int(nitems(a) + nitems(b), i8), st)
+            if (st%failed()) return
             la = unpack_value(a); lb = unpack_value(b)
             call append_values(la%items, lb%items)
-            v = sequence_value(a%kind, la%items)
+            if (a%kind == VK_LIST) then
+                v = new_list(ctx, la%items)
+            else
+                v = sequence_value(a%kind, la%items)
+            end if
             return
         end if
         if (op == '*' .and. (a%kind == VK_STR .or. a%kind == VK_TUPLE .or. &
@@ -835,7 +1600,7 @@ contains
     end subroutine binary
 
     subroutine repeat_value(ctx, id, a, n, v, st)
-        type(run_context_t), intent(in) :: ctx
+        type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
         type(value_t), intent(in) :: a
         integer(i8), intent(in) :: n
@@ -855,12 +1620,18 @@ contains
         if (a%kind == VK_STR) then
             v = str_value(repeat(a%s, int(max(n, 0_i8))))
         else
+            if (n > 0) call count_built(ctx, id, int(length, i8) * n, st)
+            if (st%failed()) return
             la = unpack_value(a)
             allocate (all(0))
             do k = 1, int(n)
                 call append_values(all, la%items)
             end do
-            v = sequence_value(a%kind, all)
+            if (a%kind == VK_LIST) then
+                v = new_list(ctx, all)
+            else
+                v = sequence_value(a%kind, all)
+            end if
         end if
     end subroutine repeat_value
 
@@ -1014,7 +1785,7 @@ contains
         integer, intent(in) :: id
         character(len=*), intent(in) :: message
         if (st%failed()) return
-        call set_error(st, STATUS_DECK_ERROR, message, file=ctx%deck_name, &
+        call set_error(st, STATUS_DECK_ERROR, message, file=node_file(ctx, id), &
                        line=ctx%ast%nodes(id)%line, column=ctx%ast%nodes(id)%col)
     end subroutine fail
 

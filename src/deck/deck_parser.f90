@@ -19,6 +19,8 @@ module deck_parser
         integer :: pos = 1
         integer :: depth = 0
         integer :: def_depth = 0
+        integer :: loop_depth = 0     !< for loops around the statement (break/continue)
+        integer :: block_depth = 0    !< indented blocks around the statement (imports)
         character(len=:), allocatable :: file
     end type parser_t
 
@@ -40,6 +42,7 @@ contains
         first = ast%n + 1
         call tokenize(text, file, p%toks, st)
         if (st%failed()) return
+        call ast%use_file(file)
         root = ast%add(N_MODULE, file, 1, 1)
         do
             call skip_newlines(p)
@@ -73,6 +76,7 @@ contains
         first = ast%n + 1
         call tokenize(text, file, p%toks, st, line0, col0)
         if (st%failed()) return
+        call ast%use_file(file)
         ! A VALE string may span lines (triple quotes): line ends and indentation inside it
         ! are insignificant, as inside brackets.
         p%toks = pack(p%toks, p%toks%kind /= TOK_NEWLINE .and. p%toks%kind /= TOK_INDENT &
@@ -106,11 +110,13 @@ contains
         integer, intent(in) :: block
         type(status_t), intent(inout) :: st
         integer :: stmt
-        if (is_name(p, 'def') .or. is_name(p, 'if')) then
+        if (is_name(p, 'def') .or. is_name(p, 'if') .or. is_name(p, 'for')) then
             call enter(p, st)
             if (st%failed()) return
             if (is_name(p, 'def')) then
                 call parse_def(p, ast, stmt, st)
+            else if (is_name(p, 'for')) then
+                call parse_for(p, ast, stmt, st)
             else
                 call parse_if(p, ast, stmt, st)
             end if
@@ -149,9 +155,23 @@ contains
         integer :: e, value, line, col, op_line, op_col
         character(len=:), allocatable :: op
         stmt = 0
+        line = p%toks(p%pos)%line; col = p%toks(p%pos)%col
+        if (is_name(p, 'import') .or. is_name(p, 'from')) then
+            call parse_import(p, ast, stmt, st)
+            if (st%ok()) ast%nodes(stmt)%end_line = p%toks(max(1, p%pos - 1))%line
+            return
+        end if
+        if (is_name(p, 'break') .or. is_name(p, 'continue')) then
+            if (p%loop_depth == 0) then
+                call fail_at(p, st, '"' // peek_text(p) // '" outside a for loop'); return
+            end if
+            stmt = ast%add(merge(N_BREAK, N_CONTINUE, is_name(p, 'break')), peek_text(p), &
+                           line, col)
+            p%pos = p%pos + 1
+            return
+        end if
         call refuse_keywords(p, st)
         if (st%failed()) return
-        line = p%toks(p%pos)%line; col = p%toks(p%pos)%col
         if (is_name(p, 'return')) then
             if (p%def_depth == 0) then
                 call fail_at(p, st, '"return" outside a def'); return
@@ -205,7 +225,7 @@ contains
         type(ast_t), intent(inout) :: ast
         integer, intent(out) :: stmt
         type(status_t), intent(inout) :: st
-        integer :: body
+        integer :: body, saved_loops
         stmt = 0
         p%pos = p%pos + 1
         if (peek_kind(p) /= TOK_NAME) then
@@ -237,12 +257,144 @@ contains
         end do
         p%pos = p%pos + 1
         p%def_depth = p%def_depth + 1
+        saved_loops = p%loop_depth
+        p%loop_depth = 0                       ! break/continue do not cross a def
         call parse_block(p, ast, body, st)
+        p%loop_depth = saved_loops
         p%def_depth = p%def_depth - 1
         if (st%failed()) return
         call ast%add_kid(stmt, body)
         ast%nodes(stmt)%end_line = ast%nodes(body)%end_line
     end subroutine parse_def
+
+    !> for NAME in SEQUENCE: block   (one loop variable; no else clause)
+    recursive subroutine parse_for(p, ast, stmt, st)
+        type(parser_t), intent(inout) :: p
+        type(ast_t), intent(inout) :: ast
+        integer, intent(out) :: stmt
+        type(status_t), intent(inout) :: st
+        integer :: seq, body
+        stmt = 0
+        p%pos = p%pos + 1
+        if (peek_kind(p) /= TOK_NAME) then
+            call fail_at(p, st, 'expected the loop variable after "for" (for NAME in ' // &
+                         'SEQUENCE:)'); return
+        end if
+        select case (peek_text(p))
+        case ('in', 'for', 'if', 'def', 'and', 'or', 'not', 'None', 'True', 'False')
+            call fail_at(p, st, 'expected the loop variable after "for" (for NAME in ' // &
+                         'SEQUENCE:)'); return
+        end select
+        stmt = ast%add(N_FOR, peek_text(p), p%toks(p%pos - 1)%line, p%toks(p%pos - 1)%col)
+        p%pos = p%pos + 1
+        if (is_op(p, ',')) then
+            call fail_at(p, st, 'several loop variables are not supported (one NAME: ' // &
+                         'for x in SEQUENCE:, then x[0], x[1])'); return
+        end if
+        if (.not. is_name(p, 'in')) then
+            call fail_at(p, st, 'expected "in" after the loop variable, got "' // &
+                         peek_text(p) // '"'); return
+        end if
+        p%pos = p%pos + 1
+        call parse_expr_list(p, ast, seq, st)
+        if (st%failed()) return
+        p%loop_depth = p%loop_depth + 1
+        call parse_block(p, ast, body, st)
+        p%loop_depth = p%loop_depth - 1
+        if (st%failed()) return
+        call ast%add_kid(stmt, seq)
+        call ast%add_kid(stmt, body)
+        ast%nodes(stmt)%end_line = ast%nodes(body)%end_line
+        if (is_name(p, 'else')) then
+            call fail_at(p, st, '"else" after a for loop is not supported (use a flag ' // &
+                         'set before break)'); return
+        end if
+    end subroutine parse_for
+
+    !> import DOTTED [, DOTTED]*  |  from DOTTED import * | NAME [, NAME]* | ( NAMES )
+    !> Only at the top level of a file (imports bind the file's names).
+    subroutine parse_import(p, ast, stmt, st)
+        type(parser_t), intent(inout) :: p
+        type(ast_t), intent(inout) :: ast
+        integer, intent(out) :: stmt
+        type(status_t), intent(inout) :: st
+        character(len=:), allocatable :: module
+        logical :: from, paren
+        integer :: line, col
+        from = is_name(p, 'from')
+        line = p%toks(p%pos)%line; col = p%toks(p%pos)%col
+        stmt = 0
+        if (p%block_depth > 0) then
+            call fail_at(p, st, 'imports are only supported at the top level of a file ' // &
+                         '(not inside def, if or for)'); return
+        end if
+        p%pos = p%pos + 1
+        if (.not. from) then
+            stmt = ast%add(N_IMPORT, 'import', line, col)
+            do
+                call dotted_name(module)
+                if (st%failed()) return
+                call ast%add_kid(stmt, ast%add(N_NAME, module, line, col))
+                if (.not. is_op(p, ',')) exit
+                p%pos = p%pos + 1
+            end do
+            call refuse_as()
+            return
+        end if
+        call dotted_name(module)
+        if (st%failed()) return
+        stmt = ast%add(N_FROM_IMPORT, module, line, col)
+        if (.not. is_name(p, 'import')) then
+            call fail_at(p, st, 'expected "import" after "from ' // module // '"'); return
+        end if
+        p%pos = p%pos + 1
+        if (is_op(p, '*')) then
+            call ast%add_kid(stmt, ast%add(N_NAME, '*', p%toks(p%pos)%line, p%toks(p%pos)%col))
+            p%pos = p%pos + 1
+            return
+        end if
+        paren = is_op(p, '(')
+        if (paren) p%pos = p%pos + 1
+        do
+            if (paren .and. is_op(p, ')')) exit
+            if (peek_kind(p) /= TOK_NAME) then
+                call fail_at(p, st, 'expected a name to import, got "' // peek_text(p) // '"')
+                return
+            end if
+            call ast%add_kid(stmt, ast%add(N_NAME, peek_text(p), p%toks(p%pos)%line, &
+                                           p%toks(p%pos)%col))
+            p%pos = p%pos + 1
+            call refuse_as()
+            if (st%failed()) return
+            if (.not. is_op(p, ',')) exit
+            p%pos = p%pos + 1
+        end do
+        if (paren) call expect(p, ')', st)
+    contains
+        subroutine dotted_name(name)
+            character(len=:), allocatable, intent(out) :: name
+            name = ''
+            if (is_op(p, '.')) then
+                call fail_at(p, st, 'relative imports (from . import x) are not supported ' // &
+                             '(name the module)'); return
+            end if
+            do
+                if (peek_kind(p) /= TOK_NAME) then
+                    call fail_at(p, st, 'expected a module name, got "' // peek_text(p) // '"')
+                    return
+                end if
+                name = name // peek_text(p)
+                p%pos = p%pos + 1
+                if (.not. (is_op(p, '.') .and. peek_kind_at(p, p%pos + 1) == TOK_NAME)) exit
+                name = name // '.'
+                p%pos = p%pos + 1
+            end do
+        end subroutine dotted_name
+        subroutine refuse_as()
+            if (is_name(p, 'as')) call fail_at(p, st, '"as" (renaming an import) is not ' // &
+                'supported (import the name as it is)')
+        end subroutine refuse_as
+    end subroutine parse_import
 
     !> if cond: block [elif cond: block]* [else: block]
     recursive subroutine parse_if(p, ast, stmt, st)
@@ -286,11 +438,22 @@ contains
         type(ast_t), intent(inout) :: ast
         integer, intent(out) :: block
         type(status_t), intent(inout) :: st
-        integer :: j
         block = 0
         call expect(p, ':', st)
         if (st%failed()) return
         block = ast%add(N_BLOCK, '', p%toks(p%pos)%line, p%toks(p%pos)%col)
+        p%block_depth = p%block_depth + 1
+        call parse_block_body(p, ast, block, st)
+        p%block_depth = p%block_depth - 1
+    end subroutine parse_block
+
+    !> The statements of a block (after its ':').
+    recursive subroutine parse_block_body(p, ast, block, st)
+        type(parser_t), intent(inout) :: p
+        type(ast_t), intent(inout) :: ast
+        integer, intent(in) :: block
+        type(status_t), intent(inout) :: st
+        integer :: j
         if (peek_kind(p) /= TOK_NEWLINE) then
             call parse_statement_line(p, ast, block, st)
             ast%nodes(block)%end_line = p%toks(max(1, p%pos - 1))%line
@@ -315,7 +478,7 @@ contains
             call parse_statement_line(p, ast, block, st)
             if (st%failed()) return
         end do
-    end subroutine parse_block
+    end subroutine parse_block_body
 
     !> Python keywords that start constructs outside the subset.
     subroutine refuse_keywords(p, st)
@@ -324,17 +487,20 @@ contains
         if (peek_kind(p) /= TOK_NAME) return
         select case (peek_text(p))
         case ('import', 'from')
-            call fail_at(p, st, '"' // peek_text(p) // '" (module import) is not part of ' // &
-                'the deck language; math functions are built in (sqrt, sin, math.pi, ...)')
-        case ('for', 'while')
-            call fail_at(p, st, '"' // peek_text(p) // '" loops are not part of the deck ' // &
-                'language (write each command, or give the values as a tuple)')
+            call fail_at(p, st, '"' // peek_text(p) // '" starts a statement of its own ' // &
+                '(from NAME import ..., import math)')
+        case ('for', 'break', 'continue')
+            call fail_at(p, st, 'unexpected keyword "' // peek_text(p) // '" (a for loop ' // &
+                'is a statement of its own: for NAME in SEQUENCE:)')
+        case ('while')
+            call fail_at(p, st, '"while" loops are not part of the deck language (use ' // &
+                'for NAME in range(N): with break)')
         case ('class')
             call fail_at(p, st, '"class" definitions are not part of the deck language')
         case ('lambda')
             call fail_at(p, st, '"lambda" is not part of the deck language (use def or FORMULE)')
         case ('with', 'try', 'except', 'finally', 'raise', 'global', 'nonlocal', 'del', &
-              'assert', 'yield', 'async', 'await', 'print', 'exec', 'eval', 'break', 'continue')
+              'assert', 'yield', 'async', 'await', 'print', 'exec', 'eval')
             call fail_at(p, st, '"' // peek_text(p) // '" is not part of the deck language')
         case ('else', 'elif')
             call fail_at(p, st, '"' // peek_text(p) // '" without a matching "if"')
@@ -580,9 +746,10 @@ contains
         type(ast_t), intent(inout) :: ast
         integer, intent(out) :: e
         type(status_t), intent(inout) :: st
-        integer :: call_node
+        integer :: call_node, chain
         call parse_atom(p, ast, e, st)
         if (st%failed()) return
+        chain = 0
         do
             if (is_op(p, '.')) then
                 if (ast%nodes(e)%kind == N_NAME .and. ast%nodes(e)%text == 'math' .and. &
@@ -591,22 +758,93 @@ contains
                     p%pos = p%pos + 2
                     cycle
                 end if
+                if (peek_kind_at(p, p%pos + 1) == TOK_NAME .and. is_op_at(p, p%pos + 2, '(')) &
+                    then
+                    if (p%toks(p%pos + 1)%text == 'append') then
+                        call_node = ast%add(N_ATTR, 'append', p%toks(p%pos + 1)%line, &
+                                            p%toks(p%pos + 1)%col)
+                        call ast%add_kid(call_node, e)
+                        e = call_node
+                        p%pos = p%pos + 2
+                        cycle
+                    end if
+                end if
                 call fail_at(p, st, 'attribute access "." is not part of the deck language ' &
-                             // '(only math.NAME functions)'); return
-            else if (is_op(p, '(')) then
+                             // '(only math.NAME and LIST.append(VALUE))'); return
+            end if
+            if (.not. (is_op(p, '(') .or. is_op(p, '['))) exit
+            call enter(p, st)                    ! f()()... and x[0][0]... chain as deep
+            if (st%failed()) return
+            chain = chain + 1
+            if (is_op(p, '(')) then
                 call_node = ast%add(N_CALL, '', p%toks(p%pos)%line, p%toks(p%pos)%col)
                 call ast%add_kid(call_node, e)
                 call parse_arguments(p, ast, call_node, st)
                 if (st%failed()) return
                 e = call_node
-            else if (is_op(p, '[')) then
-                call fail_at(p, st, 'indexing with [ ] is not part of the deck language')
-                return
             else
-                exit
+                call parse_subscript(p, ast, e, st)
+                if (st%failed()) return
             end if
         end do
+        p%depth = p%depth - chain
     end subroutine parse_primary
+
+    !> e[index] or a slice e[start:stop:step] (each part optional).
+    recursive subroutine parse_subscript(p, ast, e, st)
+        type(parser_t), intent(inout) :: p
+        type(ast_t), intent(inout) :: ast
+        integer, intent(inout) :: e
+        type(status_t), intent(inout) :: st
+        integer :: node, part(3), k, line, col
+        character(len=3) :: parts
+        line = p%toks(p%pos)%line; col = p%toks(p%pos)%col
+        p%pos = p%pos + 1
+        parts = '000'; part = 0
+        if (is_op(p, ']')) then
+            call fail_at(p, st, 'empty subscript [] (give an index, e.g. x[0], or a slice ' // &
+                         'x[1:3])'); return
+        end if
+        if (.not. is_op(p, ':')) then
+            call parse_expr(p, ast, part(1), st)
+            if (st%failed()) return
+            parts(1:1) = '1'
+            if (is_op(p, ']')) then
+                p%pos = p%pos + 1
+                node = ast%add(N_INDEX, '[]', line, col)
+                call ast%add_kid(node, e)
+                call ast%add_kid(node, part(1))
+                e = node
+                return
+            end if
+            if (.not. is_op(p, ':')) then
+                call fail_at(p, st, 'expected "]" or ":" in the subscript, got "' // &
+                             peek_text(p) // '" (one index per subscript: x[i][j])'); return
+            end if
+        end if
+        p%pos = p%pos + 1                        ! the first ':'
+        if (.not. (is_op(p, ':') .or. is_op(p, ']'))) then
+            call parse_expr(p, ast, part(2), st)
+            if (st%failed()) return
+            parts(2:2) = '1'
+        end if
+        if (is_op(p, ':')) then
+            p%pos = p%pos + 1
+            if (.not. is_op(p, ']')) then
+                call parse_expr(p, ast, part(3), st)
+                if (st%failed()) return
+                parts(3:3) = '1'
+            end if
+        end if
+        call expect(p, ']', st)
+        if (st%failed()) return
+        node = ast%add(N_SLICE, parts, line, col)
+        call ast%add_kid(node, e)
+        do k = 1, 3
+            if (parts(k:k) == '1') call ast%add_kid(node, part(k))
+        end do
+        e = node
+    end subroutine parse_subscript
 
     !> ( [arg | NAME=expr] , ... ) — positional arguments must come first.
     recursive subroutine parse_arguments(p, ast, call_node, st)

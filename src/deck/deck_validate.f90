@@ -3,7 +3,7 @@
 !> exclusive/one-of rules, then defaults. Produces the command_t handlers receive.
 module deck_validate
     use kinds, only: dp, i8
-    use strings, only: string_t, to_text
+    use strings, only: string_t, to_text, join_words
     use status, only: status_t, set_error, STATUS_DECK_ERROR
     use deck_value
     use deck_catalog, only: catalog_t, cmd_def_t, kw_def_t, find_keyword, split_words, MANY, &
@@ -74,8 +74,8 @@ contains
             if (k == 0 .and. .not. (def%open_keywords .and. parent == 0)) then
                 call set_error(st, STATUS_DECK_ERROR, 'unknown keyword ' // args%keys(j)%s // &
                     did_you_mean(args%keys(j)%s, scope_names(def, parent)) // &
-                    ' (valid here: ' // join(scope_names(def, parent)) // ')', file=file, &
-                    line=args%key_line(j), column=args%key_col(j), command=def%name, &
+                    ' (valid here: ' // join_words(scope_names(def, parent), ', ') // ')', &
+                    file=file, line=args%key_line(j), column=args%key_col(j), command=def%name, &
                     keyword=path(def, parent, args%keys(j)%s))
                 return
             end if
@@ -303,7 +303,7 @@ contains
             if (kw%into(i)%s == text) return
         end do
         msg = 'value ' // value_text(v) // ' is not allowed' // did_you_mean(text, kw%into) // &
-              ' (allowed: ' // join(kw%into) // ')'
+              ' (allowed: ' // join_words(kw%into, ', ') // ')'
     end function check_into
 
     !> Adds catalog defaults for keywords of scope `parent` that were not given.
@@ -466,17 +466,6 @@ contains
             if (def%kws(k)%parent == parent) call append_string(names, def%kws(k)%name)
         end do
     end function scope_names
-
-    function join(words) result(text)
-        type(string_t), intent(in) :: words(:)
-        character(len=:), allocatable :: text
-        integer :: i
-        text = ''
-        do i = 1, size(words)
-            if (i > 1) text = text // ', '
-            text = text // words(i)%s
-        end do
-    end function join
 
     function path(def, parent, name) result(text)
         type(cmd_def_t), intent(in) :: def

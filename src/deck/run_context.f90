@@ -3,9 +3,16 @@
 !> catalog, the registry of command handlers, the symbol table and the concepts it owns,
 !> the unit bindings (--unit N=PATH), the output directory and listings (.mess, .resu),
 !> and the TEST_RESU counters.
+!>
+!> A session (doc/aster-tests.md) runs several command files in order; they share one
+!> syntax tree and one namespace (scope 0). A file after the first starts with that
+!> namespace put aside (`stash`) and POURSUITE() brings it back, as Code_Aster's
+!> POURSUITE restores the previous file's database. Imported modules (from NAME import ...)
+!> each get a namespace of their own (scope = their source index), as Python modules do.
 module run_context
-    use kinds, only: i4
+    use kinds, only: i4, i8
     use strings, only: string_t, to_text, ends_with
+    use run_deadline, only: deadline_t
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_INTERNAL
     use atomic_file, only: atomic_file_t
     use deck_ast, only: ast_t
@@ -34,12 +41,28 @@ module run_context
         type(concept_box_t), pointer :: box => null()
     end type box_ref_t
 
-    !> A deck variable.
+    !> A deck variable. scope: 0 for the command files' namespace, else the source index
+    !> of the module whose namespace holds it.
     type, public :: symbol_t
         character(len=:), allocatable :: name
         type(value_t) :: value
         integer :: line = 0
+        integer :: scope = 0
     end type symbol_t
+
+    !> One source file of the session: a command file (module = '') or an imported module.
+    !>  name : as used in messages (the path as given or as joined to its folder)
+    !>  dir : its folder with a trailing '/' ('' = current folder)
+    !>  file : its index in ast%files;  root : its N_MODULE node
+    !>  state (modules): 0 not run in this pass, 1 being imported, 2 imported
+    type, public :: source_t
+        character(len=:), allocatable :: name, dir, module
+        type(string_t), allocatable :: lines(:)
+        integer :: file = 0, root = 0, state = 0
+    end type source_t
+
+    !> Sources and namespaces lookups (see scope_of_file).
+    integer, parameter, public :: SCOPE_SESSION = 0
 
     type, public :: run_context_t
         character(len=:), allocatable :: deck_path   !< as given on the command line
@@ -65,6 +88,27 @@ module run_context
         integer :: statement = 0        !< AST node of the statement being evaluated
         integer :: echoed = 0           !< last statement echoed to the .mess
         integer :: ncommand = 0         !< commands run so far
+        ! ---- the session: command files, modules, namespaces ----
+        type(source_t), allocatable :: sources(:)  !< command files first, then modules
+        integer :: nsource = 0
+        integer :: ncommand_file = 0               !< sources(1:ncommand_file) run in order
+        integer :: file_index = 0                  !< the command file being evaluated
+        integer, allocatable :: file_scope(:)      !< ast file index -> scope
+        type(symbol_t), allocatable :: stash(:)    !< the earlier files' names (POURSUITE)
+        integer :: nstash = 0
+        logical :: stashed = .false.               !< a stash waits for POURSUITE
+        logical :: continued = .false.             !< POURSUITE ran in this file
+        type(string_t), allocatable :: module_names(:), module_paths(:)  !< F nom lines
+        integer :: import_depth = 0                !< modules being imported (nested)
+        ! ---- loops (doc/deck-language.md, "Loops") ----
+        integer :: loop_control = 0                !< 1 break, 2 continue pending
+        type(value_t), allocatable :: loops(:)     !< the list each running for loop walks
+        logical, allocatable :: loop_grown(:)      !< that list was appended to
+        integer :: nloop = 0
+        integer(i8) :: iterations = 0              !< loop iterations in this pass
+        integer(i8) :: built = 0                   !< sequence items built in this pass
+        integer(i8) :: next_list = 0               !< identities of lists (append)
+        type(deadline_t) :: deadline               !< P time_limit of an export file
         !> Result files (MED) written so far in this run: a later IMPR_RESU adds to them, as
         !> Code_Aster adds to the file of a unit, instead of replacing them.
         type(string_t), allocatable :: result_files(:)
@@ -81,6 +125,13 @@ module run_context
         procedure :: find_symbol => ctx_find_symbol
         procedure :: own_concept => ctx_own_concept
         procedure :: reset_symbols => ctx_reset_symbols
+        procedure :: add_source => ctx_add_source
+        procedure :: scope_of_file => ctx_scope_of_file
+        procedure :: source_of_file => ctx_source_of_file
+        procedure :: bind_module => ctx_bind_module
+        procedure :: begin_file => ctx_begin_file
+        procedure :: continue_session => ctx_continue_session
+        procedure :: stashed_name => ctx_stashed_name
     end type run_context_t
 
     !> A command handler: runs one validated command.
@@ -118,6 +169,9 @@ contains
         call build_catalog(ctx%catalog)
         allocate (ctx%handlers(16), ctx%symbols(64), ctx%boxes(64))
         allocate (ctx%unit_numbers(0), ctx%unit_paths(0), ctx%lines(0))
+        allocate (ctx%sources(4), ctx%file_scope(0), ctx%stash(0))
+        allocate (ctx%module_names(0), ctx%module_paths(0))
+        allocate (ctx%loops(8), ctx%loop_grown(8))
     end subroutine init_context
 
     !> Registers the handler of command `name` (replacing an earlier one).
@@ -244,15 +298,19 @@ contains
         end if
     end subroutine ctx_count_test
 
-    !> Binds deck variable `name` (assignment).
-    subroutine ctx_set_symbol(self, name, value, line)
+    !> Binds deck variable `name` (assignment) in namespace `scope` (default: the command
+    !> files' namespace, SCOPE_SESSION).
+    subroutine ctx_set_symbol(self, name, value, line, scope)
         class(run_context_t), intent(inout) :: self
         character(len=*), intent(in) :: name
         type(value_t), intent(in) :: value
         integer, intent(in) :: line
+        integer, intent(in), optional :: scope
         type(symbol_t), allocatable :: bigger(:)
-        integer :: k
-        k = self%find_symbol(name)
+        integer :: k, sc
+        sc = SCOPE_SESSION
+        if (present(scope)) sc = scope
+        k = self%find_symbol(name, sc)
         if (k == 0) then
             if (self%nsymbol == size(self%symbols)) then
                 allocate (bigger(2 * size(self%symbols)))
@@ -265,15 +323,21 @@ contains
         self%symbols(k)%name = name
         self%symbols(k)%value = value
         self%symbols(k)%line = line
+        self%symbols(k)%scope = sc
     end subroutine ctx_set_symbol
 
-    !> Index of deck variable `name`, 0 if unbound.
-    integer function ctx_find_symbol(self, name)
+    !> Index of deck variable `name` in namespace `scope` (default SCOPE_SESSION), 0 if
+    !> unbound.
+    integer function ctx_find_symbol(self, name, scope)
         class(run_context_t), intent(in) :: self
         character(len=*), intent(in) :: name
-        integer :: k
+        integer, intent(in), optional :: scope
+        integer :: k, sc
+        sc = SCOPE_SESSION
+        if (present(scope)) sc = scope
         ctx_find_symbol = 0
         do k = self%nsymbol, 1, -1
+            if (self%symbols(k)%scope /= sc) cycle
             if (self%symbols(k)%name == name) then
                 ctx_find_symbol = k
                 return
@@ -315,6 +379,173 @@ contains
         end do
         self%nbox = 0
         self%finished = .false.
+        self%nstash = 0
+        self%stashed = .false.
+        self%continued = .false.
+        self%file_index = 0
+        self%import_depth = 0
+        self%loop_control = 0
+        self%nloop = 0
+        self%iterations = 0
+        self%built = 0
+        do k = 1, self%nsource
+            self%sources(k)%state = 0
+        end do
     end subroutine ctx_reset_symbols
+
+    !> Registers a parsed source file; returns its index. A module's namespace is its
+    !> index (scope_of_file); command files share SCOPE_SESSION.
+    !>  name, dir : as in source_t;  module : '' for a command file, else the module name
+    !>  lines : its text lines;  file : its index in ast%files;  root : its N_MODULE node
+    function ctx_add_source(self, name, dir, module, lines, file, root) result(k)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: name, dir, module
+        type(string_t), intent(in) :: lines(:)
+        integer, intent(in) :: file, root
+        integer :: k
+        type(source_t), allocatable :: bigger(:)
+        integer, allocatable :: scopes(:)
+        if (self%nsource == size(self%sources)) then
+            allocate (bigger(2 * size(self%sources)))
+            do k = 1, self%nsource
+                call move_alloc(self%sources(k)%name, bigger(k)%name)
+                call move_alloc(self%sources(k)%dir, bigger(k)%dir)
+                call move_alloc(self%sources(k)%module, bigger(k)%module)
+                call move_alloc(self%sources(k)%lines, bigger(k)%lines)
+                bigger(k)%file = self%sources(k)%file
+                bigger(k)%root = self%sources(k)%root
+                bigger(k)%state = self%sources(k)%state
+            end do
+            call move_alloc(bigger, self%sources)
+        end if
+        self%nsource = self%nsource + 1
+        k = self%nsource
+        self%sources(k)%name = name
+        self%sources(k)%dir = dir
+        self%sources(k)%module = module
+        self%sources(k)%lines = lines
+        self%sources(k)%file = file
+        self%sources(k)%root = root
+        self%sources(k)%state = 0
+        if (file > size(self%file_scope)) then
+            allocate (scopes(file))
+            scopes = SCOPE_SESSION
+            scopes(1:size(self%file_scope)) = self%file_scope
+            call move_alloc(scopes, self%file_scope)
+        end if
+        if (len(module) > 0) self%file_scope(file) = k
+    end function ctx_add_source
+
+    !> The namespace of the code in ast file `file`: SCOPE_SESSION for command files and
+    !> FORMULE strings, the module's source index for a module.
+    pure integer function ctx_scope_of_file(self, file)
+        class(run_context_t), intent(in) :: self
+        integer, intent(in) :: file
+        ctx_scope_of_file = SCOPE_SESSION
+        if (file >= 1 .and. file <= size(self%file_scope)) &
+            ctx_scope_of_file = self%file_scope(file)
+    end function ctx_scope_of_file
+
+    !> The source index of ast file `file`, 0 if it is no source (a FORMULE string).
+    pure integer function ctx_source_of_file(self, file)
+        class(run_context_t), intent(in) :: self
+        integer, intent(in) :: file
+        integer :: k
+        ctx_source_of_file = 0
+        do k = 1, self%nsource
+            if (self%sources(k)%file == file) then
+                ctx_source_of_file = k
+                return
+            end if
+        end do
+    end function ctx_source_of_file
+
+    !> Binds module name `name` to the file `path` (an export file's `F nom` line), found
+    !> by `from name import ...` before the file beside the deck.
+    subroutine ctx_bind_module(self, name, path)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: name, path
+        call append_string(self%module_names, name)
+        call append_string(self%module_paths, path)
+    end subroutine ctx_bind_module
+
+    !> Starts command file k of the session: it becomes the current file (name, lines,
+    !> syntax tree root) and, after the first, the namespace of the earlier files is put
+    !> aside until POURSUITE brings it back (continue_session) or DEBUT drops it.
+    subroutine ctx_begin_file(self, k)
+        class(run_context_t), intent(inout) :: self
+        integer, intent(in) :: k
+        integer :: j, n
+        self%file_index = k
+        self%deck_name = self%sources(k)%name
+        self%lines = self%sources(k)%lines
+        self%ast%root = self%sources(k)%root
+        self%finished = .false.
+        self%continued = .false.
+        self%statement = 0
+        if (k == 1) return
+        ! Module namespaces stay; the session's names wait for POURSUITE.
+        n = 0
+        do j = 1, self%nsymbol
+            if (self%symbols(j)%scope == SCOPE_SESSION) n = n + 1
+        end do
+        if (allocated(self%stash)) deallocate (self%stash)
+        allocate (self%stash(n))
+        n = 0
+        do j = 1, self%nsymbol
+            if (self%symbols(j)%scope == SCOPE_SESSION) then
+                n = n + 1
+                self%stash(n) = self%symbols(j)
+            end if
+        end do
+        self%nstash = n
+        self%stashed = .true.
+        n = 0
+        do j = 1, self%nsymbol
+            if (self%symbols(j)%scope /= SCOPE_SESSION) then
+                n = n + 1
+                if (n /= j) self%symbols(n) = self%symbols(j)
+            end if
+        end do
+        self%nsymbol = n
+    end subroutine ctx_begin_file
+
+    !> POURSUITE: the names of the earlier command files are defined again (a name this
+    !> file assigned before POURSUITE keeps its new value). drop = .true. (DEBUT in a later
+    !> file) forgets them instead: a new session.
+    !>  restored : out, how many names came back
+    subroutine ctx_continue_session(self, drop, restored)
+        class(run_context_t), intent(inout) :: self
+        logical, intent(in) :: drop
+        integer, intent(out) :: restored
+        integer :: j
+        restored = 0
+        if (.not. drop) then
+            do j = 1, self%nstash
+                if (self%find_symbol(self%stash(j)%name) > 0) cycle
+                call self%set_symbol(self%stash(j)%name, self%stash(j)%value, &
+                                     self%stash(j)%line)
+                restored = restored + 1
+            end do
+            self%continued = .true.
+        end if
+        self%nstash = 0
+        self%stashed = .false.
+    end subroutine ctx_continue_session
+
+    !> True when `name` is one of the earlier files' names waiting for POURSUITE.
+    logical function ctx_stashed_name(self, name)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: name
+        integer :: j
+        ctx_stashed_name = .false.
+        if (.not. self%stashed) return
+        do j = 1, self%nstash
+            if (self%stash(j)%name == name) then
+                ctx_stashed_name = .true.
+                return
+            end if
+        end do
+    end function ctx_stashed_name
 
 end module run_context

@@ -224,7 +224,7 @@ contains
                 end if
             end do
         end if
-        call resolve_object(c, ctx, node%text, scope%is_main, v, found)
+        call resolve_object(c, ctx, node%text, scope%is_main, int(node%file), v, found)
         if (found) then
             if (is_number(v)) then
                 call emit(c, u, OP_CONST, node, c%prog%units(u)%constant(as_real(v)))
@@ -244,12 +244,14 @@ contains
         end select
     end subroutine compile_name
 
-    !> A deck object called `name`: bound FORMULE keyword (main unit), else a deck variable.
-    subroutine resolve_object(c, ctx, name, main, v, found)
+    !> A deck object called `name`: bound FORMULE keyword (main unit), else a name of the
+    !> namespace of the code's file (the deck's, or the module's of a def imported from it).
+    subroutine resolve_object(c, ctx, name, main, file, v, found)
         type(compiler_t), intent(in) :: c
         type(run_context_t), intent(in) :: ctx
         character(len=*), intent(in) :: name
         logical, intent(in) :: main
+        integer, intent(in) :: file
         type(value_t), intent(out) :: v
         logical, intent(out) :: found
         integer :: k
@@ -261,7 +263,7 @@ contains
                 end if
             end do
         end if
-        k = ctx%find_symbol(name)
+        k = ctx%find_symbol(name, ctx%scope_of_file(file))
         if (k > 0) then
             v = ctx%symbols(k)%value; found = .true.
         end if
@@ -322,7 +324,7 @@ contains
                           // 'allowed in a formula call'); return
             end if
         end do
-        call resolve_object(c, ctx, callee%text, scope%is_main, v, found)
+        call resolve_object(c, ctx, callee%text, scope%is_main, int(callee%file), v, found)
         if (.not. found) then
             b = builtin_id(callee%text)
             if (b == 0) then
@@ -455,6 +457,7 @@ contains
         c%def_done = [c%def_done, .false.]
         np = ctx%ast%nkids(def_node) - 1
         c%prog%units(unit)%name = ctx%ast%nodes(def_node)%text
+        c%prog%units(unit)%file = node_file(ctx, ctx%ast%nodes(def_node))
         c%prog%units(unit)%nparams = np
         scope%is_main = .false.
         allocate (scope%names(np))
@@ -610,8 +613,19 @@ contains
         type(node_t), intent(in) :: node
         character(len=*), intent(in) :: message
         if (st%failed()) return
-        call set_error(st, STATUS_DECK_ERROR, message, file=ctx%deck_name, line=node%line, &
-                       column=node%col)
+        call set_error(st, STATUS_DECK_ERROR, message, file=node_file(ctx, node), &
+                       line=node%line, column=node%col)
     end subroutine fail
+
+    !> The file of a node as named in messages: a def may come from an imported module.
+    function node_file(ctx, node) result(file)
+        type(run_context_t), intent(in) :: ctx
+        type(node_t), intent(in) :: node
+        character(len=:), allocatable :: file
+        file = ''
+        if (node%file >= 1 .and. node%file <= size(ctx%ast%files)) &
+            file = ctx%ast%files(node%file)%s
+        if (len(file) == 0) file = ctx%deck_name
+    end function node_file
 
 end module formula_compiler

@@ -38,6 +38,7 @@ module formula_program
     !> index (for runtime errors).
     type, public :: code_unit_t
         character(len=:), allocatable :: name
+        character(len=:), allocatable :: file     !< a def's file, if not the program's
         integer, allocatable :: code(:), line(:), col(:)
         integer :: ncode = 0
         real(dp), allocatable :: consts(:)
@@ -290,6 +291,7 @@ contains
             st%line = prog%units(u)%line(pc)
             st%column = prog%units(u)%col(pc)
             if (allocated(prog%file)) st%file = prog%file
+            if (allocated(prog%units(u)%file)) st%file = prog%units(u)%file
         end subroutine locate
 
     end subroutine run_program

@@ -14,6 +14,7 @@ crash ("Fortran runtime error", "Backtrace", "ERROR STOP", "Segmentation"). A go
 --generate KIND writes the deck first (big or binary inputs are not committed):
 empty, binary, long_line (1 MB), deep_parens (10 000 nested parentheses).
 """
+import glob
 import os
 import subprocess
 import sys
@@ -110,8 +111,9 @@ def main(argv):
             with open(old_resu) as f:
                 if f.read() != "OLD RESULT\n":
                     problems.append("the older .resu was overwritten by a failed run")
-            if os.path.exists(old_resu + ".partial"):
-                problems.append("the temporary .resu.partial was left behind")
+            left = glob.glob(os.path.join(workdir, "*.partial"))
+            if left:
+                problems.append("temporary files were left behind: " + " ".join(left))
             mess = os.path.join(workdir, stem + ".mess")
             if not os.path.exists(mess):
                 problems.append("no .mess was committed for the failed run")

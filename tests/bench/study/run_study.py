@@ -272,6 +272,17 @@ def summary_markdown(rows, o, fits):
     return "\n".join(out) + "\n"
 
 
+def knob_text(study, r):
+    """The value of the knob a study varies, as printed beside its point."""
+    if study == "mesh":
+        return f"ny={r['ny']}"
+    if study == "newton":
+        return r["newton"][:4].upper()
+    if study == "resi":
+        return f"{r['resi']:.0e}"
+    return str(r["renum"])
+
+
 def plot_all(rows, outdir, fits, o):
     """The three PNG plots (matplotlib, Agg). Returns the files written."""
     import matplotlib
@@ -294,9 +305,15 @@ def plot_all(rows, outdir, fits, o):
                 ax1.loglog([r["wall_s"] for r in pts],
                            [max(r["err_disc_max"], floor) for r in pts], marker,
                            label=lab, alpha=0.8, fillstyle="none" if model == "b" else "full")
+                # each point names the knob value it was run with (the legend only names
+                # the series), so the 8 series can be read point by point
+                for r in pts:
+                    ax1.annotate(knob_text(study, r), (r["wall_s"], max(r["err_disc_max"], floor)),
+                                 fontsize=5.5, xytext=(3, 2), textcoords="offset points",
+                                 alpha=0.8)
     ax1.set_xlabel("wall time (s)")
     ax1.set_ylabel("largest corner |error| vs exact discrete answer")
-    ax1.set_title("solver error (what RESI/NEWTON/RENUM control)")
+    ax1.set_title("solver error (what RESI/NEWTON/RENUM control); points: knob value")
     ax1.grid(True, which="both", alpha=0.3)
     ax1.legend(fontsize=7)
     for model, marker in (("a", "o-"), ("b", "s--")):
@@ -340,12 +357,17 @@ def plot_all(rows, outdir, fits, o):
             ax1.loglog(xs, [t0 * (x / x0) ** slope for x in xs], "k--", lw=0.8, alpha=0.6)
         ax2.loglog(n, [r["maxrss_mb"] for r in pts], marker + "-",
                    label=f"model {model.upper()} peak RSS")
+        # a run that stopped on an error has no completion time: it is drawn as a vertical
+        # line at its size, labelled with how long it ran before stopping
         bad = [r for r in ran(rows, study="mesh", model=model) if r["status"] == "error"]
-        if bad:
-            ax1.loglog([r["free_equations"] for r in bad], [r["wall_s"] for r in bad], "x",
-                       color="red", ms=10, label=f"model {model.upper()} stopped (error)")
-            ax2.loglog([r["free_equations"] for r in bad], [r["maxrss_mb"] for r in bad], "x",
-                       color="red", ms=10, label=f"model {model.upper()} stopped (error)")
+        for k, r in enumerate(bad):
+            for ax in (ax1, ax2):
+                ax.axvline(r["free_equations"], color="red", ls=":", lw=1.2,
+                           label=(f"model {model.upper()} stopped (error)" if k == 0 else None))
+            ax1.annotate(f"stopped after {r['wall_s']:.0f} s", (r["free_equations"], 0.5),
+                         xycoords=("data", "axes fraction"), rotation=90, fontsize=7,
+                         color="red", xytext=(-9, 0), textcoords="offset points",
+                         va="center")
     ax1.set_xlabel("free equations")
     ax1.set_ylabel("time (s)")
     ax1.set_title("time vs problem size (full Newton, RESI 1e-6, RCMK)")
@@ -376,7 +398,7 @@ def plot_all(rows, outdir, fits, o):
             bad = [r for r in pts if r["status"] == "error"]
             if bad:
                 ax1.semilogx([r["resi"] for r in bad], [r["iterations"] or 0 for r in bad],
-                             "x", color="red", ms=10)
+                             "x", color="red", ms=10, label=f"{lab}: stopped, no convergence")
             good = [r for r in pts if r.get("err_disc_max") is not None]
             ax2.loglog([r["resi"] for r in good], [max(r["err_disc_max"], floor)
                                                    for r in good], marker + "-",
@@ -386,7 +408,7 @@ def plot_all(rows, outdir, fits, o):
         ax.set_xlabel("RESI_GLOB_RELA")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
-    ax1.set_ylabel("iterations after the prediction (red x: stopped, no convergence)")
+    ax1.set_ylabel("iterations after the prediction")
     ax1.set_title("iterations vs tolerance")
     ax2.set_ylabel("largest corner |error| vs exact discrete answer")
     ax2.set_title("error vs tolerance (converged runs)")

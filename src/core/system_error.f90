@@ -1,0 +1,66 @@
+!> The operating system's own words for a failed system call: errno and strerror of the C
+!> library (glibc), so that messages give the real reason ("No such file or directory",
+!> "Permission denied") rather than a generic "cannot write".
+module system_error
+    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_char, c_size_t, c_associated, &
+        c_f_pointer
+    implicit none
+    private
+    public :: last_errno, errno_text, process_id
+
+    interface
+        function c_errno_location() result(p) bind(c, name='__errno_location')
+            import :: c_ptr
+            type(c_ptr) :: p
+        end function c_errno_location
+        function c_strerror(code) result(text) bind(c, name='strerror')
+            import :: c_int, c_ptr
+            integer(c_int), value :: code
+            type(c_ptr) :: text
+        end function c_strerror
+        function c_strlen(s) result(n) bind(c, name='strlen')
+            import :: c_ptr, c_size_t
+            type(c_ptr), value :: s
+            integer(c_size_t) :: n
+        end function c_strlen
+        function c_getpid() result(pid) bind(c, name='getpid')
+            import :: c_int
+            integer(c_int) :: pid
+        end function c_getpid
+    end interface
+
+contains
+
+    !> errno of the calling thread (read it right after the failed call).
+    integer function last_errno()
+        integer(c_int), pointer :: code
+        call c_f_pointer(c_errno_location(), code)
+        last_errno = int(code)
+    end function last_errno
+
+    !> strerror(code): the system's text for an errno value.
+    function errno_text(code) result(text)
+        integer, intent(in) :: code
+        character(len=:), allocatable :: text
+        type(c_ptr) :: p
+        character(kind=c_char), pointer :: chars(:)
+        integer :: n, k
+        p = c_strerror(int(code, c_int))
+        if (.not. c_associated(p)) then
+            text = 'system error'
+            return
+        end if
+        n = int(c_strlen(p))
+        call c_f_pointer(p, chars, [n])
+        text = repeat(' ', n)
+        do k = 1, n
+            text(k:k) = chars(k)
+        end do
+    end function errno_text
+
+    !> The process identifier (getpid), e.g. to make temporary names unique per process.
+    integer function process_id()
+        process_id = int(c_getpid())
+    end function process_id
+
+end module system_error

@@ -1,0 +1,3 @@
+# imported by cycle_a
+from cycle_a import A
+B = 2.0
