@@ -15,14 +15,15 @@
 !>    values interlaced, 0 for a component a node lacks (ircmva); written on every node, or
 !>    through a profile PROFIL_<8 digits> on the nodes that carry a component (and belong to
 !>    the GROUP_NO asked for) when that is not every node (ircmpn, ircmpf).
-!> A file is written under a temporary name (<path>.partial) and renamed when complete; adding
-!> to a file written earlier in the run copies it first, so a failure never leaves a
-!> half-written file under the final name.
+!> A file is written under a temporary name (<path>.<pid>.partial, as atomic_file) and renamed
+!> when complete; adding to a file written earlier in the run copies it first, so a failure
+!> never leaves a half-written file under the final name.
 module result_med
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_INTERNAL
     use strings, only: string_t, to_text
-    use atomic_file, only: rename_file
+    use atomic_file, only: rename_file, delete_file
+    use system_error, only: process_id
     use mesh_types, only: mesh_t, node_name, cell_name, n_node_groups, n_cell_groups, &
         nodes_of_group, cells_of_group, node_group_name, cell_group_name, CELL_POI1, &
         CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_TYPE_NODES
@@ -65,7 +66,7 @@ module result_med
 
 contains
 
-    !> Opens `path` for writing through `path.partial`.
+    !> Opens `path` for writing through `path.<pid>.partial`.
     !>  append : in, add to the existing file (written earlier in this run) instead of
     !>           replacing it
     !>  st     : out, STATUS_IO_ERROR (output folder missing or not writable, file to add to
@@ -76,7 +77,7 @@ contains
         logical, intent(in) :: append
         type(status_t), intent(out) :: st
         out%path = path
-        out%temp_path = path // '.partial'
+        out%temp_path = path // '.' // to_text(int(process_id(), i4)) // '.partial'
         allocate (out%profile_names(0), out%profile_nodes(0))
         if (append) then
             call copy_file(path, out%temp_path, st)
@@ -538,16 +539,5 @@ contains
         if (ios /= 0) call set_error(st, STATUS_IO_ERROR, 'cannot write ' // to // ': ' // &
             trim(msg))
     end subroutine copy_file
-
-    ! Removes a file if it exists.
-    subroutine delete_file(path)
-        character(len=*), intent(in) :: path
-        integer :: unit, ios
-        logical :: exists
-        inquire (file=path, exist=exists)
-        if (.not. exists) return
-        open (newunit=unit, file=path, status='old', iostat=ios)
-        if (ios == 0) close (unit, status='delete', iostat=ios)
-    end subroutine delete_file
 
 end module result_med

@@ -32,6 +32,11 @@ usage:
       plug-in of another version) in its place.
   run_med_case.py not-linked PARASOL
       parasol itself does not need the MED, HDF5 or MPI libraries (readelf NEEDED).
+  run_med_case.py export PARASOL DECK WORKDIR MED_FILE
+      An export file as Code_Aster's: the mesh MED_FILE on `F mmed ... D 20`, the results on
+      `F rmed ... R 80`, two command files (DECK with FORMAT='MED' writing DEPL, then a
+      POURSUITE file writing REAC_NODA to the same unit): one file with one mesh and both
+      fields.
   run_med_case.py installed BUILD_DIR WORKDIR MED_FILE
       cmake --install into a fresh prefix: the plug-in is in <prefix>/lib/parasol and the
       installed parasol reads MED_FILE from an unrelated folder.
@@ -471,6 +476,42 @@ def case_not_linked(argv):
     return ["parasol links %s: MED must stay in the plug-in" % bad] if bad else []
 
 
+def case_export(argv):
+    import h5py
+    parasol, deck, workdir, good = argv[:4]
+    shutil.rmtree(workdir, ignore_errors=True)
+    os.makedirs(workdir)
+    text = med_deck(open(deck, encoding="utf-8").read())
+    write(os.path.join(workdir, "study.comm"), text.replace(
+        "FIN()", "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU, NOM_CHAM='DEPL'))"
+        "\nFIN()"))
+    write(os.path.join(workdir, "study.com1"),
+          "POURSUITE()\nIMPR_RESU(FORMAT='MED', UNITE=80, "
+          "RESU=_F(RESULTAT=RESU, NOM_CHAM='REAC_NODA'))\nFIN()\n")
+    shutil.copy(good, os.path.join(workdir, "study.mmed"))
+    write(os.path.join(workdir, "study.export"),
+          "P time_limit 120\nF comm study.comm D 1\nF comm study.com1 D 1\n"
+          "F mmed study.mmed D 20\nF rmed out/study.rmed R 80\n")
+    os.makedirs(os.path.join(workdir, "out"))
+    proc = subprocess.run([os.path.abspath(parasol), "--outdir", os.path.join(workdir, "out"),
+                           os.path.join(workdir, "study.export")], cwd=workdir,
+                          capture_output=True, timeout=120)
+    err = proc.stderr.decode("utf-8", "replace")
+    if proc.returncode != 0:
+        return ["export run: exit %d %r" % (proc.returncode, err)]
+    rmed = os.path.join(workdir, "out", "study.rmed")
+    if not os.path.isfile(rmed):
+        return ["F rmed ... R 80: %s not written" % rmed]
+    with h5py.File(rmed, "r") as f:
+        fields = sorted(f["CHA"].keys())
+        meshes = list(f["ENS_MAA"].keys())
+    problems = []
+    if fields != ["RESU____DEPL", "RESU____REAC_NODA"] or len(meshes) != 1:
+        problems.append("unit 80 after two command files: fields %s, meshes %s" % (fields,
+                                                                                 meshes))
+    return problems
+
+
 def case_installed(argv):
     build, workdir, good = argv[:3]
     shutil.rmtree(workdir, ignore_errors=True)
@@ -493,7 +534,7 @@ def case_installed(argv):
 CASES = {"fields": case_fields, "bad": case_bad, "default-unit": case_default_unit,
          "aster": case_aster, "aster-mesh": case_aster_mesh,
          "missing-plugin": case_missing_plugin, "not-linked": case_not_linked,
-         "installed": case_installed}
+         "installed": case_installed, "export": case_export}
 
 
 def main():
