@@ -742,7 +742,7 @@ contains
         type(status_t), intent(out) :: st
         character(kind=c_char), allocatable :: buffer(:)
         integer(c_int) :: rc
-        integer(i4) :: k, ios
+        integer(i4) :: k, j, ios
         type(fp_state_t) :: fp
         allocate (buffer(int(MED_SNAME_LEN, i8) * n + 1), stat=ios)
         if (ios /= 0) then
@@ -758,8 +758,10 @@ contains
                 mesh, rc)
             return
         end if
-        do k = 1, min(n, size(names, kind=i4))
-            names(k) = buffer_text(buffer, (k - 1) * MED_SNAME_LEN + 1, MED_SNAME_LEN)
+        do k = 1, min(n, size(names, kind=i4))   ! blank-padded fields of 16 characters
+            names(k) = transfer(buffer((k - 1) * MED_SNAME_LEN + 1:k * MED_SNAME_LEN), names(k))
+            j = index(names(k), c_null_char)      ! a writer that pads with NULs instead
+            if (j > 0) names(k)(j:) = ' '
         end do
     end subroutine med_read_names
 

@@ -476,19 +476,17 @@ contains
         character(len=:), allocatable :: name
         call mesh_init(mesh, spacedim, file%path)
         do k = 1, size(coords, 2, kind=i4)
-            name = 'N' // to_text(k)
-            if (node_named) then
-                if (len_trim(node_names(k)) > 0) name = trim(node_names(k))
-            end if
+            name = ''
+            if (node_named) name = trim(node_names(k))
+            if (len(name) == 0) name = number_name('N', k)
             call mesh_add_node(mesh, name, coords(:, k), 0_i4, st)
             if (st%failed()) return
         end do
         do k = 1, size(cell_kind, kind=i4)
             t = cell_kind(k)
-            name = 'M' // to_text(k)
-            if (cell_named(k)) then
-                if (len_trim(cell_names(k)) > 0) name = trim(cell_names(k))
-            end if
+            name = ''
+            if (cell_named(k)) name = trim(cell_names(k))
+            if (len(name) == 0) name = number_name('M', k)
             call mesh_add_cell(mesh, name, READ_TYPE_CELL(t), &
                                cell_nodes(1:READ_TYPE_NODES(t), k), 0_i4, st)
             if (st%failed()) return
@@ -656,6 +654,25 @@ contains
             number_of = families(order(position))%number
         end function number_of
     end subroutine sort_family_numbers
+
+    ! prefix // decimal number (>= 1), without an internal write: every unnamed node and cell
+    ! gets one, and a formatted write per name would dominate the reading time.
+    pure function number_name(prefix, number) result(name)
+        character, intent(in) :: prefix
+        integer(i4), intent(in) :: number
+        character(len=:), allocatable :: name
+        character(len=11) :: digits
+        integer(i4) :: value, k
+        value = number
+        k = len(digits) + 1
+        do
+            k = k - 1
+            digits(k:k) = achar(48 + mod(value, 10))
+            value = value / 10
+            if (value == 0) exit
+        end do
+        name = prefix // digits(k:)
+    end function number_name
 
     ! Index of the family numbered `number` (keys, order from sort_family_numbers), 0 if none.
     pure integer(i4) function find_family(keys, order, number) result(index)
