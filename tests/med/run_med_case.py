@@ -227,6 +227,17 @@ def case_fields(argv):
     dump = subprocess.run(["mdump", all_rmed], input=b"1\n1\n0\n", capture_output=True,
                           timeout=60)
     text_dump = dump.stdout.decode("utf-8", "replace")
+    # a second run writes the same contents (not the same bytes: HDF5 stamps times)
+    again = os.path.join(workdir, "again")
+    rerun = os.path.join(again, "all.rmed")
+    rc, _, err = run(parasol, out_deck, again,
+                     ["20=" + os.path.abspath(mesh), "80=" + rerun,
+                      "81=" + os.path.join(again, "pts.rmed"),
+                      "82=" + os.path.join(again, "two.rmed")])
+    dump2 = subprocess.run(["mdump", rerun], input=b"1\n1\n0\n", capture_output=True,
+                           timeout=60).stdout.decode("utf-8", "replace")
+    if rc != 0 or dump2.replace(rerun, all_rmed) != text_dump:
+        problems.append("a second run wrote other contents (exit %d)" % rc)
     n_steps = len(re.findall(r"CHAMP \|RESU____DEPL\|", text_dump))
     if dump.returncode != 0 or n_steps != len([k for (s, k) in tables if s == "DEPL"]):
         problems.append("mdump: exit %d, %d DEPL steps listed" % (dump.returncode, n_steps))
