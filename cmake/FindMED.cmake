@@ -1,5 +1,5 @@
 # FindMED — the MED-fichier C library (Debian: libmedc-dev), for the MED plug-in
-# (src/plugins/med). Debian builds MED with MPI, so med.h needs HDF5's OpenMPI headers
+# (plugins/med). Debian builds MED with MPI, so med.h needs HDF5's OpenMPI headers
 # (hdf5/openmpi/hdf5.h) and OpenMPI's mpi.h; only the plug-in's ABI check includes it.
 # Provides MED::MED (library and include folders).
 find_path(MED_INCLUDE_DIR med.h)

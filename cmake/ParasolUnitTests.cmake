@@ -23,7 +23,8 @@ function(parasol_add_unit_suite pf_file)
     # generated source then goes to the build tree. The test gets the same name as on the
     # fallback path (unit.<stem>), and the same line-length option (pfunit.md).
     file(RELATIVE_PATH pf_relative ${CMAKE_CURRENT_SOURCE_DIR} ${pf_file})
-    add_pfunit_ctest(unit.${stem} TEST_SOURCES ${pf_relative} LINK_LIBRARIES parasol_lib)
+    add_pfunit_ctest(unit.${stem} TEST_SOURCES ${pf_relative} LINK_LIBRARIES parasol_lib
+                     ${PARASOL_LAPACK_LIBRARIES})
     target_compile_options(unit.${stem} PRIVATE -ffree-line-length-none)
     set_tests_properties(unit.${stem} PROPERTIES LABELS unit
       ENVIRONMENT PARASOL_SOURCE_DIR=${PROJECT_SOURCE_DIR})
@@ -40,7 +41,7 @@ function(parasol_add_unit_suite pf_file)
   set_target_properties(${stem} PROPERTIES
     Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/suite_modules/${stem})
   target_compile_options(${stem} PRIVATE -ffree-line-length-none)
-  target_link_libraries(${stem} PRIVATE parasol_lib parasol_funit)
+  target_link_libraries(${stem} PRIVATE parasol_lib parasol_funit ${PARASOL_LAPACK_LIBRARIES})
   add_test(NAME unit.${stem} COMMAND ${stem})
   # Suites that read committed data (meshes, decks) find the source tree through this.
   set_tests_properties(unit.${stem} PROPERTIES LABELS unit

@@ -2,8 +2,12 @@
 # Installs the Debian packages parasol needs, only those that are missing.
 # Needs root (or sudo) only when something is missing.
 set -euo pipefail
+# libsuitesparse-dev: CHOLMOD (METHODE='MULT_FRONT'); libmumps-seq-dev: MUMPS (the default
+# METHODE); libmumps-dev, libopenmpi-dev, openmpi-bin: the MPI build (-DPARASOL_MUMPS_MPI=ON)
+# and its `mpi` test.
 packages=(gfortran cmake ninja-build liblapack-dev libblas-dev libopenblas-dev libmetis-dev
-          python3 python3-numpy python3-meshio
+          python3 python3-numpy python3-meshio libsuitesparse-dev libmumps-seq-dev
+          libmumps-dev libopenmpi-dev openmpi-bin
           libmedc-dev libmed-tools python3-h5py)   # MED plug-in; mdump and h5py check MED files
 missing=()
 for p in "${packages[@]}"; do

@@ -145,7 +145,8 @@ def instants(o):
 def solve_lines(o):
     times = instants(o)
     lines = ["L_INST = DEFI_LIST_REEL(VALE=(" + ", ".join(e(t) for t in times) + "),)", ""]
-    solver = f"SOLVEUR=_F(RENUM='{o.renum}', NPREC={o.nprec})"
+    renum = o.renum or {"LDLT": "RCMK", "MULT_FRONT": "METIS", "MUMPS": "AUTO"}[o.methode]
+    solver = f"SOLVEUR=_F(METHODE='{o.methode}', RENUM='{renum}', NPREC={o.nprec})"
     if o.bilateral:
         lines += [
             "RESU = MECA_STATIQUE(MODELE=MODELE, CHAM_MATER=CHMAT, CARA_ELEM=CARA,",
@@ -237,7 +238,11 @@ def main(argv=None):
     ap.add_argument("--newton", choices=["tangente", "elastique"], default="tangente")
     ap.add_argument("--resi", type=float, default=1.0e-6, help="RESI_GLOB_RELA")
     ap.add_argument("--iter-max", type=int, default=10, help="ITER_GLOB_MAXI")
-    ap.add_argument("--renum", choices=["RCMK", "METIS", "SANS"], default="RCMK")
+    ap.add_argument("--methode", choices=["LDLT", "MULT_FRONT", "MUMPS"], default="LDLT",
+                    help="SOLVEUR METHODE (LDLT: the method the committed variants were made with)")
+    ap.add_argument("--renum", choices=["RCMK", "METIS", "SANS", "AMD", "MD", "AUTO", "AMF", "PORD",
+                                        "SCOTCH", "QAMD"], default=None,
+                    help="SOLVEUR RENUM (default: RCMK for LDLT, METIS for MULT_FRONT, AUTO for MUMPS)")
     ap.add_argument("--nprec", type=int, default=9, help="SOLVEUR NPREC (9 as in the SSNL130 decks)")
     ap.add_argument("--bilateral", action="store_true", help="linear springs, MECA_STATIQUE")
     ap.add_argument("--tolerance", type=float, default=1.0e-6, help="relative tolerance of checks")

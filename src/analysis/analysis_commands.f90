@@ -20,6 +20,8 @@ module analysis_commands
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
     use assembly_system, only: structure_t, structure_check
+    use direct_solver, only: solver_options_t
+    use solver_factory, only: DEFAULT_METHOD, default_renum, renum_allowed
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
@@ -68,7 +70,8 @@ contains
         call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
             ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
             ' factorization(s) in ' // to_text(summary%n_steps) // ' step(s)')
-        call ctx%write_mess('    ' // solver_diagnostics_line(summary, options%factor%nprec))
+        call ctx%write_mess('    ' // solver_diagnostics_line(summary, options%factor%nprec, &
+            options%factor%method))
         call move_alloc(res, result)
     end subroutine run_stat_non_line
 
@@ -106,7 +109,7 @@ contains
         call structure_check(s, st)
         if (st%failed()) return
         allocate (res)
-        call meca_statique(s, excit, times, options%factor, trim(options%renum), res, log, st)
+        call meca_statique(s, excit, times, options%factor, res, log, st)
         do k = 1, log%n
             call ctx%write_mess('    ' // log%lines(k)%s)
         end do
@@ -314,24 +317,50 @@ contains
             if (st%ok()) call occ%get_int('ITER_GLOB_MAXI', options%iter_glob_maxi, st)
             if (st%failed()) return
         end if
+        options%factor%method = DEFAULT_METHOD
+        options%factor%renum = default_renum(DEFAULT_METHOD)
         if (cmd%count('SOLVEUR') == 0) return
         occ = cmd%occurrence('SOLVEUR', 1)
+        call read_solver(ctx, occ, options%factor, st)
+    end subroutine read_newton
+
+    !> SOLVEUR (U4.50.01): METHODE (default MUMPS, as Code_Aster), RENUM (checked against
+    !> the method, solver_factory), NPREC (kept as given: its meaning depends on the method,
+    !> direct_solver), STOP_SINGULIER, ACCELERATION (MUMPS: parasol always factors in full
+    !> rank, i.e. 'FR'; another value is noted in the .mess).
+    !>  st : out, located at RENUM when the method has no such ordering
+    subroutine read_solver(ctx, occ, solver, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(solver_options_t), intent(inout) :: solver
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: text
         call occ%get_text('METHODE', text, st)
         if (st%failed()) return
-        if (text /= 'LDLT') call ctx%write_mess('    SOLVEUR/METHODE ' // text // &
-            ': parasol solves with its LDLT skyline solver')
+        solver%method = text
+        solver%renum = default_renum(text)
         if (occ%has('RENUM')) then
             call occ%get_text('RENUM', text, st)
-            if (text == 'RCMK' .or. text == 'METIS' .or. text == 'SANS') then
-                options%renum = text
-            else
-                call ctx%write_mess('    SOLVEUR/RENUM ' // text // ': not available, RCMK used')
+            if (st%failed()) return
+            if (index(' ' // renum_allowed(trim(solver%method)) // ' ', ' ' // text // ' ') &
+                == 0) then
+                call occ%error_at('RENUM', text // ' is not an ordering of METHODE=''' // &
+                    trim(solver%method) // ''' (' // renum_allowed(trim(solver%method)) // &
+                    '; default ' // default_renum(trim(solver%method)) // ')', st)
+                return
             end if
+            solver%renum = text
         end if
-        call occ%get_int('NPREC', options%factor%nprec, st)
+        call occ%get_int('NPREC', solver%nprec, st)
         if (st%ok()) call occ%get_text('STOP_SINGULIER', text, st)
         if (st%failed()) return
-        options%factor%stop_singular = text == 'OUI'
-    end subroutine read_newton
+        solver%stop_singular = text == 'OUI'
+        if (occ%has('ACCELERATION')) then
+            call occ%get_text('ACCELERATION', text, st)
+            if (st%failed()) return
+            if (text /= 'FR' .and. text /= 'AUTO') call ctx%write_mess('    SOLVEUR/' // &
+                'ACCELERATION ' // text // ': parasol factors in full rank (FR)')
+        end if
+    end subroutine read_solver
 
 end module analysis_commands

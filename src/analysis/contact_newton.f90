@@ -29,9 +29,10 @@ module contact_newton
     use model_dof_numbering, only: describe_equation
     use model_loads, only: load_set_t
     use function_concept, only: function_concept_t, param_binding_t
-    use skyline_matrix, only: skyline_t
-    use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t, &
-        factor_report_t
+    use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move
+    use direct_solver, only: direct_solver_t, solver_options_t, factor_report_t, &
+        effective_nprec, check_disabled
+    use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
         linear_cache_t
@@ -69,6 +70,24 @@ module contact_newton
     !> "Does not decrease": the residual stays above this fraction of the previous one.
     real(dp), parameter :: NO_DECREASE_RATIO = 0.999_dp
 
+    !> A held equation is loaded when the penalty holding it carries more than this fraction
+    !> of the largest right-hand-side term: the free motion there is driven, not idle ...
+    real(dp), parameter :: HELD_LOAD_RATIO = 1.0e-8_dp
+    !> ... and more than the round-off of the product A x, this many times
+    !> eps max|a_jj| max|x| (a solve that loses ~9 digits leaves residuals of that order:
+    !> model B's idle DX carried 1.9e-7 N against 2.2 N of load).
+    real(dp), parameter :: HELD_ROUNDOFF_FACTOR = 1.0e3_dp
+    !> Held equations named in the .mess before the list is cut.
+    integer(i4), parameter :: LIST_EQUATIONS = 6
+
+    !> Equations held at zero because the singularity check is off (METHODE='MUMPS' with
+    !> NPREC < 0, Code_Aster U4.50.01): free equations nothing loads are solved with zero
+    !> displacement and named once in the .mess; a loaded one stops the analysis.
+    type, public :: held_t
+        integer(i4), allocatable :: equations(:)   !< free numbering, of the current factor
+        logical :: warned = .false.
+    end type held_t
+
     !> What the factorization of a matrix says about its pivots.
     type :: pivot_diagnosis_t
         integer(i4) :: kind = PIVOT_REGULAR
@@ -93,8 +112,7 @@ module contact_newton
         logical :: use_maxi = .false.              !< RESI_GLOB_MAXI given
         real(dp) :: resi_glob_maxi = 0.0_dp
         integer(i4) :: iter_glob_maxi = DEFAULT_ITER_GLOB_MAXI
-        type(factor_options_t) :: factor           !< NPREC, STOP_SINGULIER
-        character(len=8) :: renum = 'RCMK'         !< SOLVEUR/RENUM
+        type(solver_options_t) :: factor           !< SOLVEUR: METHODE, RENUM, NPREC ...
         type(deadline_t) :: deadline               !< the run's time limit, polled per iteration
     end type newton_options_t
 
@@ -125,12 +143,15 @@ module contact_newton
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
         type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
         logical, allocatable :: closed(:)
-        type(skyline_t) :: elastic, tangent
-        logical :: have_elastic = .false., have_tangent = .false.
+        type(sym_matrix_t) :: matrix        !< the one assembled matrix, filled in place
+        class(direct_solver_t), allocatable :: solver   !< its factor (analysed once)
+        integer(i4) :: factored = MATRIX_NONE   !< which matrix the factor holds
         integer(i4) :: current = MATRIX_NONE
+        type(held_t) :: held                !< equations held with the check off
         integer(i4) :: factorizations = 0
         logical :: refactored = .false.
         integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
+        type(solver_options_t) :: solver_options
         type(newton_summary_t) :: pivots    !< solver diagnostics over the factorizations
     end type newton_state_t
 
@@ -144,7 +165,7 @@ module contact_newton
     end type step_pivots_t
 
     public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear, &
-        solver_diagnostics_line
+        solver_diagnostics_line, open_solver, log_numbering, solve_held
 
 contains
 
@@ -169,7 +190,6 @@ contains
         type(assembly_map_t) :: map
         type(newton_state_t) :: state
         logical, allocatable :: imposed(:)
-        character(len=100) :: lines(2)
         integer(i4) :: k, step, n_eq
         n_eq = s%dofs%n_equations
         allocate (imposed(n_eq), source=.false.)
@@ -177,11 +197,12 @@ contains
             call mark_imposed(s, excit(k)%load, imposed, st)
             if (st%failed()) return
         end do
-        call build_assembly_map(s, imposed, trim(options%renum), map, st)
+        call build_assembly_map(s, imposed, assembly_renum(options%factor), map, st)
         if (st%failed()) return
-        lines = renumbering_lines(map)
-        call log_add(log, lines(1))
-        call log_add(log, lines(2))
+        call log_numbering(map, options%factor, log)
+        call sym_move(map%pattern, state%matrix)
+        call open_solver(options%factor, state%matrix, state%solver, log, st)
+        if (st%failed()) return
         call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
             state%du(n_eq), source=0.0_dp)
@@ -307,8 +328,7 @@ contains
             call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)
             if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
-            if (use == MATRIX_ELASTIC) call skyline_solve(state%elastic, r, st)
-            if (use == MATRIX_TANGENT) call skyline_solve(state%tangent, r, st)
+            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
             if (st%failed()) return
             state%du = 0.0_dp
             state%du(map%free_to_eq) = r
@@ -428,7 +448,7 @@ contains
             else
                 use = MATRIX_TANGENT
                 if (options%reac_incr > 0) then
-                    if (mod(step - 1, options%reac_incr) == 0) state%have_tangent = .false.
+                    if (mod(step - 1, options%reac_incr) == 0) call drop(state, MATRIX_TANGENT)
                 end if
             end if
         else if (options%matrix_elastic) then
@@ -438,7 +458,7 @@ contains
             if (options%reac_iter > 0) then
                 if (mod(iter, options%reac_iter) == 0) then
                     use = MATRIX_TANGENT
-                    state%have_tangent = .false.
+                    call drop(state, MATRIX_TANGENT)
                 end if
             end if
         end if
@@ -452,13 +472,15 @@ contains
     !>  - tangent with springs open and an ILL-CONDITIONED pivot: used; judged at
     !>    convergence (newton_step) if the converged status is the same;
     !>  - otherwise a flagged matrix goes to report_pivots (STATUS_SINGULAR or a warning).
+    !> With the singularity check off (METHODE='MUMPS', NPREC < 0) free pivots are held by
+    !> the solver and judged after the solve (solve_held), and nothing else is reported.
     !>  use : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
     subroutine matrix_for_iteration(s, map, state, use, options, t, log, piv, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(inout) :: use
-        type(factor_options_t), intent(in) :: options
+        type(solver_options_t), intent(in) :: options
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(step_pivots_t), intent(inout) :: piv
@@ -469,11 +491,15 @@ contains
         if (st%failed()) return
         open_springs = .not. all(state%closed)
         piv%free_now = .false.
+        if (check_disabled(options)) then
+            piv%n_free = 0
+            return
+        end if
         if (diag%kind == PIVOT_FREE .and. use == MATRIX_TANGENT .and. open_springs) then
             call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
                 to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
                 'correction with the elastic matrix')
-            state%have_tangent = .false.
+            call drop(state, MATRIX_TANGENT)
             piv%free_now = .true.
             piv%free_where = diag%where
             use = MATRIX_ELASTIC
@@ -496,8 +522,16 @@ contains
         end if
     end subroutine matrix_for_iteration
 
-    !> Assembles and factors the matrix `use` if it is not ready (see assemble_and_factor);
-    !> diag is PIVOT_REGULAR when the matrix was reused.
+    !> Marks matrix `which` as no longer factored (the next use assembles and factors it).
+    subroutine drop(state, which)
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(in) :: which
+        if (state%factored == which) state%factored = MATRIX_NONE
+    end subroutine drop
+
+    !> Assembles and factors the matrix `use` unless the solver's factor already holds it
+    !> (one matrix and one factor per analysis: switching between the elastic and the
+    !> tangent matrix refactors); diag is PIVOT_REGULAR when the factor was reused.
     subroutine factor_and_diagnose(s, map, state, use, t, log, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -508,74 +542,200 @@ contains
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         state%refactored = .false.
-        if (use == MATRIX_ELASTIC .and. state%have_elastic) return
-        if (use == MATRIX_TANGENT .and. state%have_tangent) return
-        if (use == MATRIX_ELASTIC) then
-            call assemble_and_factor(s, map, state%u, .true., state%elastic, state%nprec, &
-                diag, st, state%linear)
-            state%have_elastic = st%ok()
-        else
-            call assemble_and_factor(s, map, state%u, .false., state%tangent, state%nprec, &
-                diag, st, state%linear)
-            state%have_tangent = st%ok()
-        end if
+        if (use == state%factored) return
+        state%factored = MATRIX_NONE
+        call assemble_and_factor(s, map, state%u, use == MATRIX_ELASTIC, state%matrix, &
+            state%solver, diag, st, state%linear, state%held, log)
         if (st%failed()) return
+        state%factored = use
         call accumulate_pivots(diag, state%pivots)
-        if (diag%kind /= PIVOT_REGULAR) call log_add(log, '  INST ' // real_e13(t) // &
-            ': pivot ' // trim(merge('free           ', 'ill-conditioned', &
-            diag%kind == PIVOT_FREE)) // ' at ' // diag%where)
+        if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(state%solver%options)) &
+            call log_add(log, '  INST ' // real_e13(t) // ': pivot ' // &
+            trim(merge('free           ', 'ill-conditioned', diag%kind == PIVOT_FREE)) // &
+            ' at ' // diag%where)
         state%refactored = .true.
         state%factorizations = state%factorizations + 1
     end subroutine factor_and_diagnose
 
+    !> The .mess lines on the numbering: LDLT's renumbering figures (the skyline stores that
+    !> envelope), or the method's own ordering.
+    subroutine log_numbering(map, options, log)
+        type(assembly_map_t), intent(in) :: map
+        type(solver_options_t), intent(in) :: options
+        type(analysis_log_t), intent(inout) :: log
+        character(len=100) :: lines(2)
+        if (trim(options%method) == 'LDLT') then
+            lines = renumbering_lines(map)
+            call log_add(log, lines(1))
+            call log_add(log, lines(2))
+        else
+            call log_add(log, 'METHODE ' // trim(options%method) // ': ' // &
+                to_text(map%n_free) // ' free equations, ordered by the solver')
+        end if
+    end subroutine log_numbering
+
+    !> Creates the solver of SOLVEUR (create_solver) and analyses the pattern once. The
+    !> solver never stops on a flagged pivot (the analysis classifies them); with the check
+    !> off (check_disabled) it holds the free pivots (FREE_PIVOT_DIGITS, RIGID_PIVOT_RATIO).
+    !>  st : out, a RENUM the method lacks, a back-end that cannot load or analyse
+    subroutine open_solver(options, matrix, solver, log, st)
+        type(solver_options_t), intent(in) :: options
+        type(sym_matrix_t), intent(in) :: matrix
+        class(direct_solver_t), allocatable, intent(out) :: solver
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        type(solver_options_t) :: lenient
+        character(len=:), allocatable :: text
+        lenient = options
+        lenient%stop_singular = .false.
+        if (check_disabled(options)) then
+            lenient%hold_digits = FREE_PIVOT_DIGITS
+            lenient%hold_ratio = RIGID_PIVOT_RATIO
+        end if
+        call create_solver(lenient, solver, st)
+        if (st%failed()) return
+        call solver%analyse(matrix, st)
+        if (st%failed()) return
+        text = 'SOLVEUR: METHODE ' // trim(solver%options%method) // ', RENUM ' // &
+            trim(solver%options%renum) // ', NPREC ' // to_text(options%nprec)
+        if (check_disabled(options)) text = text // ' (singularity check off)'
+        call log_add(log, text // ', factor ' // real_short(real(solver%memory_estimate(), &
+            dp) / 1.0e6_dp) // ' MB estimated')
+    end subroutine open_solver
+
+    !> Solves with the factor; with held equations (check off) the penalty that holds each
+    !> one must carry (almost) nothing: then the equation is free and unloaded, solved with
+    !> zero displacement and named once in the .mess; otherwise a load drives a free
+    !> motion and STATUS_SINGULAR names its node and component.
+    !>  r : inout, right-hand side (free equations) in, solution out
+    subroutine solve_held(s, map, matrix, solver, held, r, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(sym_matrix_t), intent(in) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
+        type(held_t), intent(inout) :: held
+        real(dp), intent(inout) :: r(:)
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: rhs(:), ax(:)
+        real(dp) :: scale, carried, roundoff
+        integer(i4) :: k, eq, worst
+        logical :: have_held
+        have_held = .false.
+        if (allocated(held%equations)) have_held = size(held%equations) > 0
+        if (have_held) rhs = r
+        call solver%solve(r, st)
+        if (st%failed() .or. .not. have_held) return
+        allocate (ax(size(r)))
+        call sym_matvec(matrix, r, ax)
+        scale = maxval(abs(rhs))
+        roundoff = HELD_ROUNDOFF_FACTOR * epsilon(1.0_dp) * maxval(abs(sym_diagonal(matrix))) &
+            * maxval(abs(r))
+        worst = 0
+        carried = 0.0_dp
+        do k = 1, size(held%equations)
+            eq = held%equations(k)
+            if (abs(rhs(eq) - ax(eq)) > carried) then
+                carried = abs(rhs(eq) - ax(eq))
+                worst = eq
+            end if
+        end do
+        if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff)) then
+            call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': singular ' // &
+                'matrix at ' // describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // &
+                ': the equation is free (SOLVEUR/NPREC < 0 switched the singularity check ' // &
+                'off) and loaded (' // real_e13(carried) // ' against ' // real_e13(scale) // &
+                '); a support (DDL_IMPO) or a stiffness is missing there')
+            r = 0.0_dp
+            return
+        end if
+        if (.not. held%warned) then
+            call log_add(log, '  warning (SOLVEUR/NPREC < 0, singularity check off): ' // &
+                to_text(size(held%equations)) // ' free equation(s), unloaded, solved ' // &
+                'with zero displacement: ' // held_names(s, map, held%equations))
+            held%warned = .true.
+        end if
+    end subroutine solve_held
+
+    !> Node and component of the first held equations (cut after LIST_EQUATIONS).
+    function held_names(s, map, equations) result(text)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(in) :: equations(:)
+        character(len=:), allocatable :: text
+        integer(i4) :: k
+        text = ''
+        do k = 1, min(size(equations, kind=i4), LIST_EQUATIONS)
+            if (k > 1) text = text // ', '
+            text = text // describe_equation(s%dofs, s%mesh, map%free_to_eq(equations(k)))
+        end do
+        if (size(equations) > LIST_EQUATIONS) text = text // ' ...'
+    end function held_names
+
     !> MECA_STATIQUE: assembles and factors the (linear) stiffness at u; a flagged matrix
-    !> is STATUS_SINGULAR or a warning (report_pivots).
-    subroutine factor_and_diagnose_linear(s, map, u, sky, options, log, st)
+    !> is STATUS_SINGULAR or a warning (report_pivots); with the check off (MUMPS, NPREC <
+    !> 0) free equations are held instead (solve_held judges them).
+    !>  matrix : inout, the pattern in, the assembled matrix out
+    !>  solver : inout, analysed (open_solver); factored on return
+    !>  held   : out, the held equations
+    subroutine factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
-        type(skyline_t), intent(out) :: sky
-        type(factor_options_t), intent(in) :: options
+        type(sym_matrix_t), intent(inout) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
+        type(held_t), intent(out) :: held
+        type(solver_options_t), intent(in) :: options
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         type(pivot_diagnosis_t) :: diag
         type(newton_summary_t) :: one
-        call assemble_and_factor(s, map, u, .false., sky, options%nprec, diag, st)
+        call assemble_and_factor(s, map, u, .false., matrix, solver, diag, st, held=held, &
+            log=log)
         if (st%failed()) return
         call accumulate_pivots(diag, one)
-        call log_add(log, solver_diagnostics_line(one, options%nprec))
-        if (diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, 0.0_dp, log, st)
+        call log_add(log, solver_diagnostics_line(one, options%nprec, options%method))
+        if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(options)) &
+            call report_pivots(diag, options, 0.0_dp, log, st)
     end subroutine factor_and_diagnose_linear
 
-    !> Assembles the matrix at u (elastic or tangent), factors it without stopping, and
-    !> classifies its pivots (classify_pivots).
-    !>  nprec : in, SOLVEUR/NPREC (0 = Code_Aster's default 8)
+    !> Assembles the matrix at u (elastic or tangent) in place, factors it without stopping,
+    !> and classifies its pivots (classify_pivots).
     !>  diag  : out, PIVOT_REGULAR, PIVOT_ILL_CONDITIONED or PIVOT_FREE, and where
     !>  cache : in, optional, the plate/plane matrices (assemble_stiffness)
-    subroutine assemble_and_factor(s, map, u, elastic, sky, nprec, diag, st, cache)
+    !>  held  : inout, optional, the equations the factor holds (check off)
+    !>  log   : inout, optional, gets the factorization line (method, ordering, size, time)
+    subroutine assemble_and_factor(s, map, u, elastic, matrix, solver, diag, st, cache, held, &
+                                   log)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: elastic
-        type(skyline_t), intent(out) :: sky
-        integer(i4), intent(in) :: nprec
+        type(sym_matrix_t), intent(inout) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         type(linear_cache_t), intent(in), optional :: cache
-        type(factor_options_t) :: lenient
+        type(held_t), intent(inout), optional :: held
+        type(analysis_log_t), intent(inout), optional :: log
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
-        lenient%nprec = nprec
-        lenient%stop_singular = .false.
-        call assemble_stiffness(s, map, u, elastic, sky, st, cache)
+        call assemble_stiffness(s, map, u, elastic, matrix, st, cache)
         if (st%failed()) return
         largest = 0.0_dp
-        if (sky%n > 0) largest = maxval(abs(sky%values(sky%diag(1:sky%n))))
-        call skyline_factor(sky, report, st, lenient)
+        if (matrix%n > 0) largest = maxval(abs(sym_diagonal(matrix)))
+        call solver%factor(matrix, report, st)
         if (st%failed()) return
-        pivots = sky%values(sky%diag(1:sky%n))
-        call classify_pivots(report, pivots, largest, nprec, diag)
+        if (present(log)) call log_add(log, factorization_line(report))
+        if (present(held)) held%equations = report%held_equations(1:report%n_held)
+        if (report%pivots_known) then
+            pivots = report%pivots
+        else
+            allocate (pivots(0))
+        end if
+        call classify_pivots(report, pivots, largest, solver%options, diag)
         diag%digits = max(report%max_digits_lost, 0.0_dp)
         diag%digits_at = ''
         if (report%max_digits_equation > 0) diag%digits_at = describe_equation(s%dofs, &
@@ -587,18 +747,30 @@ contains
         diag%n_flagged = report%n_flagged
     end subroutine assemble_and_factor
 
+    !> One .mess line per factorization: method, ordering, factor size, memory and time.
+    function factorization_line(report) result(text)
+        type(factor_report_t), intent(in) :: report
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write (buf, '(f0.3)') report%seconds
+        if (buf(1:1) == '.') buf = '0' // buf(1:15)
+        text = '  factorization ' // report%method // ' (ordering ' // report%ordering // &
+            '): ' // to_text(report%factor_entries) // ' terms, ' // &
+            real_short(real(report%memory_bytes, dp) / 1.0e6_dp) // ' MB, ' // trim(buf) // ' s'
+    end function factorization_line
+
     !> Classifies a factorization (doc/analysis.md, "Diagnosis"): PIVOT_FREE when a pivot
     !> lost >= FREE_PIVOT_DIGITS digits (zero included) or is below RIGID_PIVOT_RATIO of
     !> the largest diagonal term (round-off level: a free motion); PIVOT_ILL_CONDITIONED
     !> when pivots only exceed NPREC; PIVOT_REGULAR otherwise. On return diag%n_flagged
     !> holds the equation to name (free numbering) and diag%where the pivot text after it.
-    subroutine classify_pivots(report, pivots, largest, nprec, diag)
+    subroutine classify_pivots(report, pivots, largest, options, diag)
         type(factor_report_t), intent(in) :: report
         real(dp), intent(in) :: pivots(:), largest
-        integer(i4), intent(in) :: nprec
+        type(solver_options_t), intent(in) :: options
         type(pivot_diagnosis_t), intent(inout) :: diag
         integer(i4) :: rigid, eq
-        diag%nprec = merge(abs(nprec), 8_i4, nprec /= 0)
+        diag%nprec = effective_nprec(options)
         diag%kind = PIVOT_REGULAR
         rigid = 0
         if (size(pivots) > 0) rigid = findloc(abs(pivots) <= RIGID_PIVOT_RATIO * largest, &
@@ -629,7 +801,7 @@ contains
     !> an ill-conditioned one means the model's stiffness contrast exceeds NPREC.
     subroutine report_pivots(diag, options, t, log, st)
         type(pivot_diagnosis_t), intent(in) :: diag
-        type(factor_options_t), intent(in) :: options
+        type(solver_options_t), intent(in) :: options
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
@@ -667,14 +839,13 @@ contains
                                     previous_maxi, t, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
-        type(newton_state_t), intent(in) :: state
+        type(newton_state_t), intent(inout) :: state
         integer(i4), intent(in) :: use, iter, changed
         type(step_pivots_t), intent(in) :: piv
         real(dp), intent(in) :: resi_maxi, previous_maxi, t
         type(status_t), intent(out) :: st
         character(len=:), allocatable :: text
         logical :: stalled, all_open, stays_free
-        type(skyline_t) :: sky
         type(pivot_diagnosis_t) :: diag
         if (size(state%closed) == 0) return
         stalled = resi_maxi >= NO_DECREASE_RATIO * previous_maxi
@@ -685,8 +856,10 @@ contains
             .not. all_open .and. .not. stays_free) then
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
-            call assemble_and_factor(s, map, state%u, .false., sky, state%nprec, diag, st, &
-                state%linear)
+            call assemble_and_factor(s, map, state%u, .false., state%matrix, state%solver, &
+                diag, st, state%linear, state%held)
+            state%factored = MATRIX_NONE
+            if (st%ok()) state%factored = MATRIX_TANGENT
             if (st%failed()) return
             stays_free = diag%kind == PIVOT_FREE
         end if
@@ -699,8 +872,12 @@ contains
             text = text // ': rigid motion at ' // piv%free_where
         else
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
-            if (diag%kind == PIVOT_REGULAR) call assemble_and_factor(s, map, state%u, &
-                .false., sky, state%nprec, diag, st, state%linear)
+            if (diag%kind == PIVOT_REGULAR) then
+                call assemble_and_factor(s, map, state%u, .false., state%matrix, &
+                    state%solver, diag, st, state%linear, state%held)
+                state%factored = MATRIX_NONE
+                if (st%ok()) state%factored = MATRIX_TANGENT
+            end if
             if (st%failed()) return
             if (diag%kind == PIVOT_FREE) text = text // ': rigid motion at ' // diag%where
         end if
@@ -820,18 +997,29 @@ contains
         acc%max_pivot = max(acc%max_pivot, diag%max_pivot)
     end subroutine accumulate_pivots
 
-    !> The .mess line of solver diagnostics (style.md): the largest loss of significant
-    !> digits over the factorizations, where, against NPREC, and the range of |pivot|.
-    function solver_diagnostics_line(acc, nprec) result(text)
+    !> The .mess line of solver diagnostics (style.md): the method, the largest loss of
+    !> significant digits over the factorizations, where, against NPREC (as given: -1 is
+    !> reported as -1, "check off" for MUMPS), and the range of |pivot|.
+    function solver_diagnostics_line(acc, nprec, method) result(text)
         type(newton_summary_t), intent(in) :: acc
         integer(i4), intent(in) :: nprec
+        character(len=*), intent(in) :: method
         character(len=:), allocatable :: text
-        text = 'solver: largest loss ' // real_digits(acc%max_digits_lost) // ' digits'
+        type(solver_options_t) :: opt
+        opt%method = method
+        opt%nprec = nprec
+        text = 'solver ' // trim(method) // ': largest loss ' // &
+            real_digits(acc%max_digits_lost) // ' digits'
         if (allocated(acc%digits_at)) then
             if (len(acc%digits_at) > 0) text = text // ' at ' // acc%digits_at
         end if
-        text = text // ' (NPREC ' // to_text(merge(abs(nprec), 8_i4, nprec /= 0)) // &
-            '), |pivot| from ' // real_short(acc%min_pivot) // ' to ' // &
+        text = text // ' (NPREC ' // to_text(nprec)
+        if (check_disabled(opt)) then
+            text = text // ': check off'
+        else if (nprec <= 0) then
+            text = text // ', read as ' // to_text(effective_nprec(opt))
+        end if
+        text = text // '), |pivot| from ' // real_short(acc%min_pivot) // ' to ' // &
             real_short(acc%max_pivot)
     end function solver_diagnostics_line
 

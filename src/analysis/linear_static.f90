@@ -8,12 +8,14 @@ module linear_static
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text
-    use skyline_matrix, only: skyline_t
-    use skyline_solver, only: skyline_solve, factor_options_t
+    use sparse_matrix, only: sym_matrix_t, sym_move
+    use direct_solver, only: direct_solver_t, solver_options_t
+    use solver_factory, only: assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        internal_forces, renumbering_lines
+        internal_forces
     use assembly_loads, only: mark_imposed
-    use contact_newton, only: excitation_t, loads_at, factor_and_diagnose_linear
+    use contact_newton, only: excitation_t, loads_at, factor_and_diagnose_linear, &
+        open_solver, log_numbering, solve_held, held_t
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
     implicit none
@@ -33,25 +35,24 @@ contains
     !>  s       : in, the structure (no DIS_CHOC cell)
     !>  excit   : in, EXCIT occurrences
     !>  times   : in, the instants computed (one result each, NUME_ORDRE 1, 2, ...)
-    !>  options : in, SOLVEUR NPREC / STOP_SINGULIER
-    !>  renum   : in, SOLVEUR/RENUM
+    !>  options : in, SOLVEUR (METHODE, RENUM, NPREC, STOP_SINGULIER)
     !>  res     : out, evol_elas with DEPL, FORC_NODA, REAC_NODA
     !>  log     : inout, .mess lines
     !>  st      : out, STATUS_MODEL_ERROR with DIS_CHOC cells, STATUS_SINGULAR, load errors
-    subroutine meca_statique(s, excit, times, options, renum, res, log, st)
+    subroutine meca_statique(s, excit, times, options, res, log, st)
         type(structure_t), intent(in) :: s
         type(excitation_t), intent(in) :: excit(:)
         real(dp), intent(in) :: times(:)
-        type(factor_options_t), intent(in) :: options
-        character(len=*), intent(in) :: renum
+        type(solver_options_t), intent(in) :: options
         type(result_concept_t), intent(out) :: res
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         type(assembly_map_t) :: map
-        type(skyline_t) :: sky
+        type(sym_matrix_t) :: matrix
+        class(direct_solver_t), allocatable :: solver
+        type(held_t) :: held
         logical, allocatable :: imposed(:), closed(:)
         real(dp), allocatable :: u(:), fint(:), fext(:), r(:), fn(:)
-        character(len=100) :: lines(2)
         integer(i4) :: k, n_eq, pass
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
@@ -64,14 +65,15 @@ contains
             call mark_imposed(s, excit(k)%load, imposed, st)
             if (st%failed()) return
         end do
-        call build_assembly_map(s, imposed, renum, map, st)
+        call build_assembly_map(s, imposed, assembly_renum(options), map, st)
         if (st%failed()) return
-        lines = renumbering_lines(map)
-        call log_add(log, lines(1))
-        call log_add(log, lines(2))
+        call log_numbering(map, options, log)
+        call sym_move(map%pattern, matrix)
+        call open_solver(options, matrix, solver, log, st)
+        if (st%failed()) return
         allocate (u(n_eq), fint(n_eq), fext(n_eq), r(map%n_free), closed(0), fn(0))
         u = 0.0_dp
-        call factor_and_diagnose_linear(s, map, u, sky, options, log, st)
+        call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
         if (st%failed()) return
         call result_init(res, 'evol_elas', s%mesh, s%dofs, int(size(times), i4))
         do k = 1, int(size(times), i4)
@@ -81,7 +83,7 @@ contains
             if (st%failed()) return
             do pass = 1, 1 + REFINEMENT_STEPS
                 r = fext(map%free_to_eq) - fint(map%free_to_eq)
-                call skyline_solve(sky, r, st)
+                call solve_held(s, map, matrix, solver, held, r, times(k), log, st)
                 if (st%failed()) return
                 u(map%free_to_eq) = u(map%free_to_eq) + r
                 call internal_forces(s, map, u, fint, closed, fn, st)

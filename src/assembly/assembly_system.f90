@@ -1,10 +1,10 @@
 !> Global system of a static analysis: the structure (mesh, model, materials, element
 !> characteristics, DOF numbering, DIS_CHOC cells), the numbering of the free equations
 !> (imposed ones are eliminated, RCMK/METIS/SANS renumbering of the nodes), the skyline
-!> profile, assembly of the stiffness (springs at their current DIS_CHOC status or
+!> matrix pattern, assembly of the stiffness (springs at their current DIS_CHOC status or
 !> "elastic": all closed and bilateral) and the internal forces f_int(u) with the spring
 !> statuses. Vectors u, f_int, f_ext are indexed by the ORIGINAL equations of
-!> structure%dofs; the skyline is indexed by the free equations map%free_eq(eq).
+!> structure%dofs; the matrix is indexed by the free equations map%free_eq(eq).
 module assembly_system
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
@@ -23,8 +23,8 @@ module assembly_system
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
     use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2
-    use skyline_matrix, only: skyline_t, skyline_build_profile, skyline_add_element, &
-        skyline_profile_size, skyline_bandwidth
+    use sparse_matrix, only: sym_matrix_t, sym_pattern_from_elements, sym_zero, &
+        sym_add_element, envelope_of_elements
     use renumbering, only: renumber_graph, graph_from_elements
     implicit none
     private
@@ -42,7 +42,8 @@ module assembly_system
         logical, allocatable :: choc(:)     !< (n_cells) COMPORTEMENT DIS_CHOC on the cell
     end type structure_t
 
-    !> Free-equation numbering, the skyline profile and the renumbering figures.
+    !> Free-equation numbering, the matrix pattern and the renumbering figures (profile and
+    !> bandwidth: the envelope a skyline would store, before and after renumbering).
     type, public :: assembly_map_t
         integer(i4) :: n_free = 0
         integer(i4), allocatable :: free_eq(:)      !< (n_equations) free number, 0 = imposed
@@ -56,7 +57,7 @@ module assembly_system
         !> RCMK only: profile of the reverse Cuthill-McKee order when it was larger than the
         !> mesh's own order and the mesh's order was kept (0 otherwise).
         integer(i8) :: rejected_rcm_profile = 0
-        type(skyline_t) :: pattern                  !< profile with zero values
+        type(sym_matrix_t) :: pattern               !< the matrix pattern, zero values
     end type assembly_map_t
 
     !> What the incremental forces K_lin du need of each linear cell (plate, plane solid),
@@ -158,11 +159,12 @@ contains
     end subroutine element_equations
 
     !> Numbers the free equations (nodes renumbered by `renum`, then their non-imposed
-    !> components in order) and builds the skyline profile; records profile and bandwidth
-    !> before (original node order) and after renumbering.
+    !> components in order) and builds the matrix pattern; records the envelope (profile,
+    !> bandwidth) before (original node order) and after renumbering.
     !>  imposed : in, (n_equations) .true. for the equations of DDL_IMPO
-    !>  renum   : in, 'RCMK' (default of Code_Aster LDLT), 'METIS' or 'SANS'
-    !>  st      : out, unknown method, or a renumbering/profile failure
+    !>  renum   : in, 'RCMK' (default of Code_Aster LDLT), 'METIS' or 'SANS' (back-ends with
+    !>            an ordering of their own get 'SANS')
+    !>  st      : out, unknown method, or a renumbering/pattern failure
     subroutine build_assembly_map(s, imposed, renum, map, st)
         type(structure_t), intent(in) :: s
         logical, intent(in) :: imposed(:)
@@ -170,8 +172,8 @@ contains
         type(assembly_map_t), intent(out) :: map
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: identity(:), new_to_old(:), old_to_new(:), xadj(:), adjncy(:)
+        integer(i4), allocatable :: ptr(:), eqs_all(:)
         integer(i4) :: c, n_cells, k
-        type(skyline_t) :: before
         map%imposed = imposed
         map%renum = renum
         n_cells = 0
@@ -194,15 +196,13 @@ contains
         if (st%failed()) return
         identity = [(k, k = 1, s%mesh%n_nodes)]
         call number_free(s, imposed, identity, map)
-        call build_profile(s, map, before, st)
-        if (st%failed()) return
-        map%profile_before = skyline_profile_size(before)
-        map%bandwidth_before = skyline_bandwidth(before)
+        call element_free_equations(s, map, ptr, eqs_all)
+        call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_before, &
+            map%bandwidth_before)
         call number_free(s, imposed, new_to_old, map)
-        call build_profile(s, map, map%pattern, st)
-        if (st%failed()) return
-        map%profile_after = skyline_profile_size(map%pattern)
-        map%bandwidth_after = skyline_bandwidth(map%pattern)
+        call element_free_equations(s, map, ptr, eqs_all)
+        call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_after, &
+            map%bandwidth_after)
         ! Cuthill-McKee from a corner of a structured plate grows diagonal fronts: on the
         ! SSNL130 plates and square plates its profile is 5-25 % larger than the mesh's own
         ! row-by-row order. The skyline cost follows the profile, so RCMK never makes it
@@ -210,10 +210,11 @@ contains
         if (renum == 'RCMK' .and. map%profile_after > map%profile_before) then
             map%rejected_rcm_profile = map%profile_after
             call number_free(s, imposed, identity, map)
-            map%pattern = before
+            call element_free_equations(s, map, ptr, eqs_all)
             map%profile_after = map%profile_before
             map%bandwidth_after = map%bandwidth_before
         end if
+        call sym_pattern_from_elements(map%pattern, map%n_free, ptr, eqs_all, st)
     end subroutine build_assembly_map
 
     !> Node graph of the cells with a stiffness.
@@ -266,13 +267,11 @@ contains
         end do
     end subroutine number_free
 
-    !> Skyline profile of the free equations under the current numbering.
-    subroutine build_profile(s, map, sky, st)
+    !> Free equations of every cell with a stiffness, in CSR form (ptr, eqs; 0 = imposed).
+    subroutine element_free_equations(s, map, ptr, eqs_all)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
-        type(skyline_t), intent(out) :: sky
-        type(status_t), intent(out) :: st
-        integer(i4), allocatable :: ptr(:), eqs_all(:)
+        integer(i4), allocatable, intent(out) :: ptr(:), eqs_all(:)
         integer(i4) :: k, n, eqs(MAX_ELEMENT_DOFS)
         allocate (ptr(size(map%cells) + 1), eqs_all(MAX_ELEMENT_DOFS * size(map%cells)))
         ptr(1) = 1
@@ -281,8 +280,8 @@ contains
             eqs_all(ptr(k):ptr(k) + n - 1) = free_of(map, eqs(1:n))
             ptr(k + 1) = ptr(k) + n
         end do
-        call skyline_build_profile(sky, map%n_free, ptr, eqs_all(1:ptr(size(ptr)) - 1), st)
-    end subroutine build_profile
+        eqs_all = eqs_all(1:ptr(size(ptr)) - 1)
+    end subroutine element_free_equations
 
     !> Free numbers of original equations (0 for imposed or absent ones).
     pure function free_of(map, eqs) result(free)
@@ -535,23 +534,24 @@ contains
     !> Assembles the stiffness of the free equations at displacements u.
     !>  elastic : in, .true. = every DIS_CHOC spring closed and bilateral (ELASTIQUE);
     !>            .false. = springs at the status u gives them (TANGENTE)
-    !>  sky     : out, the assembled matrix (profile of map%pattern)
+    !>  a       : inout, the matrix (pattern of map%pattern), zeroed and filled in place
     !>  st      : out, element failures, naming the cell
     !>  cache   : in, optional, once built (internal_forces_incremental): the plate and
     !>            plane matrices are taken from it (bit for bit those cell_response builds)
-    subroutine assemble_stiffness(s, map, u, elastic, sky, st, cache)
+    subroutine assemble_stiffness(s, map, u, elastic, a, st, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: elastic
-        type(skyline_t), intent(out) :: sky
+        type(sym_matrix_t), intent(inout) :: a
         type(status_t), intent(out) :: st
         type(linear_cache_t), intent(in), optional :: cache
         integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS), i
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: fn
         logical :: closed
-        sky = map%pattern
+        if (.not. allocated(a%col_ptr) .or. a%n /= map%n_free) a = map%pattern
+        call sym_zero(a)
         do k = 1, size(map%cells)
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
@@ -567,7 +567,7 @@ contains
                     closed, fn, st)
                 if (st%failed()) return
             end if
-            call skyline_add_element(sky, free_of(map, eqs(1:n)), ke, st)
+            call sym_add_element(a, free_of(map, eqs(1:n)), ke, st)
             if (st%failed()) return
         end do
     end subroutine assemble_stiffness

@@ -25,6 +25,7 @@ module cli
     use deck_interpreter, only: read_source_text, load_source, evaluate_session
     use export_file, only: export_t, read_export, is_export_path, module_name
     use command_registration, only: register_commands
+    use mumps_solver, only: mumps_session_t, mumps_session_start, mumps_session_stop
     implicit none
     private
     public :: run_parasol, print_usage, bundled_deck_path
@@ -47,8 +48,28 @@ module cli
 
 contains
 
-    !> Parses the command line and runs parasol; returns the exit status.
+    !> Parses the command line and runs parasol; returns the exit status. In the MPI build
+    !> under mpirun, process 0 does all of this and the other processes only serve its
+    !> MUMPS factorizations and solves (mumps_session_start), then exit 0 silently.
     subroutine run_parasol(exit_status)
+        integer, intent(out) :: exit_status
+        type(mumps_session_t) :: session
+        type(status_t) :: st
+        logical :: worker
+        call mumps_session_start(session, worker, st)
+        if (st%failed()) then
+            write (error_unit, '(a)') 'parasol: error: ' // st%message
+            exit_status = EXIT_ERROR
+            return
+        end if
+        exit_status = EXIT_OK
+        if (worker) return
+        call run_command_line(exit_status)
+        call mumps_session_stop(session)
+    end subroutine run_parasol
+
+    !> The command line of process 0 (or of the only process).
+    subroutine run_command_line(exit_status)
         integer, intent(out) :: exit_status
         type(string_t), allocatable :: args(:)
         type(options_t) :: opts
@@ -61,7 +82,7 @@ contains
             return
         end if
         call run_deck(opts, exit_status)
-    end subroutine run_parasol
+    end subroutine run_command_line
 
     !> No deck on the command line: run the bundled SSNL130 model A deck (the demonstration
     !> and smoke test of an installation), then show its TEST_RESU table on the terminal so

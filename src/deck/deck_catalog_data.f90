@@ -347,13 +347,13 @@ contains
         call c%end_fact()
     end subroutine describe_analyses
 
-    !> SOLVEUR factor keyword of the analyses (defaults: Code_Aster's NPREC=8,
-    !> STOP_SINGULIER='OUI'; parasol's default method is its own LDLT skyline).
+    !> SOLVEUR factor keyword of the analyses (defaults as Code_Aster's: METHODE='MUMPS',
+    !> NPREC=8, STOP_SINGULIER='OUI'; RENUM's default depends on the method).
     subroutine describe_solver(c)
         type(catalog_t), intent(inout) :: c
         call c%fact('SOLVEUR')
-        call c%key('METHODE', 'TXM', def='MULT_FRONT', into='LDLT MULT_FRONT MUMPS')
-        call c%key('RENUM', 'TXM', into='RCMK METIS SANS AMD AMF PORD SCOTCH QAMD AUTO')
+        call c%key('METHODE', 'TXM', def='MUMPS', into='LDLT MULT_FRONT MUMPS')
+        call c%key('RENUM', 'TXM', into='RCMK METIS SANS AMD MD AMF PORD SCOTCH QAMD AUTO')
         call c%key('NPREC', 'I', def='8')
         call c%key('STOP_SINGULIER', 'TXM', def='OUI', into=OUI_NON)
         call c%key('ELIM_LAGR', 'TXM', noop=.true.)
@@ -362,7 +362,7 @@ contains
         call c%key('RESI_RELA', 'R', noop=.true.)
         call c%key('POSTTRAITEMENTS', 'TXM', noop=.true.)
         call c%key('TYPE_RESOL', 'TXM', noop=.true.)
-        call c%key('ACCELERATION', 'TXM', noop=.true.)          ! MUMPS tuning
+        call c%key('ACCELERATION', 'TXM', into='AUTO FR FR+ FR++ LR LR+ LR++')  ! MUMPS
         call c%key('LOW_RANK_SEUIL', 'R', noop=.true.)
         call c%key('MATR_DISTRIBUEE', 'TXM', noop=.true.)
         call c%key('PRETRAITEMENTS', 'TXM', noop=.true.)

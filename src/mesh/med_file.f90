@@ -1,4 +1,4 @@
-!> MED files through parasol's MED plug-in (libparasol_med.so, src/plugins/med): the plug-in
+!> MED files through parasol's MED plug-in (libparasol_med.so, plugins/med): the plug-in
 !> is the only code linked against Debian's MED library (which pulls HDF5 and OpenMPI, ~10 ms
 !> per process start), and it is opened with dlopen (src/core/dynamic_library.f90) the first
 !> time a deck reads or writes MED, so decks without MED keep parasol's start-up.

@@ -20,25 +20,18 @@
 !> pivot is an error STATUS_SINGULAR naming the first flagged equation; the report lists all.
 module skyline_solver
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, STATUS_SINGULAR, STATUS_INTERNAL
+    use status, only: status_t, set_error, STATUS_INTERNAL
     use strings, only: to_text
+    use direct_solver, only: factor_report_t, solver_options_t, NPREC_DEFAULT, &
+        PIVOT_DIGITS_LOST, PIVOT_ZERO, PIVOT_NEGATIVE, DIGITS_ALL_LOST, HOLD_PENALTY, &
+        digits_lost, record_flag, record_hold, singular_message, start_report
     use skyline_matrix, only: skyline_t, skyline_bandwidth, skyline_profile_size
-    use lapack_interface, only: dgemm, dsyrk, dtrsm
+    use blas_library, only: blas_kernels_t, load_blas
     implicit none
     private
 
-    !> Code_Aster SOLVEUR/NPREC default: a pivot losing more than 8 digits is singular.
-    integer(i4), parameter, public :: NPREC_DEFAULT = 8
     !> Kernel choice: automatic (blocked for wide profiles), reference, blocked.
     integer(i4), parameter, public :: FACTOR_AUTO = 0, FACTOR_REFERENCE = 1, FACTOR_BLOCKED = 2
-    !> Why a pivot was flagged.
-    integer(i4), parameter, public :: PIVOT_DIGITS_LOST = 1, PIVOT_ZERO = 2, PIVOT_NEGATIVE = 3
-    !> Digits reported for a zero pivot: more than a double holds (-log10(eps) = 15.65).
-    real(dp), parameter, public :: DIGITS_ALL_LOST = 16.0_dp
-    !> A zero pivot that the caller lets pass is replaced by this factor times the original
-    !> diagonal: the singular equation is then held (its unknown comes out ~0) instead of
-    !> producing Inf/NaN.
-    real(dp), parameter :: ZERO_PIVOT_PENALTY = 1.0e16_dp
     !> Panel width (columns) and row block of the blocked kernel; below this bandwidth the
     !> reference kernel is as fast (measured, doc/performance.md).
     integer(i4), parameter :: PANEL_WIDTH = 64, ROW_BLOCK = 64, BLOCKED_MIN_BANDWIDTH = 64
@@ -49,23 +42,9 @@ module skyline_solver
         logical :: stop_singular = .true.         !< SOLVEUR/STOP_SINGULIER = 'OUI'
         logical :: positive_definite = .false.    !< a negative pivot is then flagged
         integer(i4) :: method = FACTOR_AUTO       !< FACTOR_AUTO/REFERENCE/BLOCKED
+        real(dp) :: hold_digits = 0.0_dp          !< hold pivots losing >= this (0: off)
+        real(dp) :: hold_ratio = 0.0_dp           !< hold |pivot| <= this x max|a_jj|
     end type factor_options_t
-
-    !> What the factorization saw (for the .mess solver diagnostics).
-    type, public :: factor_report_t
-        integer(i4) :: n_equations = 0
-        integer(i8) :: profile_size = 0_i8
-        integer(i4) :: bandwidth = 0                   !< largest column height
-        real(dp) :: max_digits_lost = 0.0_dp           !< over all pivots
-        integer(i4) :: max_digits_equation = 0         !< where it happens (0 if n = 0)
-        real(dp) :: min_abs_pivot = 0.0_dp             !< computed pivots, before any
-        real(dp) :: max_abs_pivot = 0.0_dp             !< zero-pivot substitution
-        integer(i4) :: n_negative_pivots = 0           !< = negative eigenvalues (Sylvester)
-        integer(i4) :: n_flagged = 0                   !< flagged pivots, in equation order:
-        integer(i4), allocatable :: flagged_equations(:)  !< equation numbers
-        integer(i4), allocatable :: flagged_reasons(:)    !< PIVOT_DIGITS_LOST/ZERO/NEGATIVE
-        real(dp), allocatable :: flagged_digits_lost(:)   !< digits lost at each
-    end type factor_report_t
 
     !> Everything the pivot test needs (kept together so kernels stay short).
     type :: pivot_context_t
@@ -79,7 +58,8 @@ module skyline_solver
         module procedure skyline_solve_one, skyline_solve_many
     end interface skyline_solve
 
-    public :: skyline_factor, skyline_solve, digits_lost
+    public :: skyline_factor, skyline_solve, digits_lost, factor_report_t, NPREC_DEFAULT, &
+        PIVOT_DIGITS_LOST, PIVOT_ZERO, PIVOT_NEGATIVE, DIGITS_ALL_LOST
 
 contains
 
@@ -96,6 +76,7 @@ contains
         type(status_t), intent(out) :: st
         type(factor_options_t), intent(in), optional :: options
         type(pivot_context_t) :: ctx
+        type(blas_kernels_t) :: blas
         integer(i4) :: method
         if (.not. sky%profile_ready .or. sky%factored) then
             call set_error(st, STATUS_INTERNAL, 'skyline_factor: matrix has no profile or ' &
@@ -106,11 +87,12 @@ contains
         ! Code_Aster (u4.50.01, LDLT/MULT_FRONT): the absolute value counts, 0 is the default.
         ctx%options%nprec = abs(ctx%options%nprec)
         if (ctx%options%nprec == 0) ctx%options%nprec = NPREC_DEFAULT
-        report%n_equations = sky%n
+        call start_report(report, 'LDLT', sky%n)
         report%profile_size = skyline_profile_size(sky)
         report%bandwidth = skyline_bandwidth(sky)
-        allocate (report%flagged_equations(0), report%flagged_reasons(0), &
-                  report%flagged_digits_lost(0))
+        report%factor_entries = report%profile_size
+        report%memory_bytes = 8_i8 * report%profile_size
+        allocate (report%pivots(sky%n))
         if (sky%n == 0) then
             sky%factored = .true.
             return
@@ -125,39 +107,22 @@ contains
             if (report%bandwidth >= BLOCKED_MIN_BANDWIDTH) method = FACTOR_BLOCKED
         end if
         if (method == FACTOR_BLOCKED) then
+            call load_blas(blas, st)        ! on first use only (blas_library)
+            if (st%failed()) return
             call factor_blocked_kernel(sky%n, sky%diag, sky%values, report%bandwidth, ctx, &
-                                       report)
+                                       report, blas)
         else
             call factor_reference_kernel(sky%n, sky%diag, sky%values, ctx, report)
         end if
         sky%factored = .true.
         if (report%n_flagged > 0 .and. ctx%options%stop_singular) then
-            call set_error(st, STATUS_SINGULAR, singular_message(report, ctx%options))
+            call singular_message(report, solver_options_t(nprec=ctx%options%nprec), st)
         end if
     end subroutine skyline_factor
 
-    !> Digits lost by a pivot: log10(|original| / |pivot|); DIGITS_ALL_LOST when the pivot is
-    !> zero relative to the original (|pivot| <= eps |original|, or subnormal); 0 when
-    !> original = 0 and the pivot is not zero (no reference to lose digits from).
-    !>  pivot, original : in, d_i and a_ii
-    !>  reference       : in, magnitude used for the zero test when original = 0
-    pure real(dp) function digits_lost(pivot, original, reference)
-        real(dp), intent(in) :: pivot, original, reference
-        real(dp) :: ref
-        ref = abs(original)
-        if (ref <= 0.0_dp) ref = abs(reference)
-        ! Zero: every digit lost, or below the normal range (its reciprocal could overflow).
-        if (abs(pivot) <= epsilon(1.0_dp) * ref .or. abs(pivot) < tiny(1.0_dp)) then
-            digits_lost = DIGITS_ALL_LOST
-        else if (abs(original) > 0.0_dp) then
-            digits_lost = log10(abs(original) / abs(pivot))
-        else
-            digits_lost = 0.0_dp
-        end if
-    end function digits_lost
-
-    !> Tests pivot d of equation j, records it in the report, and replaces a zero pivot by a
-    !> safe value (ZERO_PIVOT_PENALTY x reference) so the factorization can go on.
+    !> Tests pivot d of equation j, records it in the report, and replaces a zero pivot (and
+    !> one the options ask to hold) by HOLD_PENALTY x its original diagonal, so the
+    !> factorization can go on and the equation's unknown comes out ~0.
     subroutine accept_pivot(j, d, ctx, report)
         integer(i4), intent(in) :: j
         real(dp), intent(inout) :: d
@@ -165,7 +130,9 @@ contains
         type(factor_report_t), intent(inout) :: report
         real(dp) :: lost, ref
         integer(i4) :: reason
+        logical :: hold
         lost = digits_lost(d, ctx%original(j), ctx%scale)
+        report%pivots(j) = d
         report%min_abs_pivot = min(report%min_abs_pivot, abs(d))
         report%max_abs_pivot = max(report%max_abs_pivot, abs(d))
         if (lost > report%max_digits_lost .or. report%max_digits_equation == 0) then
@@ -184,74 +151,17 @@ contains
             report%n_negative_pivots = report%n_negative_pivots + 1
         end if
         if (reason /= 0) call record_flag(report, j, reason, lost)
-        if (reason == PIVOT_ZERO) then
+        hold = reason == PIVOT_ZERO
+        if (ctx%options%hold_digits > 0.0_dp) hold = hold .or. lost >= ctx%options%hold_digits
+        if (ctx%options%hold_ratio > 0.0_dp) hold = hold .or. &
+            abs(d) <= ctx%options%hold_ratio * ctx%scale
+        if (hold) then
             ref = abs(ctx%original(j))
             if (ref <= 0.0_dp) ref = ctx%scale
-            d = ZERO_PIVOT_PENALTY * ref
+            d = HOLD_PENALTY * ref
+            call record_hold(report, j)
         end if
     end subroutine accept_pivot
-
-    !> Appends a flagged pivot to the report (arrays grow by doubling).
-    subroutine record_flag(report, j, reason, lost)
-        type(factor_report_t), intent(inout) :: report
-        integer(i4), intent(in) :: j, reason
-        real(dp), intent(in) :: lost
-        integer(i4), allocatable :: ti(:)
-        real(dp), allocatable :: tr(:)
-        integer(i4) :: m
-        m = report%n_flagged
-        if (m == size(report%flagged_equations)) then
-            allocate (ti(max(8, 2 * m)))
-            ti(1:m) = report%flagged_equations(1:m)
-            call move_alloc(ti, report%flagged_equations)
-            allocate (ti(max(8, 2 * m)))
-            ti(1:m) = report%flagged_reasons(1:m)
-            call move_alloc(ti, report%flagged_reasons)
-            allocate (tr(max(8, 2 * m)))
-            tr(1:m) = report%flagged_digits_lost(1:m)
-            call move_alloc(tr, report%flagged_digits_lost)
-        end if
-        m = m + 1
-        report%flagged_equations(m) = j
-        report%flagged_reasons(m) = reason
-        report%flagged_digits_lost(m) = lost
-        report%n_flagged = m
-    end subroutine record_flag
-
-    !> The error message for the first flagged pivot.
-    function singular_message(report, options) result(text)
-        type(factor_report_t), intent(in) :: report
-        type(factor_options_t), intent(in) :: options
-        character(len=:), allocatable :: text
-        integer(i4) :: j
-        j = report%flagged_equations(1)
-        select case (report%flagged_reasons(1))
-        case (PIVOT_ZERO)
-            text = 'matrix is singular: the pivot of equation ' // to_text(j) // &
-                   ' is zero (all significant digits lost)'
-        case (PIVOT_NEGATIVE)
-            text = 'matrix is not positive definite: the pivot of equation ' // to_text(j) &
-                   // ' is negative'
-        case default
-            text = 'matrix is singular: the pivot of equation ' // to_text(j) // ' lost ' // &
-                   format_digits(report%flagged_digits_lost(1)) // &
-                   ' significant digits (more than NPREC = ' // to_text(options%nprec) // ')'
-        end select
-        if (report%n_flagged > 1) then
-            text = text // '; ' // to_text(report%n_flagged) // ' equations flagged in all'
-        end if
-        text = text // ' (a rigid-body motion or mechanism left free? check the boundary ' &
-               // 'conditions)'
-    end function singular_message
-
-    !> Digits lost, one decimal (e.g. "12.3").
-    function format_digits(x) result(text)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: text
-        character(len=16) :: buf
-        write (buf, '(f0.1)') x
-        text = trim(adjustl(buf))
-    end function format_digits
 
     !> Reference kernel: column Crout with dot products (module header formulas).
     !>  n, diag, values : inout skyline arrays (skyline_matrix layout); values become the factor
@@ -296,7 +206,8 @@ contains
     !> triangle. The panel's diagonal block gets the update P_JJ -= (D^-1 G)^T G (dgemm) and a
     !> small dense LDL^T with the pivot tests; the panel is then copied back. Same arithmetic
     !> as the reference kernel, reordered (left-looking block Crout).
-    subroutine factor_blocked_kernel(n, diag, values, band, ctx, report)
+    subroutine factor_blocked_kernel(n, diag, values, band, ctx, report, blas)
+        type(blas_kernels_t), intent(in) :: blas
         integer(i4), intent(in) :: n, band
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(inout) :: values(:)
@@ -318,9 +229,9 @@ contains
             j1 = min(n, j0 + PANEL_WIDTH - 1)
             t = minval(top(j0:j1))
             call load_panel(n, diag, values, top, j0, j1, t, ldp, p)
-            call substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w)
+            call substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w, blas)
             call factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, max(1, band), s, &
-                                       dk, ctx, report)
+                                       dk, ctx, report, blas)
             call store_panel(n, diag, values, top, j0, j1, t, ldp, p)
             j0 = j1 + 1
         end do
@@ -357,7 +268,8 @@ contains
     !> Rows t..j0-1 of the panel: g_ij = a_ij - sum_k u_ki g_kj with the finished columns,
     !> row block by row block [b0, b1]: rows r0..b0-1 above the block by dgemm, the block's
     !> unit upper triangle by dtrsm (U^T X = B). W holds U(r0..b1, b0..b1), zero-filled.
-    subroutine substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w)
+    subroutine substitute_above_panel(n, diag, values, top, j0, j1, t, ldp, p, ldw, w, blas)
+        type(blas_kernels_t), intent(in) :: blas
         integer(i4), intent(in) :: n, top(n), j0, j1, t, ldp, ldw
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(in) :: values(:)
@@ -378,11 +290,11 @@ contains
                     values(diag(i) - (i - max(top(i), r0)):diag(i) - 1)
             end do
             if (kr > 0) then
-                call dgemm('T', 'N', nbr, wp, kr, -1.0_dp, w, ldw, p(r0 - t + 1, 1), ldp, &
+                call blas%dgemm('T', 'N', nbr, wp, kr, -1.0_dp, w, ldw, p(r0 - t + 1, 1), ldp, &
                            1.0_dp, p(b0 - t + 1, 1), ldp)
             end if
             if (nbr > 1) then
-                call dtrsm('L', 'U', 'T', 'U', nbr, wp, 1.0_dp, w(kr + 1, 1), ldw, &
+                call blas%dtrsm('L', 'U', 'T', 'U', nbr, wp, 1.0_dp, w(kr + 1, 1), ldw, &
                            p(b0 - t + 1, 1), ldp)
             end if
             b0 = b1 + 1
@@ -393,7 +305,8 @@ contains
     !> panel's own u_kj, stored back into P), then dense Crout of the block with pivot tests.
     !>  s, dk : work arrays (lds >= j0 - t rows), allocated once by the caller
     subroutine factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, lds, s, dk, ctx, &
-                                     report)
+                                     report, blas)
+        type(blas_kernels_t), intent(in) :: blas
         integer(i4), intent(in) :: n, j0, j1, t, ldp, lds
         integer(i8), intent(in) :: diag(0:n)
         real(dp), intent(in) :: values(:)
@@ -413,7 +326,7 @@ contains
                 do c = 1, wp
                     s(1:na, c) = p(1:na, c) * dk(1:na)
                 end do
-                call dsyrk('U', 'T', wp, na, -1.0_dp, s, lds, 1.0_dp, p(na + 1, 1), ldp)
+                call blas%dsyrk('U', 'T', wp, na, -1.0_dp, s, lds, 1.0_dp, p(na + 1, 1), ldp)
                 do c = 1, wp
                     p(1:na, c) = s(1:na, c) * dk(1:na)
                 end do
@@ -422,7 +335,7 @@ contains
                 do c = 1, wp
                     s(1:na, c) = p(1:na, c) * dk(1:na)
                 end do
-                call dgemm('T', 'N', wp, wp, na, -1.0_dp, s, lds, p, ldp, 1.0_dp, &
+                call blas%dgemm('T', 'N', wp, wp, na, -1.0_dp, s, lds, p, ldp, 1.0_dp, &
                            p(na + 1, 1), ldp)
                 p(1:na, 1:wp) = s(1:na, 1:wp)
             end if

@@ -6,6 +6,7 @@
 #         [-DMESS_REGEX=re] [-DOUT_REGEX=re]                    # .mess / stdout+stderr match
 #         [-DCOMPARE_DECK=y.comm -DMESS_LINE_REGEX=re]          # same matching .mess parts
 #         [-DNO_DECK=1]                                         # run parasol without a deck
+#         [-DLAUNCHER=mpiexec|-np|2]                            # run parasol under it
 #         -P run_deck.cmake
 #
 # The test fails (message(FATAL_ERROR)) when the exit status is not EXPECT_EXIT, when the
@@ -22,6 +23,10 @@ file(MAKE_DIRECTORY ${OUTDIR})
 function(run_once outdir)
     file(MAKE_DIRECTORY ${outdir})
     set(cmd ${PARASOL} --outdir ${outdir})
+    if(DEFINED LAUNCHER)
+        string(REPLACE "|" ";" launcher "${LAUNCHER}")
+        set(cmd ${launcher} ${cmd})
+    endif()
     if(DEFINED MESH)
         list(APPEND cmd --unit 20=${MESH})
     endif()

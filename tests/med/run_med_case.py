@@ -27,7 +27,8 @@ usage:
       Skipped (exit 77) when ASTER_DIR does not exist.
   run_med_case.py missing-plugin PARASOL DECK MESH WORKDIR WRONG_ABI_SO
       A copy of PARASOL outside the build tree finds no plug-in: a MED deck stops with exit 1
-      and the loader's reason, located at LIRE_MAILLAGE/UNITE; a deck without MED still runs.
+      and the loader's reason, located at LIRE_MAILLAGE/UNITE; a deck reading MESH (.mail)
+      without MED still runs (DECK is not used).
       The same with a plug-in file that is not a shared library, and with WRONG_ABI_SO (a
       plug-in of another version) in its place.
   run_med_case.py not-linked PARASOL
@@ -471,7 +472,10 @@ def case_missing_plugin(argv):
         if rc != 1 or expected not in err or phrase not in err or len(err.splitlines()) != 1:
             problems.append("plug-in %s: exit %d, %r" % (case, rc, err))
         problems += ["plug-in %s: crash sign %r" % (case, s) for s in CRASH_SIGNS if s in err]
-    rc, _, err = run(copy, deck, os.path.join(workdir, "ascii"), ["20=" + os.path.abspath(mesh)])
+    ascii_deck = os.path.join(workdir, "ascii.comm")   # no solver either: no plug-in at all
+    write(ascii_deck, "DEBUT()\nMAIL = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\nFIN()\n")
+    rc, _, err = run(copy, ascii_deck, os.path.join(workdir, "ascii"),
+                     ["20=" + os.path.abspath(mesh)])
     if rc != 0:
         problems.append("a deck without MED must run without the plug-in: exit %d %r" % (rc, err))
     return problems

@@ -1,4 +1,4 @@
-/* Build-time check of the MED ABI that src/plugins/med/parasol_med_plugin.f90 assumes:
+/* Build-time check of the MED ABI that plugins/med/parasol_med_plugin.f90 assumes:
  * the sizes of med_int, med_idt, med_float and the values of the med.h constants it
  * passes to MED. A Debian MED built differently (64-bit med_int, another release with
  * renumbered enums) stops the build here instead of corrupting memory at run time. */
