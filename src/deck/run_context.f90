@@ -109,6 +109,9 @@ module run_context
         integer(i8) :: built = 0                   !< sequence items built in this pass
         integer(i8) :: next_list = 0               !< identities of lists (append)
         type(deadline_t) :: deadline               !< P time_limit of an export file
+        !> Result files (MED) written so far in this run: a later IMPR_RESU adds to them, as
+        !> Code_Aster adds to the file of a unit, instead of replacing them.
+        type(string_t), allocatable :: result_files(:)
     contains
         procedure :: register => ctx_register
         procedure :: find_handler => ctx_find_handler
