@@ -3,12 +3,17 @@
 !>
 !> Per step (instant t+): imposed values and external forces at t+; then iterations
 !> u <- u + K^-1 (f_ext - f_int(u)) on the free equations, iteration 0 being the prediction.
-!> K is the "elastic" matrix (every DIS_CHOC spring closed and bilateral; assembled and
-!> factored once per analysis and reused) or the tangent at the current spring status.
+!> K is the "elastic" matrix (every contact spring closed and bilateral) or the tangent at
+!> the current spring status; there is one assembled matrix and one factor per analysis, so
+!> switching between the two refactors (drop marks the factor stale).
 !>   prediction: PREDICTION (default: the MATRICE choice, as Code_Aster); a tangent
-!>               prediction is rebuilt every REAC_INCR steps (1), otherwise reused;
+!>               prediction, assembled at the start of the step, is rebuilt every REAC_INCR
+!>               steps (1), otherwise reused;
 !>   corrections: MATRICE = ELASTIQUE: the elastic matrix; TANGENTE: rebuilt every REAC_ITER
 !>               iterations (REAC_ITER = 0, the default: the prediction's matrix is kept).
+!>   With DIS_CHOC springs every correction and every tangent prediction use the tangent
+!>   rebuilt at that point, whatever MATRICE/REAC_ITER/REAC_INCR say (Code_Aster,
+!>   MECANONLINE5_5); DIS_CONTACT springs follow NEWTON as given.
 !> Convergence: RESI_GLOB_RELA = max|f_ext - f_int| (free equations) / max(max|f_ext|,
 !> max|reactions|) <= tolerance (and RESI_GLOB_MAXI = the numerator <= its value if given)
 !> and no spring changed status in the last iteration. A zero denominator (no load) switches
