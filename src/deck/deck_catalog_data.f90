@@ -222,7 +222,31 @@ contains
         type(catalog_t), intent(inout) :: c
         call describe_load_command(c, 'AFFE_CHAR_MECA', 'R')
         call describe_load_command(c, 'AFFE_CHAR_MECA_F', 'FUNC')
+        call describe_kinematic_load(c, 'AFFE_CHAR_CINE', 'R')
+        call describe_kinematic_load(c, 'AFFE_CHAR_CINE_F', 'FUNC')
     end subroutine describe_loads
+
+    !> AFFE_CHAR_CINE / AFFE_CHAR_CINE_F (Code_Aster U4.44.03): imposed values eliminated
+    !> from the system (no Lagrange multipliers), MECA_IMPO only; NOEUD in the real form only.
+    subroutine describe_kinematic_load(c, name, vtype)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: name, vtype
+        call c%command(name, 'char_cine_meca')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%fact('MECA_IMPO', max=MANY, req=.true.)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        if (vtype == 'R') then
+            call c%key('NOEUD', 'TXM', max=MANY)
+            call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA GROUP_NO NOEUD')
+        else
+            call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA GROUP_NO')
+        end if
+        call add_components(c, 'DX DY DZ DRX DRY DRZ', vtype)
+        call c%end_fact()
+    end subroutine describe_kinematic_load
 
     !> AFFE_CHAR_MECA (values are reals) and AFFE_CHAR_MECA_F (values are functions).
     subroutine describe_load_command(c, name, vtype)
@@ -239,7 +263,8 @@ contains
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('NOEUD', 'TXM', max=MANY)
         call c%rule(RULE_UN_PARMI, 'TOUT GROUP_NO GROUP_MA NOEUD')
-        call add_components(c, DOFS, vtype)
+        call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
+        call add_components(c, DOFS, vtype, also='BLOCAGE')
         call c%end_fact()
         call c%fact('FORCE_NODALE', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
@@ -268,10 +293,12 @@ contains
         call c%end_fact()
     end subroutine describe_load_command
 
-    !> Optional components (at least one) of a load factor keyword.
-    subroutine add_components(c, names, vtype)
+    !> Optional components (at least one of them, or of the keywords `also`) of a load
+    !> factor keyword.
+    subroutine add_components(c, names, vtype, also)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: names, vtype
+        character(len=*), intent(in), optional :: also
         integer :: i, j
         i = 1
         do while (i <= len_trim(names))
@@ -279,7 +306,11 @@ contains
             call c%key(names(i:j - 1), vtype)
             i = j + 1
         end do
-        call c%rule(RULE_AU_MOINS_UN, names)
+        if (present(also)) then
+            call c%rule(RULE_AU_MOINS_UN, names // ' ' // also)
+        else
+            call c%rule(RULE_AU_MOINS_UN, names)
+        end if
     end subroutine add_components
 
     subroutine describe_analyses(c)
@@ -289,7 +320,7 @@ contains
         call c%key('CHAM_MATER', 'cham_mater')
         call c%key('CARA_ELEM', 'cara_elem')
         call c%fact('EXCIT', max=MANY, req=.true.)
-        call c%key('CHARGE', 'char_meca', req=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
         call c%key('FONC_MULT', 'FUNC')
         call c%end_fact()
         call c%key('LIST_INST', 'listr8')
@@ -305,12 +336,12 @@ contains
         call c%key('CHAM_MATER', 'cham_mater', req=.true.)
         call c%key('CARA_ELEM', 'cara_elem')
         call c%fact('EXCIT', max=MANY, req=.true.)
-        call c%key('CHARGE', 'char_meca', req=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
         call c%key('FONC_MULT', 'FUNC')
         call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
         call c%end_fact()
         call c%fact('COMPORTEMENT', max=MANY, req=.true.)
-        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC')
+        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC DIS_CONTACT')
         call c%key('DEFORMATION', 'TXM', def='PETIT', into='PETIT')
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
@@ -336,7 +367,6 @@ contains
         call c%key('RESI_GLOB_MAXI', 'R')
         call c%key('ITER_GLOB_MAXI', 'I', def='10')       ! Code_Aster default
         call c%key('ARRET', 'TXM', def='OUI', into=OUI_NON)
-        call c%rule(RULE_EXCLUS, 'RESI_GLOB_RELA RESI_GLOB_MAXI')
         call c%end_fact()
         call describe_solver(c)
         call c%key('INFO', 'I', def='1', into='1 2')
