@@ -38,6 +38,7 @@ module contact_newton
         linear_cache_t
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
+    use spring_results, only: store_spring_fields
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use run_deadline, only: deadline_t
     use progress, only: progress_t, wall_seconds, progress_note, progress_update, &
@@ -222,6 +223,8 @@ contains
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
             state%closed, state%fn)
+        call store_spring_fields(s, state%u, res, st)      ! SIEF_ELGA, VARI_ELGA
+        if (st%failed()) return
         n_eq = int(size(times), i4) - 1
         allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
             summary%resi_rela(n_eq), summary%resi_maxi(n_eq))
@@ -231,6 +234,8 @@ contains
             if (st%failed()) return
             call result_store(res, step, times(step + 1), state%u, state%fint, &
                 reactions(map, state), state%closed, state%fn)
+            call store_spring_fields(s, state%u, res, st)
+            if (st%failed()) return
         end do
     end subroutine stat_non_line
 
