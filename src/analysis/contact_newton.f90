@@ -363,6 +363,7 @@ contains
             seconds = wall_seconds() - t0
             call log_add(log, iteration_row(iter, resi_rela, resi_maxi, zero_load, use, &
                 state%refactored, count(state%closed, kind=i4), changed, seconds))
+            call log_flush(log)             ! the .mess shows each row as it comes
             if (zero_load .and. .not. said_zero) then
                 call log_add(log, '  no load and no reaction: RESI_GLOB_RELA is undefined,' &
                     // ' absolute criterion RESI_GLOB_MAXI <= ' // real_e13(absolute_tol( &
