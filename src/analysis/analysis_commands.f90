@@ -108,7 +108,7 @@ contains
         if (st%failed()) return
         allocate (res)
         call log_stream(log, ctx%mess%unit, '    ')
-        call meca_statique(s, excit, times, options%factor, res, log, st)
+        call meca_statique(s, excit, times, options%factor, res, log, st, ctx%progress)
         call log_flush(log)
         if (st%failed()) return
         call move_alloc(res, result)
