@@ -150,7 +150,8 @@ contains
                 vari_cmps = [vari_cmps, string_t(name)]
             else
                 call set_error(st, STATUS_MODEL_ERROR, components(k)%s // ' is no ' // &
-                    'component of the fields asked for (NOM_CHAM ' // join_words(fields, ' ') // ')')
+                    'component of the fields asked for (NOM_CHAM ' // &
+                    join_words(fields, ' ') // ')')
                 return
             end if
         end do

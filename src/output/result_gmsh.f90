@@ -4,7 +4,7 @@
 !> $NodeData block per field array per instant (string tag: the view name; real tag: the
 !> time; integer tags: time step, number of components (1 or 3), number of nodes) and one
 !> $ElementData block per cell array per instant, every cell listed, 0 on the cells that do
-!> not carry the array (as in VTK; meshio reads $ElementData only when every cell is there). A view's name is the array's followed by the instant,
+!> not carry the array (as in VTK). A view's name is the array's followed by the instant,
 !> `DEPL (INST 1.5E+00)`, so that Gmsh's view list and title say which instant is shown; an
 !> array that does not change (a cell group) is written once, named without instant.
 !> Format: Gmsh reference manual, "MSH file format version 2 (legacy)". Written atomically.
