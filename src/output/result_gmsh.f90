@@ -147,6 +147,26 @@ contains
         call file%write_line('$EndElements')
     end subroutine write_elements
 
+    !> The opening of a $NodeData / $ElementData block: `$<kind>`, one string tag (the view
+    !> name), one real tag (the time), three integer tags (step, components, entries).
+    subroutine write_data_header(file, kind, view, time, step, components, entries)
+        type(atomic_file_t), intent(in) :: file
+        character(len=*), intent(in) :: kind, view
+        real(dp), intent(in) :: time
+        integer, intent(in) :: step, components, entries
+        character(len=32) :: buf
+        call file%write_line('$' // kind)
+        call file%write_line('1')
+        call file%write_line('"' // view // '"')
+        call file%write_line('1')
+        write (buf, '(' // REAL_FORMAT // ')') time
+        call file%write_line(trim(adjustl(buf)))
+        call file%write_line('3')
+        call file%write_line(to_text(step))
+        call file%write_line(to_text(components))
+        call file%write_line(to_text(entries))
+    end subroutine write_data_header
+
     !> One $NodeData block.
     subroutine write_node_data(file, array, time, step)
         type(atomic_file_t), intent(in) :: file
@@ -155,16 +175,8 @@ contains
         integer, intent(in) :: step
         character(len=128) :: buf
         integer :: i
-        call file%write_line('$NodeData')
-        call file%write_line('1')
-        call file%write_line('"' // gmsh_view_name(array%name, time) // '"')
-        call file%write_line('1')
-        write (buf, '(' // REAL_FORMAT // ')') time
-        call file%write_line(trim(adjustl(buf)))
-        call file%write_line('3')
-        call file%write_line(to_text(step))
-        call file%write_line(to_text(size(array%values, 1)))
-        call file%write_line(to_text(size(array%values, 2)))
+        call write_data_header(file, 'NodeData', gmsh_view_name(array%name, time), time, step, &
+            size(array%values, 1), size(array%values, 2))
         do i = 1, size(array%values, 2)
             write (buf, '(i0, *(" ", ' // REAL_FORMAT // '))') i, array%values(:, i)
             call file%write_line(squeeze(buf))
@@ -181,20 +193,13 @@ contains
         integer, intent(in) :: step
         character(len=128) :: buf
         integer :: c
-        call file%write_line('$ElementData')
-        call file%write_line('1')
         if (array%constant) then
-            call file%write_line('"' // array%name // '"')
+            call write_data_header(file, 'ElementData', array%name, time, step, 1, &
+                size(array%values))
         else
-            call file%write_line('"' // gmsh_view_name(array%name, time) // '"')
+            call write_data_header(file, 'ElementData', gmsh_view_name(array%name, time), &
+                time, step, 1, size(array%values))
         end if
-        call file%write_line('1')
-        write (buf, '(' // REAL_FORMAT // ')') time
-        call file%write_line(trim(adjustl(buf)))
-        call file%write_line('3')
-        call file%write_line(to_text(step))
-        call file%write_line('1')
-        call file%write_line(to_text(size(array%values)))
         do c = 1, size(array%values)
             write (buf, '(i0, " ", ' // REAL_FORMAT // ')') c, merge(array%values(c), 0.0_dp, &
                 array%defined(c))
