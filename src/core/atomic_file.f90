@@ -21,7 +21,7 @@ module atomic_file
         procedure :: discard => atomic_file_discard
     end type atomic_file_t
 
-    public :: open_atomic
+    public :: open_atomic, rename_file, delete_file
 
 contains
 
@@ -162,7 +162,9 @@ contains
         rc = c_unlink(path // c_null_char)
     end subroutine delete_file
 
-    !> rename(2) through the C library: atomic on one file system.
+    !> rename(2) through the C library: atomic on one file system. Also used to commit files
+    !> that a library writes itself under a temporary name (MED files, result_med).
+    !>  from, to : in, the paths;  ios : out, 0 on success
     subroutine rename_file(from, to, ios)
         use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
         character(len=*), intent(in) :: from, to

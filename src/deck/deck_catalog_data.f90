@@ -67,9 +67,9 @@ contains
     subroutine describe_mesh_and_model(c)
         type(catalog_t), intent(inout) :: c
         call c%command('LIRE_MAILLAGE', 'maillage')
-        call c%key('FORMAT', 'TXM', def='ASTER', into='ASTER MED GMSH')
+        call c%key('FORMAT', 'TXM', def='MED', into='ASTER MED GMSH')
         call c%key('UNITE', 'I', def='20')
-        call c%key('NOM_MED', 'TXM', noop=.true.)
+        call c%key('NOM_MED', 'TXM')
         call c%key('INFO_MED', 'I', noop=.true.)
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%key('VERI_MAIL', 'ANY', min=0, max=MANY, noop=.true.)
@@ -405,7 +405,7 @@ contains
         call c%end_fact()
 
         call c%command('IMPR_RESU', '')
-        call c%key('FORMAT', 'TXM', def='RESULTAT', into='RESULTAT GMSH VTK')
+        call c%key('FORMAT', 'TXM', def='RESULTAT', into='RESULTAT GMSH VTK MED')
         call c%key('UNITE', 'I', def='8')
         call c%key('MODELE', 'modele', noop=.true.)
         call c%key('PROC0', 'TXM', into=OUI_NON, noop=.true.)

@@ -113,6 +113,9 @@ module run_context
         !> Where long work reports its progress (cli's reporter; null: nobody listens).
         !> A pointer, so that handlers can hand it down to the analyses.
         class(progress_t), pointer :: progress => null()
+        !> Result files (MED) written so far in this run: a later IMPR_RESU adds to them, as
+        !> Code_Aster adds to the file of a unit, instead of replacing them.
+        type(string_t), allocatable :: result_files(:)
     contains
         procedure :: register => ctx_register
         procedure :: find_handler => ctx_find_handler

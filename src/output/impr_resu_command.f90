@@ -3,7 +3,14 @@
 !>                    (result_table), restricted to GROUP_NO nodes and NOM_CMP components;
 !>  FORMAT='VTK'      : per RESU occurrence `<stem>_<RESULT>.pvd` and one
 !>                    `<stem>_<RESULT>_NNNN.vtu` per instant in the output folder;
-!>  FORMAT='GMSH'     : per RESU occurrence `<stem>_<RESULT>.msh` in the output folder.
+!>  FORMAT='GMSH'     : per RESU occurrence `<stem>_<RESULT>.msh` in the output folder;
+!>  FORMAT='MED'      : the mesh and the fields (result_med, laid out as Code_Aster writes
+!>                    them) in the file bound to UNITE (default 80, as Code_Aster) with
+!>                    `--unit 80=PATH`, every RESU occurrence in that one file; unbound, one
+!>                    `<stem>_<RESULT>.rmed` per occurrence in the output folder. Without
+!>                    NOM_CHAM every stored field (DEPL, FORC_NODA, REAC_NODA) is written. A
+!>                    file written earlier in the run is added to (Code_Aster adds to the
+!>                    file of a unit), not replaced; the mesh goes in once.
 !> For VTK and GMSH, a UNITE given in the deck and bound with `--unit N=PATH` replaces the
 !> default name: PATH itself for GMSH; for VTK the .pvd is PATH (`.pvd` added when PATH lacks
 !> it) and the .vtu files are named after it. Files are named in the .mess.
@@ -36,6 +43,9 @@ module impr_resu_command
     use mesh_types, only: cell_name
     use result_vtk, only: write_vtk_series
     use result_gmsh, only: write_gmsh_file
+    use result_med, only: med_output_t, med_output_open, med_output_commit, &
+        med_output_discard, med_output_mesh, write_med_mesh, write_med_node_field, &
+        med_field_name
     use test_resu_command, only: result_of_keyword, relocate
     implicit none
     private
@@ -43,6 +53,12 @@ module impr_resu_command
     !> NOM_CHAM printed when the occurrence gives none (Code_Aster prints every field; DEPL
     !> is the one every analysis stores and the one viewers deform the mesh with).
     character(len=*), parameter :: DEFAULT_FIELD = 'DEPL'
+    !> FORMAT='MED' without NOM_CHAM: every field a result stores (Code_Aster writes every
+    !> field of the result).
+    character(len=9), parameter :: MED_DEFAULT_FIELDS(3) = ['DEPL     ', 'FORC_NODA', &
+                                                            'REAC_NODA']
+    !> Code_Aster's default UNITE of IMPR_RESU for FORMAT='MED' (U4.91.01).
+    integer(i4), parameter :: MED_DEFAULT_UNIT = 80
 
     public :: run_impr_resu, node_fields_from_result, result_mesh_arrays, &
         impr_resu_instants, impr_resu_group_nodes, impr_resu_components
@@ -63,6 +79,10 @@ contains
         if (allocated(result)) deallocate (result)     ! IMPR_RESU has no result
         call cmd%get_text('FORMAT', format, st)
         if (st%failed()) return
+        if (format == 'MED') then
+            call print_med(ctx, cmd, st)
+            return
+        end if
         call bound_unit_path(ctx, cmd, bound_path, st)
         if (st%failed()) return
         do k = 1, cmd%count('RESU')
@@ -323,6 +343,160 @@ contains
             cells(:, k) = all
         end do
     end subroutine viewer_cell_arrays
+
+    !> FORMAT='MED': every RESU occurrence into the file of UNITE (default 80) when it is
+    !> bound, else into one <stem>_<RESULT>.rmed per occurrence.
+    subroutine print_med(ctx, cmd, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: bound_path
+        integer(i4) :: unit
+        integer :: k
+        unit = MED_DEFAULT_UNIT
+        if (cmd%given('UNITE')) then
+            call cmd%get_int('UNITE', unit, st)
+            if (st%failed()) return
+        end if
+        bound_path = ''
+        if (any(ctx%unit_numbers == unit)) then
+            call ctx%unit_path(unit, 'MED', bound_path, st)
+            if (st%failed()) return
+        end if
+        do k = 1, cmd%count('RESU')
+            call print_med_occurrence(ctx, bound_path, cmd%occurrence('RESU', k), st)
+            if (st%failed()) return
+        end do
+    end subroutine print_med
+
+    !> One RESU occurrence into a MED file: the mesh (once per file) and each field.
+    subroutine print_med_occurrence(ctx, bound_path, occ, st)
+        type(run_context_t), intent(inout) :: ctx
+        character(len=*), intent(in) :: bound_path
+        type(keyword_set_t), intent(in) :: occ
+        type(status_t), intent(out) :: st
+        type(result_concept_t), pointer :: res
+        type(string_t), allocatable :: fields(:), components(:), groups(:)
+        integer(i4), allocatable :: indices(:), nodes(:)
+        logical, allocatable :: selected(:)
+        type(node_field_t), allocatable :: steps(:)
+        type(med_output_t) :: out
+        character(len=:), allocatable :: path, mesh_name, written
+        logical :: append, exists
+        integer :: f, k
+        call result_of_keyword(occ, 'RESULTAT', res, st)
+        if (st%failed()) return
+        if (occ%has('NOM_CHAM')) then
+            call occ%get_texts('NOM_CHAM', fields, st)
+            if (st%failed()) return
+        else
+            allocate (fields(size(MED_DEFAULT_FIELDS)))
+            do f = 1, size(fields)
+                fields(f)%s = trim(MED_DEFAULT_FIELDS(f))
+            end do
+        end if
+        do f = 1, size(fields)
+            if (.not. is_cell_field(fields(f)%s)) cycle
+            ! an ELGA field in MED needs a Gauss-point localisation the MED plug-in does not
+            ! write yet
+            call occ%error_at('NOM_CHAM', fields(f)%s // ' is not written to MED yet (the ' // &
+                'springs'' element fields go to FORMAT=''VTK'', ''GMSH'' and ''RESULTAT'')', st)
+            return
+        end do
+        call occurrence_instants(occ, res, indices, st)
+        if (st%failed()) return
+        allocate (components(0))
+        if (occ%has('NOM_CMP')) call occ%get_texts('NOM_CMP', components, st)
+        if (st%failed()) return
+        call impr_resu_components(res, components, st)
+        if (st%failed()) then
+            call relocate(occ, 'NOM_CMP', st)
+            return
+        end if
+        allocate (selected(res%mesh%n_nodes), source=.true.)
+        if (occ%has('GROUP_NO')) then
+            call occ%get_texts('GROUP_NO', groups, st)
+            if (st%ok()) call impr_resu_group_nodes(res%mesh, groups, nodes, st)
+            if (st%failed()) then
+                call relocate(occ, 'GROUP_NO', st)
+                return
+            end if
+            selected = .false.
+            selected(nodes) = .true.
+        end if
+        path = bound_path
+        if (len(path) == 0) path = ctx%output_path('_' // res%name // '.rmed')
+        append = .false.
+        if (allocated(ctx%result_files)) append = any_path(ctx%result_files, path)
+        call med_output_open(out, path, append, st)
+        if (st%failed()) return
+        call med_output_mesh(out, res%mesh, mesh_stem(res%mesh%file), mesh_name, exists, st)
+        if (st%ok() .and. .not. exists) call write_med_mesh(out, res%mesh, mesh_name, st)
+        written = ''
+        do f = 1, size(fields)
+            if (st%failed()) exit
+            if (allocated(steps)) deallocate (steps)
+            allocate (steps(size(indices)))
+            do k = 1, size(indices)
+                call node_fields_from_result(res, fields(f)%s, components, indices(k), &
+                                             steps(k), st)
+                if (st%failed()) exit
+            end do
+            if (st%failed()) exit
+            call write_med_node_field(out, mesh_name, med_field_name(res%name, fields(f)%s), &
+                steps, res%nume_ordre(indices), res%inst(indices), selected, st)
+            if (f > 1) written = written // ', '
+            written = written // med_field_name(res%name, fields(f)%s)
+        end do
+        if (st%failed()) then
+            call med_output_discard(out)
+            return
+        end if
+        call med_output_commit(out, st)
+        if (st%failed()) return
+        call note_result_file(ctx, path)
+        call ctx%write_mess('    IMPR_RESU: wrote ' // path // ' (MED: mesh ' // mesh_name // &
+            ', fields ' // written // ', ' // to_text(size(indices, kind=i4)) // ' instant(s))')
+    end subroutine print_med_occurrence
+
+    !> The file name of a mesh path without folder and extension (the MED mesh name written
+    !> with the results; 'MAIL' when there is none).
+    pure function mesh_stem(path) result(stem)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: stem
+        integer :: dot
+        stem = path(index(path, '/', back=.true.) + 1:)
+        dot = index(stem, '.', back=.true.)
+        if (dot > 1) stem = stem(1:dot - 1)
+        if (len(stem) == 0) stem = 'MAIL'
+        if (len(stem) > 64) stem = stem(1:64)
+    end function mesh_stem
+
+    ! True when `path` is in `paths`.
+    pure logical function any_path(paths, path)
+        type(string_t), intent(in) :: paths(:)
+        character(len=*), intent(in) :: path
+        integer :: k
+        any_path = .false.
+        do k = 1, size(paths)
+            if (paths(k)%s == path) any_path = .true.
+        end do
+    end function any_path
+
+    ! Records a result file written by this run (ctx%result_files).
+    subroutine note_result_file(ctx, path)
+        type(run_context_t), intent(inout) :: ctx
+        character(len=*), intent(in) :: path
+        type(string_t), allocatable :: bigger(:)
+        integer :: n
+        if (.not. allocated(ctx%result_files)) allocate (ctx%result_files(0))
+        if (any_path(ctx%result_files, path)) return
+        n = size(ctx%result_files)
+        allocate (bigger(n + 1))
+        bigger(1:n) = ctx%result_files
+        bigger(n + 1)%s = path
+        call move_alloc(bigger, ctx%result_files)
+    end subroutine note_result_file
 
     !> A node field of a result at one stored instant.
     !>  res        : in, the result
