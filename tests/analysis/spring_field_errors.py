@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""TEST_RESU on the springs' element fields (SIEF_ELGA, VARI_ELGA) that cannot be answered
-stops with a located message at the keyword at fault (exit 1, no crash). Each case appends
+"""TEST_RESU on the springs' element fields (SIEF_ELGA, VARI_ELGA) that cannot be answered,
+and IMPR_RESU of them to MED (not written yet), stop with a located message at the keyword
+at fault (exit 1, no crash). Each case appends
 one TEST_RESU to decks/ssnl130b.comm (model B: 2D_DIS_T springs M49..M65, group RESSORTS).
 
 Usage: spring_field_errors.py PARASOL DECKS_DIR WORKDIR
@@ -35,17 +36,21 @@ CASES = [
      "SIEF_ELGA is an element field: give GROUP_MA"),
     ("point_of_depl", "NOM_CHAM='DEPL', NOM_CMP='DY', NOEUD='N1', POINT=1", "POINT",
      "POINT goes with the element fields"),
+    ("impr_resu_med", "IMPR_RESU(FORMAT='MED', RESU=_F(RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'))",
+     "NOM_CHAM", "SIEF_ELGA is not written to MED yet"),
 ]
 problems = []
 for name, occurrence, key, phrase in CASES:
-    line = f"TEST_RESU(RESU=_F(RESULTAT=RESU, INST=1.0, {occurrence}, VALE_CALC=0.0))"
+    line = occurrence if occurrence.startswith("IMPR_RESU") else \
+        f"TEST_RESU(RESU=_F(RESULTAT=RESU, INST=1.0, {occurrence}, VALE_CALC=0.0))"
+    command = line.split("(")[0]
     deck = os.path.join(work, f"spring_{name}.comm")
     with open(deck, "w") as f:
         f.write("\n".join(base[:fin] + [line] + base[fin:]))
     run = subprocess.run([parasol, "--unit", "20=" + os.path.join(decks, "ssnl130b.mail"),
                           "--outdir", work, deck], capture_output=True, text=True, timeout=60)
     column = line.index(key + "=") + 1 if key + "=" in line else line.index("RESU=_F") + 1
-    where = f"spring_{name}.comm:{fin + 1}:{column}: error: TEST_RESU/RESU/{key}: "
+    where = f"spring_{name}.comm:{fin + 1}:{column}: error: {command}/RESU/{key}: "
     if run.returncode != 1 or where not in run.stderr or phrase not in run.stderr \
             or "Fortran runtime" in run.stderr:
         problems.append(f"{name}: exit {run.returncode}, stderr {run.stderr.strip()!r}; "
