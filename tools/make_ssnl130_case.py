@@ -32,6 +32,40 @@ import make_ssnl130_mesh  # noqa: E402
 import rigid_bed_exact  # noqa: E402
 
 
+class HelpFormatter(argparse.ArgumentDefaultsHelpFormatter,
+                    argparse.RawDescriptionHelpFormatter):
+    """--help shows each option's default, and the docstring as written."""
+
+
+# Digits the pivots of the factorization lose (the ill-conditioning NPREC is compared with),
+# measured with parasol on the family (largest loss of the .mess, Release, LDLT, defaults
+# a = 1, b = 2, h = 0.3, E = 2e11, K = 1e4 unless said):
+#   model A, nx = ny/4:  4x16 7.6, 8x32 8.2, 16x64 8.8, 32x128 9.4, 64x256 10.0
+#   model A, nx = 4:     4x32 8.4, 4x64 9.3, 4x128 10.2
+#   model A, 4x16:       K 1e3 8.6, K 1e2 9.6, E 2e10 6.6;  16x64 K 1e3 9.8
+#   model B:             ny 16 8.0, 32 8.2, 64 8.5, 128 8.8, 256 9.1, 512 9.4; K 1e3 9.0, 1e2 10.0
+# i.e. one more digit per decade of plate-to-bed stiffness contrast, plus the mesh terms below
+# (fitted to 0.1 digit).
+NPREC_MARGIN = 0.5          # digits of margin above the expected loss
+NPREC_FLOOR = 9             # Code_Aster's SSNL130 (4 x 16)
+
+
+def expected_digits_lost(o):
+    """The largest pivot loss of digits expected for the case (fit of the table above)."""
+    import math
+    contrast = math.log10(o.E * o.h ** 3 / (2.0e11 * 0.3 ** 3)) - math.log10(float(o.K) / 1.0e4)
+    if o.model == "a":
+        return 7.6 + 2.9 * math.log10(o.ny / 16) - 0.9 * math.log10(o.nx / 4) + contrast
+    return 8.0 + 1.0 * math.log10(o.ny / 16) + contrast
+
+
+def default_nprec(o):
+    """SOLVEUR NPREC that lets the case run: the expected loss plus NPREC_MARGIN, rounded up,
+    at least NPREC_FLOOR (4x16: 9; 16x64: 10; 64x256: 11; 128x512: 12)."""
+    import math
+    return max(NPREC_FLOOR, math.ceil(expected_digits_lost(o) + NPREC_MARGIN))
+
+
 def e(value):
     """A real in the deck: repr of a float (round-trips exactly)."""
     return repr(float(value))
@@ -158,6 +192,9 @@ def solve_lines(o):
     lines = ["L_INST = DEFI_LIST_REEL(VALE=(" + ", ".join(e(t) for t in times) + "),)", ""]
     renum = o.renum or {"LDLT": "RCMK", "MULT_FRONT": "METIS", "MUMPS": "AUTO"}[o.methode]
     solver = f"SOLVEUR=_F(METHODE='{o.methode}', RENUM='{renum}', NPREC={o.nprec})"
+    if o.nprec_default:
+        lines.insert(0, f"# NPREC = {o.nprec} (make_ssnl130_case.py default): the pivots are "
+                        f"expected to lose {expected_digits_lost(o):.1f} digits here")
     if o.bilateral:
         lines += [
             "RESU = MECA_STATIQUE(MODELE=MODELE, CHAM_MATER=CHMAT, CARA_ELEM=CARA,",
@@ -225,19 +262,21 @@ def test_lines(o):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                 epilog=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--model", choices=["a", "b"], default="a")
-    ap.add_argument("--nx", type=int, default=4)
-    ap.add_argument("--ny", type=int, default=16)
-    ap.add_argument("--a", default="1")
-    ap.add_argument("--b", default="2")
-    ap.add_argument("--K", default="10000")
-    ap.add_argument("--p", default="5")
-    ap.add_argument("--m", type=int, default=2)
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0], epilog=__doc__,
+                                 formatter_class=HelpFormatter)
+    ap.add_argument("--model", choices=["a", "b"], default="a",
+                    help="a: 3D DKT plate on DIS_T springs; b: 2D D_PLAN slice on 2D_DIS_T")
+    ap.add_argument("--nx", type=int, default=4, help="cells across the width (model A)")
+    ap.add_argument("--ny", type=int, default=16, help="cells along the length (spring rows - 1)")
+    ap.add_argument("--a", default="1", help="plate width in m (model A; exact fraction allowed)")
+    ap.add_argument("--b", default="2", help="plate length in m")
+    ap.add_argument("--K", default="10000", help="global stiffness of the bed in N/m "
+                    "(RIGI_PARASOL, spread by area / length)")
+    ap.add_argument("--p", default="5", help="load scale: P(y) = p (b - y)^m, in Pa (N/m in B)")
+    ap.add_argument("--m", type=int, default=2, help="load exponent m")
     ap.add_argument("--lift", default="0", help="ground lift reached at t = 2 (0: no lift steps)")
-    ap.add_argument("--E", type=float, default=2.0e11)
-    ap.add_argument("--nu", type=float, default=0.3)
+    ap.add_argument("--E", type=float, default=2.0e11, help="Young's modulus of the plate, Pa")
+    ap.add_argument("--nu", type=float, default=0.3, help="Poisson's ratio of the plate")
     ap.add_argument("--h", type=float, default=0.3, help="plate thickness (A) / slice height (B)")
     ap.add_argument("--L", type=float, default=0.1, help="spring length")
     ap.add_argument("--dist1-offset", type=float, default=0.0, help="DIST_1 = L + offset")
@@ -245,17 +284,21 @@ def main(argv=None):
                     help="add DIST_1 - L to the references (the spring gap shifts the answer)")
     ap.add_argument("--refe-values", default="",
                     help="comma list: the INST 1 references of PT01..PT04 (A) / PT01, PT02 (B), "
-                         "e.g. from a flexible-plate model, instead of the rigid-plate ones")
+                         "e.g. from a flexible-plate model, instead of the rigid-plate ones "
+                         "('': the rigid-plate ones)")
     ap.add_argument("--steps", type=int, default=1, help="steps from t = 0 to t = 1")
-    ap.add_argument("--newton", choices=["tangente", "elastique"], default="tangente")
+    ap.add_argument("--newton", choices=["tangente", "elastique"], default="tangente",
+                    help="NEWTON: full Newton (TANGENTE, REAC_ITER 1) or the elastic matrix")
     ap.add_argument("--resi", type=float, default=1.0e-6, help="RESI_GLOB_RELA")
     ap.add_argument("--iter-max", type=int, default=10, help="ITER_GLOB_MAXI")
     ap.add_argument("--methode", choices=["LDLT", "MULT_FRONT", "MUMPS"], default="LDLT",
                     help="SOLVEUR METHODE (LDLT: the method the committed variants were made with)")
     ap.add_argument("--renum", choices=["RCMK", "METIS", "SANS", "AMD", "MD", "AUTO", "AMF", "PORD",
                                         "SCOTCH", "QAMD"], default=None,
-                    help="SOLVEUR RENUM (default: RCMK for LDLT, METIS for MULT_FRONT, AUTO for MUMPS)")
-    ap.add_argument("--nprec", type=int, default=9, help="SOLVEUR NPREC (9 as in the SSNL130 decks)")
+                    help="SOLVEUR RENUM (None: RCMK for LDLT, METIS for MULT_FRONT, AUTO for MUMPS)")
+    ap.add_argument("--nprec", type=int, default=None,
+                    help="SOLVEUR NPREC (None: follows the case, expected_digits_lost + 0.5 rounded "
+                         "up, at least 9 as in Code_Aster's SSNL130: 9 at 4x16, 11 at 64x256)")
     ap.add_argument("--bilateral", action="store_true", help="linear springs, MECA_STATIQUE")
     ap.add_argument("--relation", choices=["DIS_CHOC", "DIS_CONTACT"], default="DIS_CHOC",
                     help="the springs' law (DIS_CONTACT springs carry a force only if they start "
@@ -265,6 +308,9 @@ def main(argv=None):
                     help="the load lifts the plate: write no TEST_RESU")
     ap.add_argument("-o", "--output", required=True, help="path without extension")
     o = ap.parse_args(argv)
+    o.nprec_default = o.nprec is None
+    if o.nprec_default:
+        o.nprec = default_nprec(o)
     o.p, o.K, o.lift = Fr(o.p), Fr(o.K), Fr(o.lift)
     o.a, o.b = Fr(o.a), Fr(o.b)
     deck = header(o) + model_lines(o) + load_lines(o) + solve_lines(o)

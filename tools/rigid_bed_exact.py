@@ -33,6 +33,11 @@ import sys
 from fractions import Fraction as Fr
 
 
+class HelpFormatter(argparse.ArgumentDefaultsHelpFormatter,
+                    argparse.RawDescriptionHelpFormatter):
+    """--help shows each option's default, and the docstring as written."""
+
+
 class NoEquilibrium(ValueError):
     """No set of closed rows can carry the load (e.g. the load lifts the plate)."""
 
@@ -95,17 +100,20 @@ def solve_rigid_bed(ny, a=1, b=2, K=10000, p=5, m=2, lift=0, bilateral=False, lo
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--ny", type=int, default=16)
-    ap.add_argument("--a", default="1")
-    ap.add_argument("--b", default="2")
-    ap.add_argument("--K", default="10000")
-    ap.add_argument("--p", default="5")
-    ap.add_argument("--m", type=int, default=2)
-    ap.add_argument("--lift", default="0")
-    ap.add_argument("--bilateral", action="store_true")
-    ap.add_argument("--load", choices=["exact", "nodes"], default="exact")
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=HelpFormatter)
+    ap.add_argument("--ny", type=int, default=16, help="cells along the length (rows - 1)")
+    ap.add_argument("--a", default="1", help="plate width in m (exact fraction allowed)")
+    ap.add_argument("--b", default="2", help="plate length in m")
+    ap.add_argument("--K", default="10000", help="global bed stiffness in N/m")
+    ap.add_argument("--p", default="5", help="load scale: P(y) = p (b - y)^m")
+    ap.add_argument("--m", type=int, default=2, help="load exponent m")
+    ap.add_argument("--lift", default="0", help="rigid ground lift added to the answer")
+    ap.add_argument("--bilateral", action="store_true",
+                    help="springs that also pull (every row carries)")
+    ap.add_argument("--load", choices=["exact", "nodes"], default="exact",
+                    help="exact: the pressure integrated exactly; nodes: its values at the "
+                    "nodes, interpolated (what Code_Aster integrates for a pressure function "
+                    "on plates)")
     o = ap.parse_args(argv)
     try:
         r = solve_rigid_bed(o.ny, Fr(o.a), Fr(o.b), Fr(o.K), Fr(o.p), o.m, Fr(o.lift),

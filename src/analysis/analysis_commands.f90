@@ -28,7 +28,7 @@ module analysis_commands
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
     use analysis_result, only: result_concept_t, RESULT_INST_PRECISION
-    use analysis_log, only: analysis_log_t
+    use analysis_log, only: analysis_log_t, log_stream, log_flush
     implicit none
     private
 
@@ -51,7 +51,6 @@ contains
         type(analysis_log_t) :: log
         type(newton_summary_t) :: summary
         real(dp), allocatable :: times(:)
-        integer(i4) :: k
         call gather_structure(cmd, s, st)
         if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_behaviour(cmd, s, st)
@@ -59,16 +58,16 @@ contains
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
         options%deadline = ctx%deadline            ! polled between Newton iterations
+        options%progress => ctx%progress           ! a line per step, work under way
         call structure_check(s, st)
         if (st%failed()) return
         call ctx%write_mess('    ' // to_text(count(s%choc .and. .not. s%dis_contact)) // &
             ' DIS_CHOC cell(s), ' // to_text(count(s%dis_contact)) // ' DIS_CONTACT cell(s), ' &
             // to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
         allocate (res)
+        call log_stream(log, ctx%mess%unit, '    ')   ! the .mess grows step by step
         call stat_non_line(s, excit, times, options, res, log, summary, st)
-        do k = 1, log%n
-            call ctx%write_mess('    ' // log%lines(k)%s)
-        end do
+        call log_flush(log)
         if (st%failed()) return
         call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
             ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
@@ -91,7 +90,6 @@ contains
         type(analysis_log_t) :: log
         real(dp), allocatable :: times(:)
         class(concept_t), pointer :: p
-        integer(i4) :: k
         call gather_structure(cmd, s, st)
         if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
@@ -112,10 +110,9 @@ contains
         call structure_check(s, st)
         if (st%failed()) return
         allocate (res)
-        call meca_statique(s, excit, times, options%factor, res, log, st)
-        do k = 1, log%n
-            call ctx%write_mess('    ' // log%lines(k)%s)
-        end do
+        call log_stream(log, ctx%mess%unit, '    ')
+        call meca_statique(s, excit, times, options%factor, res, log, st, ctx%progress)
+        call log_flush(log)
         if (st%failed()) return
         call move_alloc(res, result)
     end subroutine run_meca_statique

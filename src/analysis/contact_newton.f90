@@ -26,7 +26,7 @@
 !> iterate whose tangent is free takes the elastic matrix for its correction. Plate and
 !> plane forces are accumulated from the increments (internal_forces_incremental).
 module contact_newton
-    use kinds, only: dp, i4, i8
+    use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
         STATUS_SINGULAR
     use strings, only: to_text, real_e13, real_short
@@ -44,8 +44,11 @@ module contact_newton
         is_dis_contact
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
-    use analysis_log, only: analysis_log_t, log_add
+    use spring_results, only: store_spring_fields
+    use analysis_log, only: analysis_log_t, log_add, log_flush
     use run_deadline, only: deadline_t
+    use progress, only: progress_t, wall_seconds, progress_note, progress_update, &
+        progress_done, progress_context
     implicit none
     private
 
@@ -122,6 +125,8 @@ module contact_newton
         integer(i4) :: iter_glob_maxi = DEFAULT_ITER_GLOB_MAXI
         type(solver_options_t) :: factor           !< SOLVEUR: METHODE, RENUM, NPREC ...
         type(deadline_t) :: deadline               !< the run's time limit, polled per iteration
+        !> the run's reporter: a line per step, the work under way (null: nobody listens)
+        class(progress_t), pointer :: progress => null()
     end type newton_options_t
 
     !> One EXCIT occurrence: a char_meca's load set and an optional FONC_MULT of INST.
@@ -207,6 +212,10 @@ contains
         logical, allocatable :: imposed(:)
         integer(i4) :: k, step, n_eq
         n_eq = s%dofs%n_equations
+        call progress_note(options%progress, 'STAT_NON_LINE: ' // to_text(n_eq) // &
+            ' equations, ' // to_text(count(s%choc, kind=i4)) // ' DIS_CHOC springs, ' // &
+            to_text(size(times, kind=i4) - 1) // ' step(s) from INST ' // &
+            real_short(times(1)) // ' to ' // real_short(times(size(times))))
         allocate (imposed(n_eq), source=.false.)
         do k = 1, size(excit)
             call mark_imposed(s, excit(k)%load, imposed, st)
@@ -218,6 +227,7 @@ contains
         call sym_move(map%pattern, state%matrix)
         call open_solver(options%factor, state%matrix, state%solver, log, st)
         if (st%failed()) return
+        state%solver%progress => options%progress
         call log_add(log, to_text(size(map%springs)) // ' ' // spring_law(s, map) // ' springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
             state%du(n_eq), source=0.0_dp)
@@ -240,6 +250,8 @@ contains
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
             state%closed, state%fn)
+        call store_spring_fields(s, state%u, res, st)      ! SIEF_ELGA, VARI_ELGA
+        if (st%failed()) return
         n_eq = int(size(times), i4) - 1
         allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
             summary%resi_rela(n_eq), summary%resi_maxi(n_eq))
@@ -249,6 +261,8 @@ contains
             if (st%failed()) return
             call result_store(res, step, times(step + 1), state%u, state%fint, &
                 reactions(map, state), state%closed, state%fn)
+            call store_spring_fields(s, state%u, res, st)
+            if (st%failed()) return
         end do
     end subroutine stat_non_line
 
@@ -322,12 +336,12 @@ contains
         type(status_t), intent(out) :: st
         logical, allocatable :: start(:), history(:, :)
         real(dp), allocatable :: r(:), resi_history(:)
-        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds
+        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start
         integer(i4) :: iter, changed, use, repeat_of
         character(len=:), allocatable :: seen
-        integer(i8) :: t0, t1, rate
         logical :: zero_load, converged, said_zero
         type(step_pivots_t) :: piv
+        step_start = wall_seconds()
         call log_add(log, '')
         call log_add(log, 'INST ' // real_e13(t) // ' (step ' // to_text(step) // ')')
         call log_add(log, ' ITER  RESI_GLOB_RELA  RESI_GLOB_MAXI  MATRIX                ' // &
@@ -354,12 +368,16 @@ contains
             call options%deadline%check('STAT_NON_LINE at INST ' // real_e13(t) // &
                                         ', Newton iteration ' // to_text(iter), st)
             if (st%failed()) return
-            call system_clock(t0, rate)
+            t0 = wall_seconds()
+            call progress_context(options%progress, 'STAT_NON_LINE, INST ' // real_short(t) &
+                // ' (step ' // to_text(step) // '/' // to_text(size(summary%inst)) // &
+                '), iteration ' // to_text(iter))
             use = choose_matrix(options, iter, step, state)
             call matrix_for_iteration(s, map, state, use, iter == 0, options%factor, t, log, &
                 piv, st)
             if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
+            call progress_update(options%progress, 'solve')
             call solve_correction(s, map, state, use, iter == 0, options%factor, r, t, log, &
                 piv, st)
             if (st%failed()) return
@@ -368,6 +386,7 @@ contains
             else
                 piv%n_free = 0
             end if
+            call progress_update(options%progress, 'internal forces')
             state%du = 0.0_dp
             state%du(map%free_to_eq) = r
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
@@ -379,10 +398,10 @@ contains
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
             resi_history(iter) = resi_maxi
-            call system_clock(t1)
-            seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
+            seconds = wall_seconds() - t0
             call log_add(log, iteration_row(iter, resi_rela, resi_maxi, zero_load, use, &
                 state%refactored, count(state%closed, kind=i4), changed, seconds))
+            call log_flush(log)             ! the .mess shows each row as it comes
             if (zero_load .and. .not. said_zero) then
                 call log_add(log, '  no load and no reaction: RESI_GLOB_RELA is undefined,' &
                     // ' absolute criterion RESI_GLOB_MAXI <= ' // real_e13(absolute_tol( &
@@ -438,6 +457,14 @@ contains
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.false.))
+        seconds = wall_seconds() - step_start
+        call log_add(log, '  wall time of the step: ' // seconds_text(seconds) // ' s')
+        call log_flush(log)
+        call progress_done(options%progress)
+        call progress_note(options%progress, step_line(t, step, size(summary%inst, kind=i4), &
+            iter, resi_rela, zero_load, count(state%closed, kind=i4), &
+            count(state%closed .neqv. start, kind=i4), size(state%closed, kind=i4), &
+            state%factorizations, seconds))
         summary%n_steps = step
         summary%max_digits_lost = state%pivots%max_digits_lost
         if (allocated(state%pivots%digits_at)) summary%digits_at = state%pivots%digits_at
@@ -874,10 +901,14 @@ contains
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
+        call progress_update(solver%progress, 'assembly of the ' // &
+            trim(merge('elastic', 'tangent', elastic)) // ' matrix')
         call assemble_stiffness(s, map, u, elastic, matrix, st, cache, history)
         if (st%failed()) return
         largest = 0.0_dp
         if (matrix%n > 0) largest = maxval(abs(sym_diagonal(matrix)))
+        call progress_update(solver%progress, 'factorization (' // &
+            trim(solver%options%method) // ')')
         call solver%factor(matrix, report, st)
         if (st%failed()) return
         if (present(log)) call log_add(log, factorization_line(report))
@@ -1162,6 +1193,37 @@ contains
         write (buf, '(f5.1)') x
         text = trim(adjustl(buf))
     end function real_digits
+
+    !> The terminal line of a finished step: INST, iterations, residual, springs closed and
+    !> changed in the step, factorizations, wall time.
+    function step_line(t, step, n_steps, iterations, resi_rela, zero_load, n_closed, &
+                       n_changed, n_springs, factorizations, seconds) result(text)
+        real(dp), intent(in) :: t, resi_rela, seconds
+        integer(i4), intent(in) :: step, n_steps, iterations, n_closed, n_changed, n_springs, &
+            factorizations
+        logical, intent(in) :: zero_load
+        character(len=:), allocatable :: text
+        text = 'INST ' // real_short(t) // ' (step ' // to_text(step) // '/' // &
+            to_text(n_steps) // '): ' // to_text(iterations) // ' iteration(s), '
+        if (zero_load) then
+            text = text // 'no load (absolute criterion)'
+        else
+            text = text // 'RESI_GLOB_RELA ' // real_short(resi_rela)
+        end if
+        text = text // ', ' // to_text(n_closed) // ' of ' // to_text(n_springs) // &
+            ' springs closed (' // to_text(n_changed) // ' changed), ' // &
+            to_text(factorizations) // ' factorization(s), ' // seconds_text(seconds) // ' s'
+    end function step_line
+
+    !> Seconds with three decimals (the TIME column's precision).
+    function seconds_text(seconds) result(text)
+        real(dp), intent(in) :: seconds
+        character(len=:), allocatable :: text
+        character(len=24) :: buf
+        write (buf, '(f0.3)') max(seconds, 0.0_dp)
+        text = trim(buf)
+        if (text(1:1) == '.') text = '0' // text
+    end function seconds_text
 
     !> One row of the Newton table.
     function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, refactored, n_closed, &

@@ -95,7 +95,7 @@ module assembly_system
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
-        contact_history_start, contact_history_update
+        contact_history_start, contact_history_update, spring_response
 
 contains
 
@@ -997,5 +997,34 @@ contains
         real(dp), intent(out) :: fe(8)
         fe = matmul(k8, plane_deformation(x2, ue))
     end subroutine plane_forces
+
+    !> The response of one SEG2 spring (DIS_T, 2D_DIS_T; DIS_CHOC or linear) at u: its
+    !> element displacements and the force on its second node (global frame), for the
+    !> spring results (analysis spring_results: SIEF_ELGA, VARI_ELGA).
+    !>  c      : in, a SEG2 discrete cell
+    !>  ue     : out, ue(1:n) the element displacements, node 1 then node 2
+    !>  n      : out, 2 x the space dimension
+    !>  force2 : out, force2(1:n/2) the force on node 2
+    !>  closed, fn : out, the DIS_CHOC status and normal force (closed, 0 for a linear one)
+    !>  st     : out, element failures, naming the cell
+    subroutine spring_response(s, c, u, ue, n, force2, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: u(:)
+        real(dp), intent(out) :: ue(MAX_ELEMENT_DOFS), force2(3), fn
+        integer(i4), intent(out) :: n
+        logical, intent(out) :: closed
+        type(status_t), intent(out) :: st
+        integer(i4) :: eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        force2 = 0.0_dp
+        ue = 0.0_dp
+        call element_equations(s, c, eqs, n)
+        call gather_into(u, eqs, n, ue)
+        call size_element_arrays(n, ke, fe)
+        call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, closed, fn, st)
+        if (st%failed()) return
+        force2(1:n / 2) = fe(n / 2 + 1:n)
+    end subroutine spring_response
 
 end module assembly_system

@@ -10,6 +10,10 @@ module deck_catalog_data
     public :: build_catalog
 
     character(len=*), parameter :: OUI_NON = 'OUI NON'
+    !> NOM_CMP of TEST_RESU and IMPR_RESU: DEPL, FORC_NODA, REAC_NODA components; SIEF_ELGA
+    !> of the discrete springs (N VY VZ); VARI_ELGA of DIS_CHOC (V1 .. V10).
+    character(len=*), parameter :: RESULT_COMPONENTS = 'DX DY DZ DRX DRY DRZ N VY VZ ' // &
+        'V1 V2 V3 V4 V5 V6 V7 V8 V9 V10'
 
 contains
 
@@ -409,12 +413,17 @@ contains
         call c%key('INST', 'R')
         call c%key('NUME_ORDRE', 'I')
         call c%rule(RULE_UN_PARMI, 'INST NUME_ORDRE')
-        call c%key('NOM_CHAM', 'TXM', req=.true., into='DEPL FORC_NODA REAC_NODA')
-        call c%key('NOM_CMP', 'TXM', req=.true., &
-                   into='DX DY DZ DRX DRY DRZ')
+        ! nodal fields at GROUP_NO / NOEUD; the spring fields (SIEF_ELGA, VARI_ELGA) at a
+        ! cell (GROUP_MA of one cell, or MAILLE) and POINT (test_resu_command)
+        call c%key('NOM_CHAM', 'TXM', req=.true., &
+                   into='DEPL FORC_NODA REAC_NODA SIEF_ELGA VARI_ELGA')
+        call c%key('NOM_CMP', 'TXM', req=.true., into=RESULT_COMPONENTS)
         call c%key('GROUP_NO', 'TXM')
         call c%key('NOEUD', 'TXM')
-        call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD')
+        call c%key('GROUP_MA', 'TXM')
+        call c%key('MAILLE', 'TXM')
+        call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD GROUP_MA MAILLE')
+        call c%key('POINT', 'I')
         call c%key('VALE_CALC', 'R', req=.true.)
         call c%key('TOLE_MACHINE', 'R', def='1.0E-6')     ! Code_Aster default
         call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
@@ -432,12 +441,13 @@ contains
         call c%key('PROC0', 'TXM', into=OUI_NON, noop=.true.)
         call c%fact('RESU', max=MANY, req=.true.)
         call c%key('RESULTAT', 'RESU', req=.true.)
-        call c%key('NOM_CHAM', 'TXM', max=MANY, into='DEPL FORC_NODA REAC_NODA')
+        call c%key('NOM_CHAM', 'TXM', max=MANY, &
+                   into='DEPL FORC_NODA REAC_NODA SIEF_ELGA VARI_ELGA')
         call c%key('INST', 'R', max=MANY)
         call c%key('NUME_ORDRE', 'I', max=MANY)
         call c%rule(RULE_EXCLUS, 'INST NUME_ORDRE')
         call c%key('GROUP_NO', 'TXM', max=MANY)
-        call c%key('NOM_CMP', 'TXM', max=MANY, into='DX DY DZ DRX DRY DRZ')
+        call c%key('NOM_CMP', 'TXM', max=MANY, into=RESULT_COMPONENTS)
         call c%end_fact()
     end subroutine describe_outputs
 
