@@ -13,8 +13,8 @@ Nothing is computed here but the drawing: every value comes from the .vtu files.
 
 It prints, per instant, what it drew (springs closed and open, their load, the lift-off
 line); the `bench.doc_picture_lift_off` test runs it into the build tree and checks those
-against the rigid-plate reference (65 closed springs carry the 40/3 N of the load, the
-lift-off line at y = 1.509 m).
+against the rigid-plate reference for the nodal load parasol applies, as Code_Aster (65
+closed springs carry the load's 855/64 N, the lift-off line at y = 1.5115 m).
 """
 import argparse
 import os

@@ -4,7 +4,8 @@ VARI_ELGA of four springs against the rigid-plate reference), then the files IMP
 are read back:
  - VTK, with meshio: each .vtu holds CellData SIEF_ELGA_N/VY/VZ, VARI_ELGA_V1..V10,
    SPRING_STATUS and GROUP_<group>; at INST 1 and 2 the status of every spring is its row's
-   in the exact solution (rows 0..n closed, tools/rigid_bed_exact.py), N = k z for the closed
+   in the exact solution for the nodal load parasol applies (rows 0..n closed,
+   tools/rigid_bed_exact.py, load="nodes"), N = k z for the closed
    ones (k by RIGI_PARASOL's area rule, z of the rigid plate) within 1e-6 of the largest
    force, 0 for the open ones, V1 = z for every spring within 1e-6 of max |z|;
  - Gmsh (gmsh22.py): $ElementData views named with their instant, the groups once (named
@@ -59,7 +60,7 @@ with open(mail) as f:
         elif block == "SEG2" and len(words) == 3:
             springs[int(words[0][1:])] = (words[1], words[2])
 ny, nx, b, a = 16, 4, Fr(2), Fr(1)
-ref = rigid_bed_exact.solve_rigid_bed(ny, a=a, b=b, K=10000, p=5, m=2)
+ref = rigid_bed_exact.solve_rigid_bed(ny, a=a, b=b, K=10000, p=5, m=2, load="nodes")
 k_area = Fr(10000) / (a * b)
 cell = (a / nx) * (b / ny)
 expected = {}                       # cell number (1-based) -> (closed, N, z)
