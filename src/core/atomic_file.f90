@@ -16,11 +16,12 @@ module atomic_file
     contains
         procedure :: is_open => atomic_file_is_open
         procedure :: write_line => atomic_file_write_line
+        procedure :: flush => atomic_file_flush
         procedure :: commit => atomic_file_commit
         procedure :: discard => atomic_file_discard
     end type atomic_file_t
 
-    public :: open_atomic
+    public :: open_atomic, rename_file, delete_file
 
 contains
 
@@ -107,6 +108,14 @@ contains
         write (self%unit, '(a)') line
     end subroutine atomic_file_write_line
 
+    !> Hands the lines written so far to the system (the temporary file then shows them,
+    !> e.g. to `tail -f`); the final name still appears only at commit.
+    subroutine atomic_file_flush(self)
+        class(atomic_file_t), intent(in) :: self
+        if (self%unit == -1) return
+        flush (self%unit)
+    end subroutine atomic_file_flush
+
     !> Closes the temporary file and renames it to the final name.
     subroutine atomic_file_commit(self, st)
         class(atomic_file_t), intent(inout) :: self
@@ -153,7 +162,9 @@ contains
         rc = c_unlink(path // c_null_char)
     end subroutine delete_file
 
-    !> rename(2) through the C library: atomic on one file system.
+    !> rename(2) through the C library: atomic on one file system. Also used to commit files
+    !> that a library writes itself under a temporary name (MED files, result_med).
+    !>  from, to : in, the paths;  ios : out, 0 on success
     subroutine rename_file(from, to, ios)
         use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
         character(len=*), intent(in) :: from, to

@@ -25,6 +25,7 @@ module direct_solver
     use status, only: status_t, set_error, STATUS_SINGULAR
     use strings, only: to_text
     use sparse_matrix, only: sym_matrix_t
+    use progress, only: progress_t
     implicit none
     private
 
@@ -86,6 +87,9 @@ module direct_solver
         !> factorization (0 when the back-end does not say).
         integer(i8) :: factor_terms = 0_i8
         real(dp) :: factor_flops = 0.0_dp
+        !> Where a back-end that can tell how far its factorization is reports it (the
+        !> run's reporter, set by the analysis; null: nobody listens)
+        class(progress_t), pointer :: progress => null()
     contains
         procedure(analyse_interface), deferred :: analyse
         procedure(factor_interface), deferred :: factor
