@@ -238,6 +238,9 @@ module contact_newton
         real(dp) :: factor_cost = 0.0_dp    !< a factorization, in solves
         real(dp) :: solves_since_factor = 0.0_dp   !< through it for another status
         integer(i4) :: last_updated_solves = 0     !< the last such solve's iterations
+        !> the last converged status factored to judge NPREC, and what its pivots said
+        logical, allocatable :: judged_closed(:)
+        type(pivot_diagnosis_t) :: judged
         type(held_t) :: held                !< equations held with the check off
         integer(i4) :: factorizations = 0, solves = 0, updated = 0, damped = 0  !< this step
         logical :: refactored = .false.
@@ -708,12 +711,17 @@ contains
         logical :: iterative, done
         mode = BY_REUSED_FACTOR
         piv%free_now = .false.          ! an updated solve is no free-tangent correction
-        iterative = use == MATRIX_TANGENT .and. state%by_status .and. &
-            .not. check_disabled(options%factor)
+        ! tangents, and the elastic matrix once its pivots are known regular (an elastic
+        ! prediction after a tangent step: it differs from the factored tangent by the open
+        ! springs)
+        iterative = state%by_status .and. .not. check_disabled(options%factor) .and. &
+            (use == MATRIX_TANGENT .or. (use == MATRIX_ELASTIC .and. &
+            state%elastic_kind == PIVOT_REGULAR))
         if (iterative) then
             target = pcg_target(options, map, state, r, settled)
-            if (.not. factor_holds(state, state%tangent_closed)) then
-                call updated_correction(s, map, state, target, log, piv, r, done, st)
+            if (.not. factor_holds(state, status_of(state, use))) then
+                call updated_correction(s, map, state, status_of(state, use), target, log, &
+                    piv, r, done, st)
                 if (st%failed()) return
                 if (done) then
                     mode = BY_UPDATED_FACTOR
@@ -726,8 +734,9 @@ contains
         if (st%failed()) return
         if (state%refactored) mode = BY_NEW_FACTOR
         call progress_update(options%progress, 'solve')
-        if (iterative .and. use == MATRIX_TANGENT .and. state%fac_usable) then
-            call refined_correction(s, map, state, target, t, log, r, st)
+        if (iterative .and. state%fac_usable .and. factor_holds(state, status_of(state, use))) &
+            then
+            call refined_correction(s, map, state, status_of(state, use), target, t, log, r, st)
         else
             call solve_correction(s, map, state, use, prediction, options%factor, r, t, log, &
                 piv, st)
@@ -765,17 +774,19 @@ contains
         end if
     end function criterion_tolerance
 
-    !> The tangent of status state%tangent_closed through the factor of another status
+    !> The matrix of status `closed` (a tangent, or the elastic matrix: all closed) through
+    !> the factor of another status
     !> (low_rank_update), when the factor is regular and the solves since it was made,
     !> with this one's expected count (the last one's), stay below a factorization's cost
     !> (a rent-or-buy rule: at most twice the cheaper of the two). Not done (done =
     !> .false., r untouched) when that budget is spent, or CG does not converge within it,
     !> breaks down, or its Ritz values leave fewer than FREE_PIVOT_DIGITS - the factor's
     !> digits: the tangent may be singular, its factorization will tell.
-    subroutine updated_correction(s, map, state, target, log, piv, r, done, st)
+    subroutine updated_correction(s, map, state, closed, target, log, piv, r, done, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
         real(dp), intent(in) :: target
         type(analysis_log_t), intent(inout) :: log
         type(step_pivots_t), intent(inout) :: piv
@@ -792,10 +803,10 @@ contains
         if (.not. (state%fac_valid .and. state%fac_usable)) return
         budget = state%factor_cost - state%solves_since_factor
         if (budget < real(max(1_i4, state%last_updated_solves), dp)) return
-        call status_difference(state%tangent_closed, state%fac_closed, active, signs)
+        call status_difference(closed, state%fac_closed, active, signs)
         opts%max_iterations = max(1_i4, int(budget, i4))
         opts%tolerance = target
-        call tangent_solve(s, map, state, state%tangent_closed, r, opts, x, rep, st)
+        call tangent_solve(s, map, state, closed, r, opts, x, rep, st)
         if (st%failed()) return
         state%solves = state%solves + rep%iterations
         state%solves_since_factor = state%solves_since_factor + real(rep%iterations, dp)
@@ -824,10 +835,10 @@ contains
         state%updated = state%updated + 1
         ! the largest bound seen for this status (short CG runs see fewer Ritz values)
         if (allocated(piv%updated_closed)) then
-            if (all(piv%updated_closed .eqv. state%tangent_closed)) bound = max(bound, &
+            if (all(piv%updated_closed .eqv. closed)) bound = max(bound, &
                 piv%updated_bound)
         end if
-        piv%updated_closed = state%tangent_closed
+        piv%updated_closed = closed
         piv%updated_bound = bound
         call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
             'factored status: ' // to_text(rep%iterations) // ' solves (PCG), residual ' // &
@@ -891,14 +902,15 @@ contains
         call move_alloc(work%x, x)
     end subroutine tangent_solve
 
-    !> A tangent solved with its own factor, refined by CG preconditioned with that factor
-    !> (at most REFINE_MAX solves, to `target`); a direct solve if CG breaks down (an
-    !> indefinite or singular factor).
+    !> A matrix of status `closed` (tangent or elastic) solved with its own factor, refined
+    !> by CG preconditioned with that factor (at most REFINE_MAX solves, to `target`); a
+    !> direct solve if CG breaks down (an indefinite or singular factor).
     !>  r : inout, the residual in, the correction out
-    subroutine refined_correction(s, map, state, target, t, log, r, st)
+    subroutine refined_correction(s, map, state, closed, target, t, log, r, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
         real(dp), intent(in) :: target, t
         type(analysis_log_t), intent(inout) :: log
         real(dp), intent(inout) :: r(:)
@@ -908,7 +920,7 @@ contains
         type(pcg_report_t) :: rep
         opts%max_iterations = REFINE_MAX
         opts%tolerance = target
-        call tangent_solve(s, map, state, state%tangent_closed, r, opts, x, rep, st)
+        call tangent_solve(s, map, state, closed, r, opts, x, rep, st)
         if (st%failed()) return
         state%solves = state%solves + rep%iterations
         if (rep%outcome /= PCG_BREAKDOWN) then
@@ -993,6 +1005,15 @@ contains
         if (factor_holds(state, state%closed)) return
         if (piv%updated_bound + RITZ_DIGITS_MARGIN <= real(effective_nprec(options%factor), &
             dp)) return
+        if (allocated(state%judged_closed)) then
+            if (all(state%judged_closed .eqv. state%closed)) then
+                ! the same matrix was judged in an earlier step: the same verdict
+                if (state%judged%kind /= PIVOT_REGULAR .and. .not. &
+                    check_disabled(options%factor)) &
+                    call report_pivots(state%judged, options%factor, t, log, st)
+                return
+            end if
+        end if
         call log_add(log, '  the converged status''s tangent was solved through another ' // &
             'status''s factor (digits bound ' // real_digits(piv%updated_bound) // &
             ', NPREC ' // to_text(effective_nprec(options%factor)) // '): factored to judge it')
@@ -1003,6 +1024,8 @@ contains
         use = MATRIX_TANGENT
         call factor_and_diagnose(s, map, state, use, .false., t, log, diag, st)
         if (st%failed()) return
+        state%judged_closed = state%closed
+        state%judged = diag
         if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(options%factor)) &
             call report_pivots(diag, options%factor, t, log, st)
     end subroutine judge_converged_tangent
