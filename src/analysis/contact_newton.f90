@@ -53,7 +53,7 @@ module contact_newton
         effective_nprec, check_disabled, DIGITS_ALL_LOST
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
+        assemble_stiffness, internal_forces_incremental, renumbering_lines, &
         linear_cache_t, contact_history_t, contact_history_start, contact_history_update, &
         is_dis_contact, spring_matrices, spring_lines, linear_product
     use element_dis_choc, only: choc_line_t
@@ -329,8 +329,11 @@ contains
             call log_add(log, 'DIS_CHOC springs: the corrections use the tangent matrix, ' // &
             'rebuilt at every iteration (REAC_ITER = 1), whatever NEWTON/MATRICE and ' // &
             'REAC_ITER say, as Code_Aster does (its message MECANONLINE5_5)')
-        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st, &
-            state%history)
+        ! the state at u = 0: K_lin 0 = 0 exactly, so the incremental form (which builds the
+        ! linear cells' cache the steps need anyway) gives internal_forces' values without
+        ! rebuilding every plate stiffness (0.2 s at 64 x 256)
+        call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
+            state%closed, state%fn, st, state%linear, history=state%history)
         if (st%failed()) return
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &

@@ -223,10 +223,17 @@ contains
         call element_free_equations(s, map, ptr, eqs_all)
         call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_before, &
             map%bandwidth_before)
-        call number_free(s, imposed, new_to_old, map)
-        call element_free_equations(s, map, ptr, eqs_all)
-        call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_after, &
-            map%bandwidth_after)
+        if (renum == 'SANS') then
+            ! the mesh order itself (and the order of the back-ends that order themselves):
+            ! the numbering above is the final one
+            map%profile_after = map%profile_before
+            map%bandwidth_after = map%bandwidth_before
+        else
+            call number_free(s, imposed, new_to_old, map)
+            call element_free_equations(s, map, ptr, eqs_all)
+            call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_after, &
+                map%bandwidth_after)
+        end if
         ! Cuthill-McKee from a corner of a structured plate grows diagonal fronts: on the
         ! SSNL130 plates and square plates its profile is 5-25 % larger than the mesh's own
         ! row-by-row order. The skyline cost follows the profile, so RCMK never makes it
