@@ -234,6 +234,8 @@ module contact_newton
         !> is rebuilt (drop marks it stale)
         logical, allocatable :: tangent_closed(:)
         logical :: tangent_stale = .true.
+        !> the last correction was solved by CG with a factor (updated or refined)
+        logical :: iterative_solve = .false.
         type(block_set_t) :: blocks         !< every spring's closed matrix (free equations)
         real(dp) :: factor_cost = 0.0_dp    !< a factorization, in solves
         real(dp) :: solves_since_factor = 0.0_dp   !< through it for another status
@@ -483,6 +485,8 @@ contains
             call correction(s, map, state, use, iter == 0, options, t, tight(iter), log, piv, &
                 r, mode, st)
             if (st%failed()) return
+            ! a direct solve is no inexact-Newton correction, whatever the status did
+            if (mode /= BY_UPDATED_FACTOR .and. .not. state%iterative_solve) tight(iter) = .true.
             if (piv%free_now) then
                 piv%n_free = piv%n_free + 1
             else
@@ -714,6 +718,7 @@ contains
         logical :: iterative, done
         mode = BY_REUSED_FACTOR
         piv%free_now = .false.          ! an updated solve is no free-tangent correction
+        state%iterative_solve = .false.
         ! tangents, and the elastic matrix once its pivots are known regular (an elastic
         ! prediction after a tangent step: it differs from the factored tangent by the open
         ! springs)
@@ -728,6 +733,7 @@ contains
                 if (st%failed()) return
                 if (done) then
                     mode = BY_UPDATED_FACTOR
+                    state%iterative_solve = .true.
                     return
                 end if
             end if
@@ -740,6 +746,7 @@ contains
         if (iterative .and. state%fac_usable .and. factor_holds(state, status_of(state, use))) &
             then
             call refined_correction(s, map, state, status_of(state, use), target, t, log, r, st)
+            state%iterative_solve = .true.
         else
             call solve_correction(s, map, state, use, prediction, options%factor, r, t, log, &
                 piv, st)
