@@ -6,7 +6,7 @@ module system_error
         c_associated, c_f_pointer
     implicit none
     private
-    public :: last_errno, errno_text, process_id, readable_errno
+    public :: last_errno, errno_text, process_id, readable_errno, c_text
 
     interface
         function c_errno_location() result(p) bind(c, name='__errno_location')
@@ -61,20 +61,29 @@ contains
         integer, intent(in) :: code
         character(len=:), allocatable :: text
         type(c_ptr) :: p
-        character(kind=c_char), pointer :: chars(:)
-        integer :: n, k
         p = c_strerror(int(code, c_int))
         if (.not. c_associated(p)) then
             text = 'system error'
             return
         end if
+        text = c_text(p)
+    end function errno_text
+
+    !> The NUL-terminated C string at `p` as Fortran text ('' for a null pointer).
+    function c_text(p) result(text)
+        type(c_ptr), intent(in) :: p
+        character(len=:), allocatable :: text
+        character(kind=c_char), pointer :: chars(:)
+        integer :: n, k
+        text = ''
+        if (.not. c_associated(p)) return
         n = int(c_strlen(p))
         call c_f_pointer(p, chars, [n])
         text = repeat(' ', n)
         do k = 1, n
             text(k:k) = chars(k)
         end do
-    end function errno_text
+    end function c_text
 
     !> 0 when `path` can be opened and read, else the errno of the failing call (open(2)
     !> read-only, then a read(2) of one byte: a folder opens but fails with EISDIR).
