@@ -160,20 +160,23 @@ contains
 
     !> JOB = 1 on the pattern (upper triangle by columns, 1-based).
     !>  entries : out, estimated entries of the factor (INFOG(20) x 1e6 if negative)
+    !>  flops   : out, estimated flops of the elimination (RINFOG(1))
     !>  info    : out, INFOG(1), INFOG(2)
-    function parasol_mumps_analyse(handle, n, col_ptr, row_index, entries, info) result(rc) &
-        bind(c, name='parasol_mumps_analyse')
+    function parasol_mumps_analyse(handle, n, col_ptr, row_index, entries, flops, info) &
+        result(rc) bind(c, name='parasol_mumps_analyse')
         type(c_ptr), value :: handle
         integer(c_int64_t), value :: n
         integer(c_int64_t), intent(in) :: col_ptr(n + 1)
         integer(c_int32_t), intent(in) :: row_index(*)
         integer(c_int64_t), intent(out) :: entries
+        real(c_double), intent(out) :: flops
         integer(c_int32_t), intent(out) :: info(2)
         integer(c_int32_t) :: rc
         type(instance_t), pointer :: inst
         integer(c_int64_t) :: j, k
         rc = -3
         entries = 0
+        flops = 0.0d0
         info = 0
         if (.not. c_associated(handle) .or. n < 0) return
         call c_f_pointer(handle, inst)
@@ -198,6 +201,7 @@ contains
         if (inst%id%infog(1) < 0) rc = -1
         entries = int(inst%id%infog(20), c_int64_t)
         if (entries < 0) entries = -entries * 1000000_c_int64_t
+        flops = real(inst%id%rinfog(1), c_double)
     end function parasol_mumps_analyse
 
     !> JOB = 2 with `values` (the analysed pattern's order). detect = 1: null pivots with

@@ -72,6 +72,10 @@ contains
         call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
             ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
             ' factorization(s) in ' // to_text(summary%n_steps) // ' step(s)')
+        call ctx%write_mess('    contact Newton: ' // to_text(sum(summary%solves)) // &
+            ' solve(s) with a factor, ' // to_text(sum(summary%updated)) // &
+            ' tangent(s) through another status''s factor, ' // &
+            to_text(sum(summary%damped)) // ' correction(s) damped by the line search')
         call ctx%write_mess('    ' // solver_diagnostics_line(summary, options%factor%nprec, &
             options%factor%method))
         call move_alloc(res, result)

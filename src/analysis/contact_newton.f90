@@ -25,8 +25,21 @@
 !> status); see doc/analysis.md "Diagnosis" and check_no_equilibrium. An intermediate
 !> iterate whose tangent is free takes the elastic matrix for its correction. Plate and
 !> plane forces are accumulated from the increments (internal_forces_incremental).
+!>
+!> Tangent corrections (doc/analysis.md, "Contact Newton"), when every contact spring is
+!> DIS_CHOC (its tangent is then a function of the contact status): the factor is kept
+!> with the contact status it was assembled with, and a matrix of the same status is never
+!> factored again. A tangent of another status differs from it by the closed matrices of
+!> the springs that changed (low-rank): it is solved by conjugate gradients preconditioned
+!> with the factor (low_rank_update) while that costs fewer solves than a factorization
+!> (factor_cost_in_solves), and factored otherwise; a tangent solve with its own factor is
+!> refined by the same iteration. Every tangent correction is then damped, when a full step
+!> would raise the energy, by a line search on the contact energy (contact_line_search):
+!> with it full Newton cannot cycle; a status met again after full steps only is still
+!> reported as cycling, naming the springs. DIS_CONTACT springs (a tangent that depends on
+!> the step's history) keep the plain full Newton: every rebuilt tangent is factored.
 module contact_newton
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
         STATUS_SINGULAR
     use strings, only: to_text, real_e13, real_short
@@ -34,14 +47,20 @@ module contact_newton
     use model_dof_numbering, only: describe_equation
     use model_loads, only: load_set_t
     use function_concept, only: function_concept_t, param_binding_t
-    use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move
+    use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move, &
+        sym_add_element
     use direct_solver, only: direct_solver_t, solver_options_t, factor_report_t, &
-        effective_nprec, check_disabled
+        effective_nprec, check_disabled, DIGITS_ALL_LOST
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
+        assemble_stiffness, internal_forces_incremental, renumbering_lines, &
         linear_cache_t, contact_history_t, contact_history_start, contact_history_update, &
-        is_dis_contact
+        is_dis_contact, spring_matrices, spring_lines, linear_product
+    use element_dis_choc, only: choc_line_t
+    use low_rank_update, only: block_set_t, block_set_init, pcg_work_t, pcg_begin, &
+        pcg_continue, factor_cost_in_solves, pcg_options_t, pcg_report_t, PCG_CONVERGED, &
+        PCG_BREAKDOWN
+    use contact_line_search, only: step_choice_t, choose_step, any_crossing
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
     use spring_results, only: store_spring_fields
@@ -58,6 +77,34 @@ module contact_newton
     !> Springs named in a list before it is abbreviated.
     integer(i4), parameter :: LIST_NAMES = 6
     integer(i4), parameter :: MATRIX_NONE = 0, MATRIX_ELASTIC = 1, MATRIX_TANGENT = 2
+    !> How an iteration's matrix was solved (the MATRIX column of the Newton table): with
+    !> the factor it already had, after a new factorization, or through the factor of
+    !> another contact status updated by the springs that differ (low_rank_update).
+    integer(i4), parameter :: BY_REUSED_FACTOR = 0, BY_NEW_FACTOR = 1, BY_UPDATED_FACTOR = 2
+    !> A tangent solve (conjugate gradients with a factor) stops when its residual is
+    !> below this fraction of the convergence tolerance (RESI_GLOB_RELA times its
+    !> denominator, or RESI_GLOB_MAXI): the next Newton residual is then converged if the
+    !> contact status is right ...
+    real(dp), parameter :: PCG_TOLERANCE_FRACTION = 0.1_dp
+    !> ... or, while the status still changed in the last iteration, below this fraction
+    !> of the residual it corrects: an inexact Newton step (Eisenstat & Walker, SIAM J. Sci.
+    !> Comput. 17, 1996) spends no accuracy on a status that is about to change.
+    real(dp), parameter :: PCG_FORCING = 1.0e-2_dp
+    !> Solves that refine a direct solve with its own factor, at most (each gains the
+    !> digits the factorization kept, ~5 of 16 here; three reach the Newton tolerance).
+    integer(i4), parameter :: REFINE_MAX = 10
+    !> A tangent solved only through another status's factor is factored at convergence
+    !> to judge NPREC when the bound on its digits lost (the factor's digits plus log10 of
+    !> the Ritz condition estimate, low_rank_update) is within this margin of NPREC: Ritz
+    !> values estimate the extreme eigenvalues from inside.
+    real(dp), parameter :: RITZ_DIGITS_MARGIN = 0.5_dp
+    !> A spring that changed status in the last iteration while it would carry at most
+    !> this fraction of the convergence tolerance (in newtons) when closed sits at zero
+    !> gap: its status is immaterial to the equilibrium (the force is nil either way) and
+    !> does not keep the iteration from converging (a spring exactly at zero gap otherwise
+    !> flips with the round-off of every correction: the linear load P = p (b - y) on a
+    !> rigid plate puts the whole row y = b at zero gap).
+    real(dp), parameter :: ZERO_GAP_FORCE_FRACTION = 1.0e-2_dp
     !> A pivot below this fraction of the largest diagonal term is at the round-off level
     !> of the stiffest terms (~45 machine epsilons): a free rigid motion, even when the
     !> equation's own diagonal is small enough for NPREC not to flag it (e.g. a DX left free
@@ -107,6 +154,7 @@ module contact_newton
         integer(i4) :: nprec = 8
         !> solver diagnostics of the factorization (style.md: digits lost, pivot range)
         real(dp) :: digits = 0.0_dp                !< largest digits lost
+        logical :: digits_known = .true.           !< .false.: MUMPS (no pivot access)
         character(len=:), allocatable :: digits_at !< node and component of that pivot
         real(dp) :: min_pivot = 0.0_dp, max_pivot = 0.0_dp   !< range of |pivot|
     end type pivot_diagnosis_t
@@ -142,6 +190,9 @@ module contact_newton
         real(dp), allocatable :: inst(:)
         integer(i4), allocatable :: iterations(:)      !< Newton iterations (excl. prediction)
         integer(i4), allocatable :: factorizations(:)
+        integer(i4), allocatable :: solves(:)          !< solves with a factor
+        integer(i4), allocatable :: updated(:)         !< tangents through another factor
+        integer(i4), allocatable :: damped(:)          !< corrections the line search damped
         real(dp), allocatable :: resi_rela(:), resi_maxi(:)
         !> over every factorization: the largest loss of digits, where, and the |pivot| range
         real(dp) :: max_digits_lost = 0.0_dp
@@ -154,6 +205,7 @@ module contact_newton
         real(dp), allocatable :: u(:), fint(:), fext(:), fn(:)
         real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
+        real(dp), allocatable :: work(:)    !< (n_equations) products of the tangent
         type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
         type(contact_history_t) :: history  !< DIS_CONTACT springs at the start of the step
         logical, allocatable :: closed(:)
@@ -167,8 +219,32 @@ module contact_newton
         logical :: forced_tangent = .false.
         real(dp), allocatable :: u_start(:)  !< u at the start of the step (prediction point)
         integer(i4) :: current = MATRIX_NONE
+        !> every contact spring is DIS_CHOC: a tangent is a function of the contact status,
+        !> and the low-rank solves, the line search and the zero-gap rule apply
+        logical :: by_status = .false.
+        !> (by_status) the factor and the assembled matrix hold the tangent of status
+        !> fac_closed (the elastic matrix = every spring closed); fac_usable: regular, so it
+        !> can precondition; fac_kind its pivot class; fac_digits: digits its pivots lost, at
+        !> most (MUMPS, which gives no pivots: NPREC) and at least (MUMPS: those reported)
+        logical :: fac_valid = .false., fac_usable = .false.
+        logical, allocatable :: fac_closed(:)
+        integer(i4) :: fac_kind = PIVOT_REGULAR
+        real(dp) :: fac_digits = 0.0_dp, fac_digits_low = 0.0_dp
+        !> the status of the tangent in use, taken from the current status when the tangent
+        !> is rebuilt (drop marks it stale)
+        logical, allocatable :: tangent_closed(:)
+        logical :: tangent_stale = .true.
+        !> the last correction was solved by CG with a factor (updated or refined)
+        logical :: iterative_solve = .false.
+        type(block_set_t) :: blocks         !< every spring's closed matrix (free equations)
+        real(dp) :: factor_cost = 0.0_dp    !< a factorization, in solves
+        real(dp) :: solves_since_factor = 0.0_dp   !< through it for another status
+        integer(i4) :: last_updated_solves = 0     !< the last such solve's iterations
+        !> the last converged status factored to judge NPREC, and what its pivots said
+        logical, allocatable :: judged_closed(:)
+        type(pivot_diagnosis_t) :: judged
         type(held_t) :: held                !< equations held with the check off
-        integer(i4) :: factorizations = 0
+        integer(i4) :: factorizations = 0, solves = 0, updated = 0, damped = 0  !< this step
         logical :: refactored = .false.
         integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
         type(solver_options_t) :: solver_options
@@ -182,6 +258,9 @@ module contact_newton
         character(len=:), allocatable :: free_where    !< last free pivot
         type(pivot_diagnosis_t) :: ill                 !< last ill-conditioned tangent ...
         logical, allocatable :: ill_closed(:)          !< ... and its contact status
+        !> last tangent solved through another status's factor, and its digits bound
+        logical, allocatable :: updated_closed(:)
+        real(dp) :: updated_bound = 0.0_dp
     end type step_pivots_t
 
     public :: stat_non_line, loads_at, residual_measures, factor_and_diagnose_linear, &
@@ -230,22 +309,33 @@ contains
         state%solver%progress => options%progress
         call log_add(log, to_text(size(map%springs)) // ' ' // spring_law(s, map) // ' springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
-            state%du(n_eq), source=0.0_dp)
-        allocate (state%closed(size(map%springs)), state%fn(size(map%springs)))
+            state%du(n_eq), state%work(n_eq), source=0.0_dp)
+        allocate (state%closed(size(map%springs)), state%fn(size(map%springs)), &
+            state%fac_closed(size(map%springs)), state%tangent_closed(size(map%springs)))
         state%nprec = options%factor%nprec
+        call block_set_init(state%blocks, size(map%springs, kind=i4))
+        call spring_matrices(s, map, state%blocks%sizes, state%blocks%eqs, state%blocks%k, st)
+        if (st%failed()) return
+        state%factor_cost = factor_cost_in_solves(state%solver%factor_flops, &
+            state%solver%factor_terms, map%n_free)
         call contact_history_start(s, map, state%history, st)
         if (st%failed()) return
         call warn_unpressed_dis_contact(s, map, state%history, log)
         state%forced_tangent = .false.
+        state%by_status = .true.
         do k = 1, size(map%springs)
             if (.not. is_dis_contact(s, map%springs(k))) state%forced_tangent = .true.
+            if (is_dis_contact(s, map%springs(k))) state%by_status = .false.
         end do
         if (state%forced_tangent .and. (options%matrix_elastic .or. options%reac_iter /= 1)) &
             call log_add(log, 'DIS_CHOC springs: the corrections use the tangent matrix, ' // &
             'rebuilt at every iteration (REAC_ITER = 1), whatever NEWTON/MATRICE and ' // &
             'REAC_ITER say, as Code_Aster does (its message MECANONLINE5_5)')
-        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st, &
-            state%history)
+        ! the state at u = 0: K_lin 0 = 0 exactly, so the incremental form (which builds the
+        ! linear cells' cache the steps need anyway) gives internal_forces' values without
+        ! rebuilding every plate stiffness (0.2 s at 64 x 256)
+        call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
+            state%closed, state%fn, st, state%linear, history=state%history)
         if (st%failed()) return
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
@@ -254,7 +344,8 @@ contains
         if (st%failed()) return
         n_eq = int(size(times), i4) - 1
         allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
-            summary%resi_rela(n_eq), summary%resi_maxi(n_eq))
+            summary%resi_rela(n_eq), summary%resi_maxi(n_eq), summary%solves(n_eq), &
+            summary%updated(n_eq), summary%damped(n_eq))
         do step = 1, int(size(times), i4) - 1
             call newton_step(s, map, excit, times(step + 1), step, options, state, log, &
                 summary, st)
@@ -314,13 +405,20 @@ contains
         real(dp) :: denominator
         resi_maxi = maxval(abs(fext - fint), mask=.not. imposed, dim=1)
         if (count(.not. imposed) == 0) resi_maxi = 0.0_dp
-        denominator = maxval(abs(fext), dim=1)
-        if (any(imposed)) denominator = max(denominator, &
-            maxval(abs(fint - fext), mask=imposed, dim=1))
+        denominator = resi_denominator(imposed, fint, fext)
         zero_load = .not. denominator > 0.0_dp
         resi_rela = 0.0_dp
         if (.not. zero_load) resi_rela = resi_maxi / denominator
     end subroutine residual_measures
+
+    !> The denominator of RESI_GLOB_RELA: max(max|f_ext|, max|reactions|).
+    pure real(dp) function resi_denominator(imposed, fint, fext) result(denominator)
+        logical, intent(in) :: imposed(:)
+        real(dp), intent(in) :: fint(:), fext(:)
+        denominator = maxval(abs(fext), dim=1)
+        if (any(imposed)) denominator = max(denominator, &
+            maxval(abs(fint - fext), mask=imposed, dim=1))
+    end function resi_denominator
 
     !> One step of STAT_NON_LINE (see the module header).
     subroutine newton_step(s, map, excit, t, step, options, state, log, summary, st)
@@ -334,12 +432,11 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(newton_summary_t), intent(inout) :: summary
         type(status_t), intent(out) :: st
-        logical, allocatable :: start(:), history(:, :)
-        real(dp), allocatable :: r(:), resi_history(:)
-        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start
-        integer(i4) :: iter, changed, use, repeat_of
-        character(len=:), allocatable :: seen
-        logical :: zero_load, converged, said_zero
+        logical, allocatable :: start(:), history(:, :), full(:), tight(:)
+        real(dp), allocatable :: r(:), b(:), resi_history(:)
+        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start, alpha
+        integer(i4) :: iter, changed, use, mode
+        logical :: zero_load, converged, said_zero, settled, solve_tightly, searchable
         type(step_pivots_t) :: piv
         step_start = wall_seconds()
         call log_add(log, '')
@@ -352,11 +449,20 @@ contains
         state%du = state%u - state%u_start
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
+            full(0:options%iter_glob_maxi), tight(0:options%iter_glob_maxi), &
             resi_history(0:options%iter_glob_maxi), r(map%n_free))
         state%factorizations = 0
+        state%solves = 0
+        state%updated = 0
+        state%damped = 0
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
+        settled = .false.           ! the last iteration changed no spring status
+        solve_tightly = .false.     ! a status came back after inexact corrections
+        ! the prediction's correction is a Newton step of the energy (line search) only
+        ! without imposed-value increments (with them it solves the linearised problem)
+        searchable = .not. maxval(abs(state%du)) > 0.0_dp
         ! Prediction (Code_Aster nmprta/nsassp): the imposed-value increments enter through
         ! the prediction matrix, K du = f_ext(t+) - f_int(t-) - K du_imposed, i.e. the springs
         ! are linearised about the start of the step (doc/analysis.md, "Prediction").
@@ -373,23 +479,28 @@ contains
                 // ' (step ' // to_text(step) // '/' // to_text(size(summary%inst)) // &
                 '), iteration ' // to_text(iter))
             use = choose_matrix(options, iter, step, state)
-            call matrix_for_iteration(s, map, state, use, iter == 0, options%factor, t, log, &
-                piv, st)
-            if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
-            call progress_update(options%progress, 'solve')
-            call solve_correction(s, map, state, use, iter == 0, options%factor, r, t, log, &
-                piv, st)
+            b = r
+            tight(iter) = settled .or. solve_tightly
+            call correction(s, map, state, use, iter == 0, options, t, tight(iter), log, piv, &
+                r, mode, st)
             if (st%failed()) return
+            ! a direct solve is no inexact-Newton correction, whatever the status did
+            if (mode /= BY_UPDATED_FACTOR .and. .not. state%iterative_solve) tight(iter) = .true.
             if (piv%free_now) then
                 piv%n_free = piv%n_free + 1
             else
                 piv%n_free = 0
             end if
+            alpha = 1.0_dp
+            full(iter) = .true.
+            if (use == MATRIX_TANGENT .and. state%by_status .and. (iter > 0 .or. searchable)) &
+                call line_search(s, map, state, b, r, log, alpha, full(iter), st)
+            if (st%failed()) return
             call progress_update(options%progress, 'internal forces')
             state%du = 0.0_dp
-            state%du(map%free_to_eq) = r
-            state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
+            state%du(map%free_to_eq) = alpha * r
+            state%u(map%free_to_eq) = state%u(map%free_to_eq) + state%du(map%free_to_eq)
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
                 state%fint, state%closed, state%fn, st, state%linear, history=state%history)
@@ -400,7 +511,7 @@ contains
             resi_history(iter) = resi_maxi
             seconds = wall_seconds() - t0
             call log_add(log, iteration_row(iter, resi_rela, resi_maxi, zero_load, use, &
-                state%refactored, count(state%closed, kind=i4), changed, seconds))
+                mode, count(state%closed, kind=i4), changed, seconds))
             call log_flush(log)             ! the .mess shows each row as it comes
             if (zero_load .and. .not. said_zero) then
                 call log_add(log, '  no load and no reaction: RESI_GLOB_RELA is undefined,' &
@@ -408,30 +519,22 @@ contains
                     options)) // ' N used')
                 said_zero = .true.
             end if
-            converged = changed == 0 .and. criteria_met(options, resi_rela, resi_maxi, &
-                zero_load)
+            converged = criteria_met(options, resi_rela, resi_maxi, zero_load)
+            if (converged .and. changed > 0) then
+                converged = .false.
+                if (state%by_status) call changes_at_zero_gap(s, map, state, options, &
+                    history(:, iter), log, converged, st)
+                if (st%failed()) return
+            end if
             if (converged) exit
             call check_no_equilibrium(s, map, state, use, iter, changed, piv, resi_maxi, &
                 previous_maxi, t, st)
             if (st%failed()) return
             previous_maxi = resi_maxi
-            ! history(:, k) is the status at the start of iteration k, i.e. the one shown
-            ! on row k - 1 of the table (or the step's starting status for k = 0)
-            repeat_of = cycle_start(history(:, 0:iter), state%closed)
-            if (repeat_of >= 0 .and. changed > 0) then
-                seen = 'the start of the step'
-                if (repeat_of > 0) seen = 'iteration ' // to_text(repeat_of - 1)
-                call log_add(log, '  contact status of iteration ' // to_text(iter) // &
-                    ' repeats ' // seen // ' (cycling)')
-                if (.not. options%matrix_elastic .and. options%reac_iter == 1) then
-                    call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
-                        ': the contact status cycles (iteration ' // to_text(iter) // &
-                        ' repeats ' // seen // '); springs ' // &
-                        'changing: ' // changed_names(s, map, history(:, iter), &
-                        state%closed))
-                    return
-                end if
-            end if
+            settled = changed == 0
+            call detect_cycle(s, map, options, history(:, 0:iter), full(0:iter), &
+                tight(0:iter), iter, changed, state%closed, t, log, solve_tightly, st)
+            if (st%failed()) return
         end do
         if (.not. converged) then
             call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
@@ -441,18 +544,16 @@ contains
                 history(:, options%iter_glob_maxi), state%closed))
             return
         end if
-        ! an ill-conditioned tangent of the converged contact status is the model's own
-        if (allocated(piv%ill_closed)) then
-            if (all(piv%ill_closed .eqv. state%closed)) then
-                call report_pivots(piv%ill, options%factor, t, log, st)
-                if (st%failed()) return
-            end if
-        end if
+        call judge_converged_tangent(s, map, state, options, piv, t, log, st)
+        if (st%failed()) return
         call contact_history_update(s, map, state%u, state%fn, state%history)
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
             to_text(count(state%closed, kind=i4)) // ' of ' // to_text(size(state%closed)) // &
             ' springs closed')
+        call log_add(log, '  solves with a factor: ' // to_text(state%solves) // &
+            '; tangents through another status''s factor: ' // to_text(state%updated) // &
+            '; corrections damped by the line search: ' // to_text(state%damped))
         call log_add(log, '  closed in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
@@ -473,6 +574,9 @@ contains
         summary%inst(step) = t
         summary%iterations(step) = iter
         summary%factorizations(step) = state%factorizations
+        summary%solves(step) = state%solves
+        summary%updated(step) = state%updated
+        summary%damped(step) = state%damped
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
@@ -541,8 +645,480 @@ contains
                 end if
             end if
         end if
+        if (use == MATRIX_TANGENT .and. state%tangent_stale) then
+            state%tangent_closed = state%closed
+            state%tangent_stale = .false.
+        end if
         state%current = use
     end function choose_matrix
+
+    !> The contact status of matrix `use`: every spring closed for the elastic matrix (the
+    !> closed and the bilateral spring matrices are the same), the tangent's own otherwise.
+    pure function status_of(state, use) result(closed)
+        type(newton_state_t), intent(in) :: state
+        integer(i4), intent(in) :: use
+        logical :: closed(size(state%closed))
+        closed = .true.
+        if (use == MATRIX_TANGENT) closed = state%tangent_closed
+    end function status_of
+
+    !> Whether the factor holds the matrix of contact status `closed`.
+    pure logical function factor_holds(state, closed)
+        type(newton_state_t), intent(in) :: state
+        logical, intent(in) :: closed(:)
+        factor_holds = state%fac_valid
+        if (factor_holds) factor_holds = all(state%fac_closed .eqv. closed)
+    end function factor_holds
+
+    !> The springs whose status differs between two contact statuses, with the sign of
+    !> their closed matrix in the difference now - before (+1 closed in `now` only).
+    pure subroutine status_difference(now, before, active, signs)
+        logical, intent(in) :: now(:), before(:)
+        integer(i4), allocatable, intent(out) :: active(:), signs(:)
+        integer(i4) :: k, n
+        n = count(now .neqv. before, kind=i4)
+        allocate (active(n), signs(n))
+        n = 0
+        do k = 1, size(now, kind=i4)
+            if (now(k) .eqv. before(k)) cycle
+            n = n + 1
+            active(n) = k
+            signs(n) = merge(1_i4, -1_i4, now(k))
+        end do
+    end subroutine status_difference
+
+    !> The correction of one iteration: r = K^-1 r for the matrix `use` (module header).
+    !> A tangent is solved through the factor of another status when that is allowed and
+    !> cheaper (updated_correction), else factored if needed (matrix_for_iteration, with
+    !> its pivot rules) and solved with its own factor, refined (refined_correction); the
+    !> elastic matrix, a flagged factor, every matrix with the singularity check off and
+    !> every matrix of an analysis with DIS_CONTACT springs by a direct solve
+    !> (solve_correction).
+    !>  prediction : in, iteration 0 (matrix_for_iteration)
+    !>  settled : in, solve to the convergence tolerance (no inexact Newton): the last
+    !>            iteration changed no spring status, or a status came back
+    !>  r       : inout, the residual on the free equations in, the correction out
+    !>  mode    : out, BY_REUSED_FACTOR, BY_NEW_FACTOR or BY_UPDATED_FACTOR
+    subroutine correction(s, map, state, use, prediction, options, t, settled, log, piv, r, &
+                          mode, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(inout) :: use
+        logical, intent(in) :: prediction
+        type(newton_options_t), intent(in) :: options
+        real(dp), intent(in) :: t
+        logical, intent(in) :: settled
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        real(dp), intent(inout) :: r(:)
+        integer(i4), intent(out) :: mode
+        type(status_t), intent(out) :: st
+        real(dp) :: target
+        logical :: iterative, done
+        mode = BY_REUSED_FACTOR
+        piv%free_now = .false.          ! an updated solve is no free-tangent correction
+        state%iterative_solve = .false.
+        ! tangents, and the elastic matrix once its pivots are known regular (an elastic
+        ! prediction after a tangent step: it differs from the factored tangent by the open
+        ! springs)
+        iterative = state%by_status .and. .not. check_disabled(options%factor) .and. &
+            (use == MATRIX_TANGENT .or. (use == MATRIX_ELASTIC .and. &
+            state%elastic_kind == PIVOT_REGULAR))
+        if (iterative) then
+            target = pcg_target(options, map, state, r, settled)
+            if (.not. factor_holds(state, status_of(state, use))) then
+                call updated_correction(s, map, state, status_of(state, use), target, log, &
+                    piv, r, done, st)
+                if (st%failed()) return
+                if (done) then
+                    mode = BY_UPDATED_FACTOR
+                    state%iterative_solve = .true.
+                    return
+                end if
+            end if
+        end if
+        call matrix_for_iteration(s, map, state, use, prediction, options%factor, t, log, &
+            piv, st)
+        if (st%failed()) return
+        if (state%refactored) mode = BY_NEW_FACTOR
+        call progress_update(options%progress, 'solve')
+        if (iterative .and. state%fac_usable .and. factor_holds(state, status_of(state, use))) &
+            then
+            call refined_correction(s, map, state, status_of(state, use), target, t, log, r, st)
+            state%iterative_solve = .true.
+        else
+            call solve_correction(s, map, state, use, prediction, options%factor, r, t, log, &
+                piv, st)
+            state%solves = state%solves + 1
+        end if
+    end subroutine correction
+
+    !> The linear tolerance of a tangent solve: PCG_TOLERANCE_FRACTION of the convergence
+    !> tolerance, in newtons, at the current iterate; while the contact status moves, no
+    !> less than PCG_FORCING times max|r| (inexact Newton).
+    real(dp) function pcg_target(options, map, state, r, settled) result(target)
+        type(newton_options_t), intent(in) :: options
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(in) :: state
+        real(dp), intent(in) :: r(:)
+        logical, intent(in) :: settled
+        target = PCG_TOLERANCE_FRACTION * criterion_tolerance(options, map, state)
+        if (.not. settled .and. size(r) > 0) target = max(target, PCG_FORCING * maxval(abs(r)))
+    end function pcg_target
+
+    !> The convergence tolerance in newtons at the current iterate: RESI_GLOB_RELA times
+    !> its denominator and/or RESI_GLOB_MAXI (the smaller), or the zero-load tolerance.
+    real(dp) function criterion_tolerance(options, map, state) result(tolerance)
+        type(newton_options_t), intent(in) :: options
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(in) :: state
+        real(dp) :: denominator
+        denominator = resi_denominator(map%imposed, state%fint, state%fext)
+        if (.not. denominator > 0.0_dp) then
+            tolerance = absolute_tol(options)
+        else
+            tolerance = huge(1.0_dp)
+            if (options%use_rela) tolerance = options%resi_glob_rela * denominator
+            if (options%use_maxi) tolerance = min(tolerance, options%resi_glob_maxi)
+        end if
+    end function criterion_tolerance
+
+    !> The matrix of status `closed` (a tangent, or the elastic matrix: all closed) through
+    !> the factor of another status
+    !> (low_rank_update), when the factor is regular and the solves since it was made,
+    !> with this one's expected count (the last one's), stay below a factorization's cost
+    !> (a rent-or-buy rule: at most twice the cheaper of the two). Not done (done =
+    !> .false., r untouched) when that budget is spent, or CG does not converge within it,
+    !> breaks down, or its Ritz values leave fewer than FREE_PIVOT_DIGITS - the factor's
+    !> digits: the tangent may be singular, its factorization will tell.
+    subroutine updated_correction(s, map, state, closed, target, log, piv, r, done, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: target
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        real(dp), intent(inout) :: r(:)
+        logical, intent(out) :: done
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: active(:), signs(:)
+        real(dp), allocatable :: x(:)
+        type(pcg_options_t) :: opts
+        type(pcg_report_t) :: rep
+        real(dp) :: budget, bound, condition
+        character(len=:), allocatable :: why
+        done = .false.
+        if (.not. (state%fac_valid .and. state%fac_usable)) return
+        budget = state%factor_cost - state%solves_since_factor
+        if (budget < real(max(1_i4, state%last_updated_solves), dp)) return
+        call status_difference(closed, state%fac_closed, active, signs)
+        opts%max_iterations = max(1_i4, int(budget, i4))
+        opts%tolerance = target
+        call tangent_solve(s, map, state, closed, r, opts, x, rep, st)
+        if (st%failed()) return
+        state%solves = state%solves + rep%iterations
+        state%solves_since_factor = state%solves_since_factor + real(rep%iterations, dp)
+        state%last_updated_solves = rep%iterations
+        ! digits of the Ritz condition estimate (no lower Ritz value above 0: singular)
+        condition = DIGITS_ALL_LOST
+        if (rep%ritz_min > 0.0_dp .and. rep%ritz_max > 0.0_dp) condition = &
+            max(log10(rep%ritz_max) - log10(rep%ritz_min), 0.0_dp)
+        bound = state%fac_digits + condition
+        why = ''
+        if (rep%outcome == PCG_BREAKDOWN) then
+            why = 'the tangent is not positive definite'
+        else if (rep%outcome /= PCG_CONVERGED) then
+            why = 'no convergence in ' // to_text(rep%iterations) // ' solves'
+        else if (state%fac_digits_low + condition >= FREE_PIVOT_DIGITS) then
+            why = 'it may be singular (' // real_digits(state%fac_digits_low + condition) // &
+                ' digits)'
+        end if
+        if (len(why) > 0) then
+            call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
+                'factored status; updated solve not used: ' // why)
+            return
+        end if
+        r = x
+        done = .true.
+        state%updated = state%updated + 1
+        ! the largest bound seen for this status (short CG runs see fewer Ritz values)
+        if (allocated(piv%updated_closed)) then
+            if (all(piv%updated_closed .eqv. closed)) bound = max(bound, &
+                piv%updated_bound)
+        end if
+        piv%updated_closed = closed
+        piv%updated_bound = bound
+        call log_add(log, '  ' // to_text(size(active)) // ' springs differ from the ' // &
+            'factored status: ' // to_text(rep%iterations) // ' solves (PCG), residual ' // &
+            real_short(rep%residual) // ' N, digits bound ' // real_digits(bound))
+    end subroutine updated_correction
+
+    !> q = K_S p on the free equations, K_S the tangent of contact status `closed`: every
+    !> cell but the DIS_CHOC springs element by element (linear_product, the arithmetic
+    !> of the residual, so CG can reach the tolerance the residual is judged by), plus the
+    !> closed matrix of each spring closed in `closed`.
+    subroutine tangent_product(s, map, state, closed, p, q, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: p(:)
+        real(dp), intent(out) :: q(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: b, i, j, m, ei, ej
+        real(dp) :: t
+        state%du = 0.0_dp
+        state%du(map%free_to_eq) = p
+        call linear_product(s, map, state%linear, state%du, state%work, st)
+        if (st%failed()) return
+        q = state%work(map%free_to_eq)
+        do b = 1, size(closed, kind=i4)
+            if (.not. closed(b)) cycle
+            m = state%blocks%sizes(b)
+            do i = 1, m
+                ei = state%blocks%eqs(i, b)
+                if (ei == 0) cycle
+                t = 0.0_dp
+                do j = 1, m
+                    ej = state%blocks%eqs(j, b)
+                    if (ej > 0) t = t + state%blocks%k(i, j, b) * p(ej)
+                end do
+                q(ei) = q(ei) + t
+            end do
+        end do
+    end subroutine tangent_product
+
+    !> K_S x = b by CG preconditioned with the factor (low_rank_update), the products
+    !> with K_S by tangent_product: the factor's status may be S (refinement) or another.
+    subroutine tangent_solve(s, map, state, closed, b, options, x, report, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: b(:)
+        type(pcg_options_t), intent(in) :: options
+        real(dp), allocatable, intent(out) :: x(:)
+        type(pcg_report_t), intent(out) :: report
+        type(status_t), intent(out) :: st
+        type(pcg_work_t) :: work
+        logical :: more
+        call pcg_begin(work, state%solver, b, options, report, more, st)
+        do while (more .and. st%ok())
+            call tangent_product(s, map, state, closed, work%p, work%q, st)
+            if (st%ok()) call pcg_continue(work, state%solver, report, more, st)
+        end do
+        call move_alloc(work%x, x)
+    end subroutine tangent_solve
+
+    !> A matrix of status `closed` (tangent or elastic) solved with its own factor, refined
+    !> by CG preconditioned with that factor (at most REFINE_MAX solves, to `target`); a
+    !> direct solve if CG breaks down (an indefinite or singular factor).
+    !>  r : inout, the residual in, the correction out
+    subroutine refined_correction(s, map, state, closed, target, t, log, r, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: target, t
+        type(analysis_log_t), intent(inout) :: log
+        real(dp), intent(inout) :: r(:)
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: x(:)
+        type(pcg_options_t) :: opts
+        type(pcg_report_t) :: rep
+        opts%max_iterations = REFINE_MAX
+        opts%tolerance = target
+        call tangent_solve(s, map, state, closed, r, opts, x, rep, st)
+        if (st%failed()) return
+        state%solves = state%solves + rep%iterations
+        if (rep%outcome /= PCG_BREAKDOWN) then
+            r = x
+            return
+        end if
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+        state%solves = state%solves + 1
+    end subroutine refined_correction
+
+    !> The step along the tangent correction p (contact_line_search): 1 unless springs
+    !> change status on it and the full step fails Armijo's condition on the energy.
+    !>  b : in, the residual the correction was solved for (f_ext - f_int, free equations)
+    !>  p : in, the correction
+    !>  alpha : out, the step; full : out, alpha = 1
+    subroutine line_search(s, map, state, b, p, log, alpha, full, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: b(:), p(:)
+        type(analysis_log_t), intent(inout) :: log
+        real(dp), intent(out) :: alpha
+        logical, intent(out) :: full
+        type(status_t), intent(out) :: st
+        type(choc_line_t), allocatable :: lines(:)
+        real(dp), allocatable :: q(:)
+        type(step_choice_t) :: choice
+        character(len=16) :: buf
+        real(dp) :: scale
+        alpha = 1.0_dp
+        full = .true.
+        if (size(map%springs) == 0 .or. .not. state%fac_valid .or. size(p) == 0) return
+        ! energies in units of scale^2 (the search does not depend on it): no overflow
+        scale = max(maxval(abs(state%u)), maxval(abs(p)))
+        if (.not. scale > 0.0_dp) return
+        allocate (lines(size(map%springs)))
+        state%du = 0.0_dp
+        state%du(map%free_to_eq) = p
+        call spring_lines(s, map, state%u, state%du, scale, lines, st)
+        if (st%failed() .or. .not. any_crossing(lines)) return
+        ! the curvature p^T K_S p of the tangent at u (element by element, as the residual)
+        allocate (q(size(p)))
+        call tangent_product(s, map, state, state%closed, p / scale, q, st)
+        if (st%failed()) return
+        call choose_step(lines, -dot_product(p / scale, b / scale), dot_product(p / scale, q), &
+            choice)
+        if (.not. choice%damped) return
+        alpha = choice%alpha
+        full = .false.
+        state%damped = state%damped + 1
+        write (buf, '(f8.6)') alpha
+        call log_add(log, '  line search: step ' // trim(adjustl(buf)) // ' of the ' // &
+            'correction (' // to_text(choice%n_crossing) // ' springs change status on it; ' &
+            // trim(merge('the full step raises the energy           ', &
+                          'the full step lowers the energy too little', &
+                          choice%energy_full > 0.0_dp)) // ')')
+    end subroutine line_search
+
+    !> At convergence: an ill-conditioned tangent of the converged contact status is the
+    !> model's own (report_pivots). A converged status whose tangent was only solved
+    !> through another status's factor is factored here when the bound on its digits lost
+    !> (piv%updated_bound + RITZ_DIGITS_MARGIN) passes NPREC, and judged the same way.
+    subroutine judge_converged_tangent(s, map, state, options, piv, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        type(newton_options_t), intent(in) :: options
+        type(step_pivots_t), intent(in) :: piv
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        type(pivot_diagnosis_t) :: diag
+        integer(i4) :: use
+        if (allocated(piv%ill_closed)) then
+            if (all(piv%ill_closed .eqv. state%closed)) then
+                call report_pivots(piv%ill, options%factor, t, log, st)
+                if (st%failed()) return
+            end if
+        end if
+        if (.not. allocated(piv%updated_closed)) return
+        if (.not. all(piv%updated_closed .eqv. state%closed)) return
+        if (factor_holds(state, state%closed)) return
+        if (piv%updated_bound + RITZ_DIGITS_MARGIN <= real(effective_nprec(options%factor), &
+            dp)) return
+        if (allocated(state%judged_closed)) then
+            if (all(state%judged_closed .eqv. state%closed)) then
+                ! the same matrix was judged in an earlier step: the same verdict
+                if (state%judged%kind /= PIVOT_REGULAR .and. .not. &
+                    check_disabled(options%factor)) &
+                    call report_pivots(state%judged, options%factor, t, log, st)
+                return
+            end if
+        end if
+        call log_add(log, '  the converged status''s tangent was solved through another ' // &
+            'status''s factor (digits bound ' // real_digits(piv%updated_bound) // &
+            ', NPREC ' // to_text(effective_nprec(options%factor)) // '): factored to judge it')
+        state%tangent_closed = state%closed
+        state%tangent_stale = .false.
+        call drop(state, MATRIX_TANGENT)
+        state%tangent_stale = .false.
+        use = MATRIX_TANGENT
+        call factor_and_diagnose(s, map, state, use, .false., t, log, diag, st)
+        if (st%failed()) return
+        state%judged_closed = state%closed
+        state%judged = diag
+        if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(options%factor)) &
+            call report_pivots(diag, options%factor, t, log, st)
+    end subroutine judge_converged_tangent
+
+    !> Whether every spring whose status changed since `before` would carry at most
+    !> ZERO_GAP_FORCE_FRACTION of the convergence tolerance when closed (at zero gap: its
+    !> status does not matter); the .mess says so when it does.
+    subroutine changes_at_zero_gap(s, map, state, options, before, log, settled, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        type(newton_options_t), intent(in) :: options
+        logical, intent(in) :: before(:)
+        type(analysis_log_t), intent(inout) :: log
+        logical, intent(out) :: settled
+        type(status_t), intent(out) :: st
+        type(choc_line_t), allocatable :: lines(:)
+        real(dp) :: scale, limit
+        integer(i4) :: k
+        settled = .false.
+        scale = maxval(abs(state%u))
+        if (.not. scale > 0.0_dp) scale = 1.0_dp
+        allocate (lines(size(map%springs)))
+        state%du = 0.0_dp
+        call spring_lines(s, map, state%u, state%du, scale, lines, st)
+        if (st%failed()) return
+        limit = ZERO_GAP_FORCE_FRACTION * criterion_tolerance(options, map, state)
+        do k = 1, size(lines, kind=i4)
+            if (state%closed(k) .eqv. before(k)) cycle
+            if (lines(k)%force > limit / scale) return
+        end do
+        settled = .true.
+        call log_add(log, '  ' // to_text(count(state%closed .neqv. before, kind=i4)) // &
+            ' spring(s) changed status at zero gap (a force below ' // real_short(limit) // &
+            ' N either way): ' // changed_names(s, map, before, state%closed))
+    end subroutine changes_at_zero_gap
+
+    !> A contact status met again in the step (history(:, k) is the status at the start of
+    !> iteration k; `now` the status after iteration iter). After full steps solved to the
+    !> convergence tolerance (`tight`), the iterates themselves repeat (a full Newton step
+    !> from a status lands on the same point whatever it starts from): that is a cycle,
+    !> logged, and for full Newton (REAC_ITER = 1) STATUS_NO_CONVERGENCE naming the
+    !> springs; the line search makes it a round-off accident (module header). After a
+    !> damped step it is no cycle; after inexact corrections (inexact Newton) neither, but
+    !> the next ones are solved tightly (solve_tightly).
+    subroutine detect_cycle(s, map, options, history, full, tight, iter, changed, now, t, &
+                            log, solve_tightly, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_options_t), intent(in) :: options
+        logical, intent(in) :: history(:, 0:), full(0:), tight(0:), now(:)
+        integer(i4), intent(in) :: iter, changed
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        logical, intent(inout) :: solve_tightly
+        type(status_t), intent(out) :: st
+        integer(i4) :: repeat_of
+        character(len=:), allocatable :: seen
+        repeat_of = cycle_start(history, now)
+        if (repeat_of < 0 .or. changed == 0) return
+        seen = 'the start of the step'
+        if (repeat_of > 0) seen = 'iteration ' // to_text(repeat_of - 1)
+        if (.not. all(full(repeat_of:iter))) then
+            call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+                ' repeats ' // seen // ' after a damped step (lower energy: no cycle)')
+            return
+        end if
+        if (.not. all(tight(repeat_of:iter))) then
+            call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+                ' repeats ' // seen // ' after inexact corrections: solved to the ' // &
+                'convergence tolerance from now on')
+            solve_tightly = .true.
+            return
+        end if
+        call log_add(log, '  contact status of iteration ' // to_text(iter) // &
+            ' repeats ' // seen // ' (cycling)')
+        if (.not. options%matrix_elastic .and. options%reac_iter == 1) then
+            call set_error(st, STATUS_NO_CONVERGENCE, 'INST ' // real_e13(t) // &
+                ': the contact status cycles (iteration ' // to_text(iter) // &
+                ' repeats ' // seen // '); springs ' // &
+                'changing: ' // changed_names(s, map, history(:, iter), now))
+        end if
+    end subroutine detect_cycle
 
     !> The matrix of one iteration, with the pivot rules of doc/analysis.md:
     !>  - tangent with springs open and a FREE pivot (an overshooting iterate, or no
@@ -633,6 +1209,7 @@ contains
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(in) :: which
         if (state%factored == which) state%factored = MATRIX_NONE
+        if (which == MATRIX_TANGENT) state%tangent_stale = .true.
     end subroutine drop
 
     !> Assembles and factors the matrix `use` unless the solver's factor already holds it
@@ -640,7 +1217,8 @@ contains
     !> tangent matrix refactors); diag is PIVOT_REGULAR when the factor was reused
     !> (state%elastic_kind keeps the class of the elastic matrix). A prediction's tangent is
     !> the one at the start of the step, before the imposed-value increments (Code_Aster
-    !> nmprta: zero increment).
+    !> nmprta: zero increment). With DIS_CHOC springs only, a factor is kept with its
+    !> contact status and reused for any matrix of that status.
     subroutine factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -653,13 +1231,21 @@ contains
         type(status_t), intent(out) :: st
         state%refactored = .false.
         if (use == state%factored) return
+        ! a matrix of the status the factor holds is never factored again (DIS_CHOC only:
+        ! its tangent is a function of the status; the elastic matrix = all closed)
+        if (state%by_status .and. factor_holds(state, status_of(state, use))) then
+            state%factored = use
+            if (use == MATRIX_ELASTIC .and. state%elastic_kind == PIVOT_UNKNOWN) &
+                state%elastic_kind = state%fac_kind
+            return
+        end if
         state%factored = MATRIX_NONE
         if (use == MATRIX_TANGENT .and. prediction) then
-            call assemble_and_factor(s, map, state%u_start, .false., state%matrix, &
-                state%solver, diag, st, state%linear, state%history, state%held, log)
+            call factor_status(s, map, state, state%u_start, status_of(state, use), .false., &
+                diag, st, log)
         else
-            call assemble_and_factor(s, map, state%u, use == MATRIX_ELASTIC, state%matrix, &
-                state%solver, diag, st, state%linear, state%history, state%held, log)
+            call factor_status(s, map, state, state%u, status_of(state, use), &
+                use == MATRIX_ELASTIC, diag, st, log)
         end if
         if (st%ok() .and. use == MATRIX_ELASTIC) state%elastic_kind = diag%kind
         if (st%failed()) return
@@ -672,6 +1258,57 @@ contains
         state%refactored = .true.
         state%factorizations = state%factorizations + 1
     end subroutine factor_and_diagnose
+
+    !> Assembles the matrix of contact status `closed` in place and factors it
+    !> (factor_and_classify); the factor's status, class, digits and usability are
+    !> recorded. The tangent is assembled at u_asm (springs at their status there, which is
+    !> state%closed) and, with DIS_CHOC springs only, the springs whose status in `closed`
+    !> differs get their closed matrix added or removed, so a kept tangent of an earlier
+    !> status is rebuilt as it was.
+    !>  u_asm   : in, the displacements to assemble at (state%u, or state%u_start for a
+    !>            prediction)
+    !>  elastic : in, the elastic matrix (closed must then be all .true.)
+    subroutine factor_status(s, map, state, u_asm, closed, elastic, diag, st, log)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: u_asm(:)
+        logical, intent(in) :: closed(:), elastic
+        type(pivot_diagnosis_t), intent(out) :: diag
+        type(status_t), intent(out) :: st
+        type(analysis_log_t), intent(inout), optional :: log
+        integer(i4), allocatable :: active(:), signs(:)
+        integer(i4) :: k, b, m
+        state%fac_valid = .false.
+        call progress_update(state%solver%progress, 'assembly of the ' // &
+            trim(merge('elastic', 'tangent', elastic)) // ' matrix')
+        call assemble_stiffness(s, map, u_asm, elastic, state%matrix, st, state%linear, &
+            state%history)
+        if (st%failed()) return
+        if (.not. elastic .and. state%by_status) then
+            call status_difference(closed, state%closed, active, signs)
+            do k = 1, size(active)
+                b = active(k)
+                m = state%blocks%sizes(b)
+                call sym_add_element(state%matrix, state%blocks%eqs(1:m, b), &
+                    real(signs(k), dp) * state%blocks%k(1:m, 1:m, b), st)
+                if (st%failed()) return
+            end do
+        end if
+        call factor_and_classify(s, map, state%matrix, state%solver, diag, st, state%held, &
+            log)
+        if (st%failed()) return
+        state%fac_valid = .true.
+        state%fac_closed = closed
+        state%fac_kind = diag%kind
+        state%fac_usable = diag%kind /= PIVOT_FREE .and. size(state%held%equations) == 0
+        state%fac_digits = diag%digits
+        state%fac_digits_low = diag%digits
+        if (.not. diag%digits_known) state%fac_digits = max(diag%digits, &
+            real(diag%nprec, dp))
+        state%solves_since_factor = 0.0_dp
+        state%last_updated_solves = 0
+    end subroutine factor_status
 
     !> The .mess lines on the numbering: LDLT's renumbering figures (the skyline stores that
     !> envelope), or the method's own ordering.
@@ -715,8 +1352,11 @@ contains
         text = 'SOLVEUR: METHODE ' // trim(solver%options%method) // ', RENUM ' // &
             trim(solver%options%renum) // ', NPREC ' // to_text(options%nprec)
         if (check_disabled(options)) text = text // ' (singularity check off)'
-        call log_add(log, text // ', factor ' // real_short(real(solver%memory_estimate(), &
-            dp) / 1.0e6_dp) // ' MB estimated')
+        text = text // ', factor ' // real_short(real(solver%memory_estimate(), dp) / &
+            1.0e6_dp) // ' MB'
+        if (solver%factor_flops > 0.0_dp) text = text // ', ' // &
+            real_short(solver%factor_flops) // ' flop'
+        call log_add(log, text // ' estimated')
     end subroutine open_solver
 
     !> Solves one correction with the factor (solve_held). With the singularity check off
@@ -898,13 +1538,27 @@ contains
         type(contact_history_t), intent(in), optional :: history
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
-        type(factor_report_t) :: report
-        real(dp) :: largest
-        real(dp), allocatable :: pivots(:)
         call progress_update(solver%progress, 'assembly of the ' // &
             trim(merge('elastic', 'tangent', elastic)) // ' matrix')
         call assemble_stiffness(s, map, u, elastic, matrix, st, cache, history)
         if (st%failed()) return
+        call factor_and_classify(s, map, matrix, solver, diag, st, held, log)
+    end subroutine assemble_and_factor
+
+    !> Factors the assembled matrix without stopping and classifies its pivots
+    !> (classify_pivots); held and log as assemble_and_factor.
+    subroutine factor_and_classify(s, map, matrix, solver, diag, st, held, log)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(sym_matrix_t), intent(in) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
+        type(pivot_diagnosis_t), intent(out) :: diag
+        type(status_t), intent(out) :: st
+        type(held_t), intent(inout), optional :: held
+        type(analysis_log_t), intent(inout), optional :: log
+        type(factor_report_t) :: report
+        real(dp) :: largest
+        real(dp), allocatable :: pivots(:)
         largest = 0.0_dp
         if (matrix%n > 0) largest = maxval(abs(sym_diagonal(matrix)))
         call progress_update(solver%progress, 'factorization (' // &
@@ -920,6 +1574,7 @@ contains
         end if
         call classify_pivots(report, pivots, largest, solver%options, diag)
         diag%digits = max(report%max_digits_lost, 0.0_dp)
+        diag%digits_known = report%pivots_known
         diag%digits_at = ''
         if (report%max_digits_equation > 0) diag%digits_at = describe_equation(s%dofs, &
             s%mesh, map%free_to_eq(report%max_digits_equation))
@@ -928,7 +1583,7 @@ contains
         if (diag%kind /= PIVOT_REGULAR) diag%where = describe_equation(s%dofs, s%mesh, &
             map%free_to_eq(diag%n_flagged)) // diag%where
         diag%n_flagged = report%n_flagged
-    end subroutine assemble_and_factor
+    end subroutine factor_and_classify
 
     !> One .mess line per factorization: method, ordering, factor size, memory and time.
     function factorization_line(report) result(text)
@@ -1041,11 +1696,10 @@ contains
             .not. all_open .and. .not. stays_free) then
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
-            call assemble_and_factor(s, map, state%u, .false., state%matrix, state%solver, &
-                diag, st, state%linear, state%history, state%held)
             state%factored = MATRIX_NONE
-            if (st%ok()) state%factored = MATRIX_TANGENT
+            call factor_status(s, map, state, state%u, state%closed, .false., diag, st)
             if (st%failed()) return
+            state%factored = MATRIX_TANGENT
             ! free as the elastic matrix is: the structure's own motion, not the springs'
             stays_free = diag%kind == PIVOT_FREE .and. state%elastic_kind /= PIVOT_FREE
         end if
@@ -1059,9 +1713,8 @@ contains
         else
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
             if (diag%kind == PIVOT_REGULAR) then
-                call assemble_and_factor(s, map, state%u, .false., state%matrix, &
-                    state%solver, diag, st, state%linear, state%history, state%held)
                 state%factored = MATRIX_NONE
+                call factor_status(s, map, state, state%u, state%closed, .false., diag, st)
                 if (st%ok()) state%factored = MATRIX_TANGENT
             end if
             if (st%failed()) return
@@ -1226,16 +1879,18 @@ contains
     end function seconds_text
 
     !> One row of the Newton table.
-    function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, refactored, n_closed, &
+    function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, mode, n_closed, &
                            changed, seconds) result(line)
-        integer(i4), intent(in) :: iter, use, n_closed, changed
+        integer(i4), intent(in) :: iter, use, mode, n_closed, changed
         real(dp), intent(in) :: resi_rela, resi_maxi, seconds
-        logical, intent(in) :: zero_load, refactored
+        logical, intent(in) :: zero_load
         character(len=100) :: line
         character(len=22) :: matrix
         character(len=14) :: rela
+        character(len=9), parameter :: modes(0:2) = [character(len=9) :: ' reused', &
+            ' factored', ' updated']
         matrix = merge('ELASTIQUE', 'TANGENTE ', use == MATRIX_ELASTIC)
-        matrix = trim(matrix) // merge(' factored', ' reused  ', refactored)
+        matrix = trim(matrix) // modes(mode)
         write (rela, '(es14.6)') resi_rela
         if (zero_load) rela = '     undefined'
         write (line, '(i5, 2x, a14, 2x, es14.6, 2x, a22, i6, i8, f9.3)') iter, rela, &

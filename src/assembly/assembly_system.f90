@@ -18,15 +18,18 @@ module assembly_system
         ORIENT_ANGL_NAUT
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
-        plate_local_stiffness, plate_forces_from_local, rotate_to_global
+        rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
+        expand_plate_blocks
     use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
-    use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2
+    use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_line_seg2, &
+        choc_line_t
     use element_dis_contact, only: dis_contact_seg2, dis_contact_start
     use sparse_matrix, only: sym_matrix_t, sym_pattern_from_elements, sym_zero, &
         sym_add_element, envelope_of_elements
     use renumbering, only: renumber_graph, graph_from_elements
+    use huge_pages, only: advise_huge_pages
     implicit none
     private
 
@@ -68,10 +71,11 @@ module assembly_system
     !> What the incremental forces K_lin du need of each linear cell (plate, plane solid),
     !> built once per analysis by the first internal_forces_incremental call that passes
     !> it: the element equations, node coordinates and the element matrix (plates: local
-    !> frame and local matrix, plane QUAD4: the 8x8 matrix). An iteration then costs one
-    !> small matrix-vector product per cell instead of a rebuilt element stiffness
-    !> (doc/performance.md, "SSNL130 decks"); the forces are bit for bit the same.
-    !> Memory: 24 x 24 reals (4.6 kB) per DKQ cell.
+    !> frame and local matrix by blocks (membrane, bending, drilling: plate_local_blocks),
+    !> plane QUAD4: the 8x8 matrix). An iteration then costs one small matrix-vector
+    !> product per cell instead of a rebuilt element stiffness (doc/performance.md,
+    !> "SSNL130 decks"); the forces are bit for bit the same. Memory: 212 reals (1.7 kB)
+    !> per DKQ cell.
     type, public :: linear_cache_t
         logical :: ready = .false.
         integer(i4), allocatable :: slot(:)         !< (size(map%cells)) cached index, 0 = none
@@ -95,7 +99,8 @@ module assembly_system
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
-        contact_history_start, contact_history_update, spring_response
+        contact_history_start, contact_history_update, spring_response, spring_matrices, &
+        spring_lines, linear_product
 
 contains
 
@@ -218,10 +223,17 @@ contains
         call element_free_equations(s, map, ptr, eqs_all)
         call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_before, &
             map%bandwidth_before)
-        call number_free(s, imposed, new_to_old, map)
-        call element_free_equations(s, map, ptr, eqs_all)
-        call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_after, &
-            map%bandwidth_after)
+        if (renum == 'SANS') then
+            ! the mesh order itself (and the order of the back-ends that order themselves):
+            ! the numbering above is the final one
+            map%profile_after = map%profile_before
+            map%bandwidth_after = map%bandwidth_before
+        else
+            call number_free(s, imposed, new_to_old, map)
+            call element_free_equations(s, map, ptr, eqs_all)
+            call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_after, &
+                map%bandwidth_after)
+        end if
         ! Cuthill-McKee from a corner of a structured plate grows diagonal fronts: on the
         ! SSNL130 plates and square plates its profile is 5-25 % larger than the mesh's own
         ! row-by-row order. The skyline cost follows the profile, so RCMK never makes it
@@ -866,6 +878,136 @@ contains
         end do
     end subroutine internal_forces_incremental
 
+    !> The closed (bilateral) matrix of every DIS_CHOC spring on its free equations, in
+    !> map%springs order: the terms by which the tangents of two contact statuses differ
+    !> (a closed spring's matrix does not depend on u).
+    !>  sizes : out, (n_springs) equations of each spring's element (<= MAX_SPRING_DOFS)
+    !>  eqs   : out, (MAX_SPRING_DOFS, n_springs) their free numbers, 0 = imposed
+    !>  k     : out, (MAX_SPRING_DOFS, MAX_SPRING_DOFS, n_springs) the element matrices
+    !>  st    : out, element failures, naming the cell
+    subroutine spring_matrices(s, map, sizes, eqs, k, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(out) :: sizes(:), eqs(:, :)
+        real(dp), intent(out) :: k(:, :, :)
+        type(status_t), intent(out) :: st
+        integer(i4) :: i, c, n, all_eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
+        logical :: closed
+        eqs = 0
+        k = 0.0_dp
+        do i = 1, size(map%springs)
+            c = map%springs(i)
+            call element_equations(s, c, all_eqs, n)
+            if (n > size(eqs, 1)) then
+                call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': ' // &
+                    to_text(n) // ' equations, more than a spring''s ' // to_text(size(eqs, 1)))
+                return
+            end if
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, spread(0.0_dp, 1, n), n, .true., .true., ke, fe, &
+                closed, fn, st)
+            if (st%failed()) return
+            sizes(i) = n
+            eqs(1:n, i) = free_of(map, all_eqs(1:n))
+            k(1:n, 1:n, i) = ke
+        end do
+    end subroutine spring_matrices
+
+    !> The energy of every DIS_CHOC spring along u + alpha du (choc_line_t), in
+    !> map%springs order: what a line search on the contact energy needs.
+    !>  u, du : in, (n_equations) displacements and direction (imposed equations of du: 0)
+    !>  scale : in, > 0, the length unit of the lines (dis_choc_line_seg2)
+    !>  lines : out, (n_springs)
+    !>  st    : out, element failures, naming the cell
+    subroutine spring_lines(s, map, u, du, scale, lines, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), du(:), scale
+        type(choc_line_t), intent(out) :: lines(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: i, c, n, m, eqs(MAX_ELEMENT_DOFS), p0
+        real(dp) :: ue(MAX_ELEMENT_DOFS), de(MAX_ELEMENT_DOFS), x(3, 4)
+        real(dp) :: k6(6, 6), k4(4, 4), k3(3, 3), k2(2, 2), c3(3, 2), c2(2, 2)
+        do i = 1, size(map%springs)
+            c = map%springs(i)
+            call element_equations(s, c, eqs, n)
+            call gather_into(u, eqs, n, ue)
+            call gather_into(du, eqs, n, de)
+            p0 = s%mesh%cell_ptr(c)
+            x = 0.0_dp
+            x(:, 1:2) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + 1))
+            c3 = x(:, 1:2)
+            c2 = x(1:2, 1:2)
+            if (n == 6) then
+                call discrete_matrix(s, c, x, n, k6, st)
+                k3 = k6(1:3, 1:3)
+            else
+                call discrete_matrix(s, c, x, n, k4, st)
+                k2 = k4(1:2, 1:2)
+            end if
+            if (st%failed()) then
+                call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // st%message)
+                return
+            end if
+            m = material_of_cell(s%materials, c)
+            associate (dc => s%materials%materials(m)%dis_contact)
+                if (n == 6 .and. dc%has_rigi_nor) then
+                    call dis_choc_line_seg2(3_i4, c3, ue(1:6), de(1:6), k3, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), dc%rigi_nor, dc%rigi_tan)
+                else if (n == 6) then
+                    call dis_choc_line_seg2(3_i4, c3, ue(1:6), de(1:6), k3, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), rigi_tan=dc%rigi_tan)
+                else if (dc%has_rigi_nor) then
+                    call dis_choc_line_seg2(2_i4, c2, ue(1:4), de(1:4), k2, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), dc%rigi_nor, dc%rigi_tan)
+                else
+                    call dis_choc_line_seg2(2_i4, c2, ue(1:4), de(1:4), k2, dc%dist_1, &
+                        dc%dist_2, scale, lines(i), rigi_tan=dc%rigi_tan)
+                end if
+            end associate
+        end do
+    end subroutine spring_lines
+
+    !> The product of the stiffness of every cell but the DIS_CHOC springs with du,
+    !> computed element by element as the incremental forces are (plates and plane solids
+    !> from the cache with each cell's rigid motion removed first, linear springs from
+    !> their matrices): its round-off scales with each element's deformation, not with
+    !> |K| |du| as an assembled product's does, which on a plate ~1e12 times stiffer than
+    !> its springs would swamp the residuals the Newton iteration converges to.
+    !>  cache : inout, the linear cells' matrices (built on the first call if needed)
+    !>  du    : in, (n_equations); f : out, (n_equations)
+    !>  st    : out, element failures, naming the cell
+    subroutine linear_product(s, map, cache, du, f, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        real(dp), intent(in) :: du(:)
+        real(dp), intent(out) :: f(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, n, j, eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: ue(MAX_ELEMENT_DOFS), fn
+        logical :: closed
+        if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
+        if (st%failed()) return
+        f = 0.0_dp
+        call add_cached_linear_forces(cache, du, f)
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            if (cache%slot(k) > 0 .or. s%choc(c)) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call gather_into(du, eqs, n, ue)
+            call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, closed, fn, st)
+            if (st%failed()) return
+            do j = 1, n
+                if (eqs(j) > 0) f(eqs(j)) = f(eqs(j)) + fe(j)
+            end do
+        end do
+    end subroutine linear_product
+
     !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
     !>  st : out, element failures (material, geometry), naming the cell
     subroutine build_linear_cache(s, map, cache, st)
@@ -895,9 +1037,14 @@ contains
             nn = s%mesh%cell_ptr(c + 1) - p0
             cache%nn(i) = nn
             cache%x(:, 1:nn, i) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
-            cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
+            if (cache%plate(i)) then
+                cache%k_ptr(i + 1) = cache%k_ptr(i) + plate_block_size(nn)
+            else
+                cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
+            end if
         end do
         allocate (cache%k(cache%k_ptr(nc + 1) - 1), cache%slot(size(map%cells)))
+        call advise_huge_pages(cache%k)
         cache%slot = 0
         i = 0
         do k = 1, size(map%cells)
@@ -934,7 +1081,7 @@ contains
                 call plate_local_frame(cache%x(:, 1:nn, i), nn, cache%rot(:, :, i), &
                     cache%xy(:, 1:nn, i), st)
                 if (st%failed()) return
-                call plate_local_stiffness(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
+                call plate_local_blocks(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
                     s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             else
                 x2 = cache%x(1:2, 1:4, i)    ! contiguous copy: no array temporary
@@ -964,7 +1111,7 @@ contains
             end do
             if (cache%plate(i)) then
                 call remove_plate_rigid_motion(cache%x(:, 1:nn, i), nn, ue(1:n), ud(1:n))
-                call plate_forces_from_local(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
+                call plate_forces_from_blocks(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
                     cache%k(p:q), ud(1:n), fe(1:n))
             else
                 x2 = cache%x(1:2, 1:4, i)
@@ -982,10 +1129,15 @@ contains
         integer(i4), intent(in) :: i
         real(dp), intent(out) :: ke(:, :)
         integer(i8) :: p, q
+        real(dp) :: k24(24, 24), k18(18, 18)     ! contiguous: no array temporaries
         p = cache%k_ptr(i)
         q = cache%k_ptr(i + 1) - 1
-        if (cache%plate(i)) then
-            call rotate_to_global(cache%rot(:, :, i), 2 * cache%nn(i), cache%k(p:q), ke)
+        if (cache%plate(i) .and. cache%nn(i) == 4) then
+            call expand_plate_blocks(4_i4, cache%k(p:q), k24)
+            call rotate_to_global(cache%rot(:, :, i), 8_i4, k24, ke)
+        else if (cache%plate(i)) then
+            call expand_plate_blocks(3_i4, cache%k(p:q), k18)
+            call rotate_to_global(cache%rot(:, :, i), 6_i4, k18, ke)
         else
             ke = reshape(cache%k(p:q), [8, 8])
         end if

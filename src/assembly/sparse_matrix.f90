@@ -16,6 +16,7 @@ module sparse_matrix
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_INTERNAL
     use strings, only: to_text
+    use huge_pages, only: advise_huge_pages
     implicit none
     private
 
@@ -111,8 +112,11 @@ contains
                     a%row_index(a%col_ptr(j):a%col_ptr(j + 1) - 1) = rows(1:m)
                 end if
             end do
-            if (p == 1) allocate (a%row_index(a%col_ptr(n + 1) - 1), &
-                a%values(a%col_ptr(n + 1) - 1))
+            if (p == 1) then
+                allocate (a%row_index(a%col_ptr(n + 1) - 1), a%values(a%col_ptr(n + 1) - 1))
+                call advise_huge_pages(a%row_index)
+                call advise_huge_pages(a%values)
+            end if
         end do
         a%values = 0.0_dp
     contains

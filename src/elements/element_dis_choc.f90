@@ -29,7 +29,21 @@ module element_dis_choc
     private
 
     public :: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_poi1, dis_choc_2d_poi1, &
-        dis_choc_seg2_gap
+        dis_choc_line_seg2, dis_choc_seg2_gap
+
+    !> The spring's energy along a straight path u + alpha du (a line search):
+    !>   E(alpha) = 0 when open, gap(alpha) = gap + alpha slope > 0, else
+    !>   E(alpha) = kn/2 gap(alpha)^2 + t0 + alpha t1 + alpha^2 t2 / 2,
+    !> the potential of the closed branch (normal force FN = kn gap, tangential K_t r):
+    !> t0 = r^T K_t r / 2, t1 = r^T K_t dr, t2 = dr^T K_t dr for the relative displacement
+    !> r (at u) and its change dr (along du); force = |kn gap e + K_t r|, the force the
+    !> spring carries at u when closed. Lengths are divided by a scale s (gap, slope, r, dr),
+    !> so energies come divided by s^2 and the force by s: free of overflow at any scale.
+    type, public :: choc_line_t
+        real(dp) :: kn = 0.0_dp, gap = 0.0_dp, slope = 0.0_dp
+        real(dp) :: t0 = 0.0_dp, t1 = 0.0_dp, t2 = 0.0_dp
+        real(dp) :: force = 0.0_dp
+    end type choc_line_t
 
     !> Largest space dimension (size of the work arrays of the law).
     integer(i4), parameter :: MAX_DIM = 3
@@ -184,31 +198,10 @@ contains
         logical, intent(out) :: closed
         real(dp), intent(out) :: gap, fn, f2(n), kc(n, n)
         real(dp), intent(in), optional :: rigi_nor, rigi_tan
-        real(dp) :: p(MAX_DIM, MAX_DIM), kt(MAX_DIM, MAX_DIM), w(MAX_DIM, MAX_DIM), kn, t
+        real(dp) :: kt(MAX_DIM, MAX_DIM), kn, t
         integer(i4) :: i, j, k
-        do j = 1, n
-            do i = 1, n
-                p(i, j) = -e(i) * e(j)
-            end do
-            p(j, j) = p(j, j) + 1.0_dp
-        end do
-        kn = 0.0_dp
-        do i = 1, n
-            t = 0.0_dp
-            do k = 1, n
-                t = t + kdisc(i, k) * e(k)
-            end do
-            kn = kn + e(i) * t
-        end do
-        if (present(rigi_nor)) kn = rigi_nor
-        call small_matmul(n, kdisc, p, w)
-        call small_matmul(n, p, w, kt)
-        if (present(rigi_tan)) kt(1:n, 1:n) = kt(1:n, 1:n) + rigi_tan * p(1:n, 1:n)
-        t = 0.0_dp
-        do i = 1, n
-            t = t + r(i) * e(i)
-        end do
-        gap = contact_gap(d0, scale, t)
+        call choc_stiffness(n, e, kdisc, kn, kt, rigi_nor, rigi_tan)
+        gap = choc_gap(n, e, r, d0, scale)
         closed = gap <= 0.0_dp
         fn = 0.0_dp
         f2 = 0.0_dp
@@ -230,6 +223,92 @@ contains
             f2(i) = fn * e(i) + t
         end do
     end subroutine choc_law
+
+    !> Normal stiffness kn (RIGI_NOR, else e^T K e) and tangential K_t = P K P + RIGI_TAN P,
+    !> P = I - e e^T, of a closed spring (module header).
+    pure subroutine choc_stiffness(n, e, kdisc, kn, kt, rigi_nor, rigi_tan)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: e(n), kdisc(n, n)
+        real(dp), intent(out) :: kn, kt(MAX_DIM, MAX_DIM)
+        real(dp), intent(in), optional :: rigi_nor, rigi_tan
+        real(dp) :: p(MAX_DIM, MAX_DIM), w(MAX_DIM, MAX_DIM), t
+        integer(i4) :: i, j, k
+        do j = 1, n
+            do i = 1, n
+                p(i, j) = -e(i) * e(j)
+            end do
+            p(j, j) = p(j, j) + 1.0_dp
+        end do
+        kn = 0.0_dp
+        do i = 1, n
+            t = 0.0_dp
+            do k = 1, n
+                t = t + kdisc(i, k) * e(k)
+            end do
+            kn = kn + e(i) * t
+        end do
+        if (present(rigi_nor)) kn = rigi_nor
+        call small_matmul(n, kdisc, p, w)
+        call small_matmul(n, p, w, kt)
+        if (present(rigi_tan)) kt(1:n, 1:n) = kt(1:n, 1:n) + rigi_tan * p(1:n, 1:n)
+    end subroutine choc_stiffness
+
+    !> Gap d = d0 + r . e, with |d0| <= eps * scale taken as 0 (module header).
+    pure real(dp) function choc_gap(n, e, r, d0, scale) result(gap)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: e(n), r(n), d0, scale
+        real(dp) :: t
+        integer(i4) :: i
+        t = 0.0_dp
+        do i = 1, n
+            t = t + r(i) * e(i)
+        end do
+        gap = contact_gap(d0, scale, t)
+    end function choc_gap
+
+    !> The energy of a DIS_CHOC SEG2 (2D or 3D) along u + alpha du (choc_line_t): the gap
+    !> and the closed-branch coefficients, with the law's own gap, kn and K_t.
+    !>  n      : in, 2 or 3 (space dimension)
+    !>  coords : in, coords(1:n, 2) initial node coordinates
+    !>  ue, de : in, (2n) element displacements at u and along du
+    !>  kdisc, dist1, dist2, rigi_nor, rigi_tan : as dis_choc_seg2
+    !>  scale  : in, > 0, the length scale s of the results (choc_line_t)
+    !>  line   : out, zero (an inert spring) for a zero-length segment, which
+    !>           dis_choc_seg2 refuses; the gap's sign is the law's (the gap is computed
+    !>           as dis_choc_seg2 does, then divided by s)
+    pure subroutine dis_choc_line_seg2(n, coords, ue, de, kdisc, dist1, dist2, scale, line, &
+                                       rigi_nor, rigi_tan)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: coords(n, 2), ue(2 * n), de(2 * n), kdisc(n, n), dist1, dist2
+        real(dp), intent(in) :: scale
+        type(choc_line_t), intent(out) :: line
+        real(dp), intent(in), optional :: rigi_nor, rigi_tan
+        real(dp) :: e(MAX_DIM), r(MAX_DIM), dr(MAX_DIM), kt(MAX_DIM, MAX_DIM), length
+        real(dp) :: ktr(MAX_DIM), ktdr(MAX_DIM)
+        integer(i4) :: i, k
+        e(1:n) = coords(:, 2) - coords(:, 1)
+        length = norm2(e(1:n))
+        if (.not. length > 0.0_dp) return
+        e(1:n) = e(1:n) / length
+        r(1:n) = ue(n + 1:2 * n) - ue(1:n)
+        dr(1:n) = (de(n + 1:2 * n) - de(1:n)) / scale
+        call choc_stiffness(n, e(1:n), kdisc, line%kn, kt, rigi_nor, rigi_tan)
+        line%gap = choc_gap(n, e(1:n), r(1:n), length - (dist1 + dist2), length) / scale
+        r(1:n) = r(1:n) / scale
+        line%slope = dot_product(dr(1:n), e(1:n))
+        do i = 1, n
+            ktr(i) = 0.0_dp
+            ktdr(i) = 0.0_dp
+            do k = 1, n
+                ktr(i) = ktr(i) + kt(i, k) * r(k)
+                ktdr(i) = ktdr(i) + kt(i, k) * dr(k)
+            end do
+        end do
+        line%t0 = 0.5_dp * dot_product(r(1:n), ktr(1:n))
+        line%t1 = dot_product(r(1:n), ktdr(1:n))
+        line%t2 = dot_product(dr(1:n), ktdr(1:n))
+        line%force = norm2(line%kn * line%gap * e(1:n) + ktr(1:n))
+    end subroutine dis_choc_line_seg2
 
     !> The gap d = d0 + t of the law (module header): an initial gap |d0| <= eps * scale is
     !> taken as 0; the normal motion t is exact relative to itself.

@@ -27,6 +27,8 @@ module element_plate
 
     public :: plate_local_frame, plate_local_stiffness, plate_stiffness
     public :: plate_internal_forces, plate_forces_from_local, rotate_to_global
+    public :: plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
+        expand_plate_blocks
     public :: dkq_stiffness, dkt_stiffness
 
 contains
@@ -224,6 +226,131 @@ contains
             end do
         end do
     end subroutine plate_forces_from_local
+
+    !> Terms of the local stiffness stored by blocks (plate_local_blocks): the membrane
+    !> block (u, v of every node, (2nn)^2), the bending block (w, thx, thy, (3nn)^2) and the
+    !> nn drilling terms: 212 for a DKQ instead of 24^2 = 576 (the other terms are zero).
+    pure integer(i4) function plate_block_size(nn)
+        integer(i4), intent(in) :: nn
+        plate_block_size = 13 * nn * nn + nn
+    end function plate_block_size
+
+    !> The local stiffness of plate_local_stiffness, by blocks (plate_block_size): the
+    !> same values, a third of the memory.
+    !>  kblk : out, (plate_block_size(nn)): membrane block, bending block (column-major),
+    !>         drilling terms
+    subroutine plate_local_blocks(xy, nn, young, nu, thickness, coef_drz, kblk, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn), young, nu, thickness, coef_drz
+        real(dp), intent(out) :: kblk(:)
+        type(status_t), intent(out) :: st
+        real(dp) :: kl(6 * nn, 6 * nn)
+        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, k
+        kblk = 0.0_dp
+        call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
+        if (st%failed()) return
+        call block_indices(nn, im, ib)
+        k = 0
+        do j = 1, 2 * nn
+            do i = 1, 2 * nn
+                k = k + 1
+                kblk(k) = kl(im(i), im(j))
+            end do
+        end do
+        do j = 1, 3 * nn
+            do i = 1, 3 * nn
+                k = k + 1
+                kblk(k) = kl(ib(i), ib(j))
+            end do
+        end do
+        do i = 1, nn
+            kblk(k + i) = kl(6 * i, 6 * i)
+        end do
+    end subroutine plate_local_blocks
+
+    !> The full local stiffness (6nn x 6nn) of its blocks (plate_local_blocks).
+    pure subroutine expand_plate_blocks(nn, kblk, kl)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: kblk(:)
+        real(dp), intent(out) :: kl(6 * nn, 6 * nn)
+        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, k
+        kl = 0.0_dp
+        call block_indices(nn, im, ib)
+        k = 0
+        do j = 1, 2 * nn
+            do i = 1, 2 * nn
+                k = k + 1
+                kl(im(i), im(j)) = kblk(k)
+            end do
+        end do
+        do j = 1, 3 * nn
+            do i = 1, 3 * nn
+                k = k + 1
+                kl(ib(i), ib(j)) = kblk(k)
+            end do
+        end do
+        do i = 1, nn
+            kl(6 * i, 6 * i) = kblk(k + i)
+        end do
+    end subroutine expand_plate_blocks
+
+    !> plate_forces_from_local with the local stiffness by blocks: the products skip only
+    !> the zero terms and keep the order of the others (ascending column), so the forces
+    !> are bit for bit those of the full matrix.
+    pure subroutine plate_forces_from_blocks(rot, xy, nn, kblk, ue, fe)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: rot(3, 3), xy(2, nn), kblk(:), ue(6 * nn)
+        real(dp), intent(out) :: fe(6 * nn)
+        real(dp) :: ul(24), fl(24)
+        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, r, c, k, m
+        do i = 1, 2 * nn
+            do r = 1, 3
+                ul(3 * i - 3 + r) = 0.0_dp
+                do c = 1, 3
+                    ul(3 * i - 3 + r) = ul(3 * i - 3 + r) + rot(r, c) * ue(3 * i - 3 + c)
+                end do
+            end do
+        end do
+        call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
+        call block_indices(nn, im, ib)
+        fl(1:6 * nn) = 0.0_dp
+        m = 2 * nn
+        do j = 1, m
+            do i = 1, m
+                fl(im(i)) = fl(im(i)) + kblk(i + (j - 1) * m) * ul(im(j))
+            end do
+        end do
+        k = m * m
+        m = 3 * nn
+        do j = 1, m
+            do i = 1, m
+                fl(ib(i)) = fl(ib(i)) + kblk(k + i + (j - 1) * m) * ul(ib(j))
+            end do
+        end do
+        k = k + m * m
+        do i = 1, nn
+            fl(6 * i) = fl(6 * i) + kblk(k + i) * ul(6 * i)
+        end do
+        do i = 1, 2 * nn
+            do r = 1, 3
+                fe(3 * i - 3 + r) = 0.0_dp
+                do c = 1, 3
+                    fe(3 * i - 3 + r) = fe(3 * i - 3 + r) + rot(c, r) * fl(3 * i - 3 + c)
+                end do
+            end do
+        end do
+    end subroutine plate_forces_from_blocks
+
+    !> Local DOF of the membrane (u, v) and bending (w, thx, thy) blocks, node by node.
+    pure subroutine block_indices(nn, im, ib)
+        integer(i4), intent(in) :: nn
+        integer(i4), intent(out) :: im(2 * nn), ib(3 * nn)
+        integer(i4) :: i
+        do i = 1, nn
+            im(2 * i - 1:2 * i) = [6 * i - 5, 6 * i - 4]
+            ib(3 * i - 2:3 * i) = [6 * i - 3, 6 * i - 2, 6 * i - 1]
+        end do
+    end subroutine block_indices
 
     !> fl(1:m) = kl ul(1:m), column by column (the sum over columns in ascending order, as
     !> the library matmul does it), inlined: this is the inner kernel of every iteration.

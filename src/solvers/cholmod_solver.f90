@@ -176,6 +176,8 @@ contains
         end if
         self%n = a%n
         self%factor_entries = lnz
+        self%factor_terms = lnz
+        self%factor_flops = flops
         self%analysed = .true.
         self%factored = .false.
     end subroutine cholmod_analyse

@@ -82,6 +82,11 @@ module direct_solver
         type(solver_options_t) :: options
         logical :: analysed = .false.
         logical :: factored = .false.
+        !> From analyse, for callers weighing a new factorization against solves with the
+        !> current factor (low_rank_update): stored terms of the factor and the flops of a
+        !> factorization (0 when the back-end does not say).
+        integer(i8) :: factor_terms = 0_i8
+        real(dp) :: factor_flops = 0.0_dp
         !> Where a back-end that can tell how far its factorization is reports it (the
         !> run's reporter, set by the analysis; null: nobody listens)
         class(progress_t), pointer :: progress => null()

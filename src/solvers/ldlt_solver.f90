@@ -8,6 +8,7 @@ module ldlt_solver
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_INTERNAL
     use sparse_matrix, only: sym_matrix_t
+    use huge_pages, only: advise_huge_pages
     use direct_solver, only: direct_solver_t, factor_report_t, effective_nprec
     use skyline_matrix, only: skyline_t, skyline_profile_size
     use skyline_solver, only: skyline_factor, skyline_solve, factor_options_t
@@ -43,6 +44,7 @@ contains
         if (allocated(self%sky%values)) deallocate (self%sky%values)
         allocate (self%sky%diag(0:a%n))
         self%sky%diag(0) = 0
+        self%factor_flops = 0.0_dp
         do j = 1, a%n
             if (a%col_ptr(j + 1) <= a%col_ptr(j) .or. &
                 a%row_index(max(a%col_ptr(j + 1) - 1, 1_i8)) /= j) then
@@ -50,8 +52,13 @@ contains
                 return
             end if
             self%sky%diag(j) = self%sky%diag(j - 1) + (j - a%row_index(a%col_ptr(j))) + 1
+            ! column j of height h: h dot products of length <= h (a multiply and an add)
+            self%factor_flops = self%factor_flops + &
+                real(j - a%row_index(a%col_ptr(j)), dp)**2
         end do
+        self%factor_terms = self%sky%diag(a%n)
         allocate (self%sky%values(self%sky%diag(a%n)))
+        call advise_huge_pages(self%sky%values)
         self%sky%profile_ready = .true.
         self%sky%factored = .false.
         self%analysed = .true.

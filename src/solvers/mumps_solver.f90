@@ -56,13 +56,15 @@ module mumps_solver
             import :: c_ptr
             type(c_ptr), value :: h
         end subroutine destroy_fn
-        function analyse_fn(h, n, col_ptr, row_index, entries, info) result(rc) bind(c)
-            import :: c_ptr, c_int64_t, c_int32_t
+        function analyse_fn(h, n, col_ptr, row_index, entries, flops, info) result(rc) &
+            bind(c)
+            import :: c_ptr, c_int64_t, c_int32_t, c_double
             type(c_ptr), value :: h
             integer(c_int64_t), value :: n
             integer(c_int64_t), intent(in) :: col_ptr(*)
             integer(c_int32_t), intent(in) :: row_index(*)
             integer(c_int64_t), intent(out) :: entries
+            real(c_double), intent(out) :: flops
             integer(c_int32_t), intent(out) :: info(2)
             integer(c_int32_t) :: rc
         end function analyse_fn
@@ -242,6 +244,7 @@ contains
         type(status_t), intent(out) :: st
         integer(c_int32_t) :: info(2), rc
         integer(c_int64_t) :: entries
+        real(c_double) :: flops
         call load_plugin(self, st)
         if (st%failed()) return
         if (c_associated(self%handle)) call self%c_destroy(self%handle)
@@ -251,7 +254,7 @@ contains
             return
         end if
         rc = self%c_analyse(self%handle, int(a%n, c_int64_t), a%col_ptr, a%row_index, &
-            entries, info)
+            entries, flops, info)
         if (rc /= 0) then
             call set_error(st, STATUS_INTERNAL, 'MUMPS analysis failed (INFOG(1) = ' // &
                 to_text(int(info(1), i4)) // ', INFOG(2) = ' // to_text(int(info(2), i4)) &
@@ -260,6 +263,8 @@ contains
         end if
         self%n = a%n
         self%factor_entries = entries
+        self%factor_terms = entries
+        self%factor_flops = flops
         self%analysed = .true.
         self%factored = .false.
     end subroutine mumps_analyse

@@ -50,10 +50,15 @@ class CaseError(Exception):
 
 
 def case_args(model="a", nx=4, ny=16, newton="tangente", resi=1e-6, renum="RCMK", nprec=11,
-              iter_max=10):
-    """Options of tools/make_ssnl130_case.py for one case (one step to INST 1, no lift)."""
+              iter_max=10, methode="LDLT"):
+    """Options of tools/make_ssnl130_case.py for one case (one step to INST 1, no lift).
+
+    renum None: the method's default ordering (RCMK for LDLT, METIS for MULT_FRONT, AUTO
+    for MUMPS)."""
     args = ["--model", model, "--ny", str(ny), "--newton", newton, "--resi", repr(resi),
-            "--renum", renum, "--nprec", str(nprec), "--iter-max", str(iter_max)]
+            "--methode", methode, "--nprec", str(nprec), "--iter-max", str(iter_max)]
+    if renum is not None:
+        args += ["--renum", renum]
     if model == "a":
         args += ["--nx", str(nx)]
     return args
@@ -88,12 +93,14 @@ def run_measured(cmd, cwd, env, log_path):
 
 
 _RE_EQUATIONS = re.compile(r"-> \S+ \(modele\): \d+ elements, (\d+) equations")
-_RE_FREE = re.compile(r"RENUM (\w+): (\d+) free equations")
+_RE_FREE = re.compile(r"(?:RENUM|METHODE) (\w+): (\d+) free equations")
 _RE_PROFILE = re.compile(r"profile (\d+) -> (\d+) terms, bandwidth (\d+) -> (\d+)")
 _RE_TOTAL = re.compile(r"STAT_NON_LINE: (\d+) iteration\(s\), (\d+) factorization\(s\) "
                        r"in (\d+) step\(s\)")
 _RE_ITER = re.compile(r"^\s+(\d+)\s+([0-9.Ee+-]+)\s+([0-9.Ee+-]+)\s+(ELASTIQUE|TANGENTE)\s+"
-                      r"(factored|reused)\s+(\d+)\s+(\d+)\s+([0-9.]+)\s*$")
+                      r"(factored|reused|updated)\s+(\d+)\s+(\d+)\s+([0-9.]+)\s*$")
+_RE_CONTACT = re.compile(r"contact Newton: (\d+) solve\(s\) with a factor, (\d+) tangent\(s\) "
+                         r"through another status's factor, (\d+) correction\(s\) damped")
 _RE_ERROR = re.compile(r"error: (.*)$")
 
 
@@ -102,19 +109,25 @@ def parse_mess(path):
 
     Keys: equations, free_equations, renum, profile_before, profile_after, band_before,
     band_after, iterations, factorizations, steps, final_resi (RESI_GLOB_RELA of the last
-    iteration line), iteration_lines, solve_s (sum of the TIME column), error (first line
-    with 'error:').
+    iteration line), iteration_lines, solve_s (sum of the TIME column; factored_s of the
+    rows that factored, reused_s of the others), solves, updated, damped (the "contact
+    Newton" line: solves with a factor, tangents through another status's factor, damped
+    corrections), error (first line with 'error:'). free_equations and renum come from the
+    "RENUM R: N free equations" line (LDLT) or "METHODE M: N free equations" (the others).
     """
     out = dict(equations=None, free_equations=None, renum=None, profile_before=None,
                profile_after=None, band_before=None, band_after=None, iterations=None,
                factorizations=None, steps=None, final_resi=None, iteration_lines=0,
-               solve_s=0.0, factored_s=0.0, reused_s=0.0, error=None)
+               solve_s=0.0, factored_s=0.0, reused_s=0.0, solves=None, updated=None,
+               damped=None, error=None)
     with open(path, encoding="utf-8", errors="replace") as f:
         for line in f:
             if (m := _RE_EQUATIONS.search(line)):
                 out["equations"] = int(m.group(1))
             elif (m := _RE_FREE.search(line)):
-                out["renum"], out["free_equations"] = m.group(1), int(m.group(2))
+                out["free_equations"] = int(m.group(2))
+                if line.lstrip().startswith("RENUM"):
+                    out["renum"] = m.group(1)
             elif (m := _RE_PROFILE.search(line)):
                 (out["profile_before"], out["profile_after"], out["band_before"],
                  out["band_after"]) = (int(g) for g in m.groups())
@@ -127,6 +140,8 @@ def parse_mess(path):
                 out["solve_s"] += float(m.group(8))
                 out["factored_s" if m.group(5) == "factored" else "reused_s"] += \
                     float(m.group(8))
+            elif (m := _RE_CONTACT.search(line)):
+                out["solves"], out["updated"], out["damped"] = (int(g) for g in m.groups())
             elif out["error"] is None and (m := _RE_ERROR.search(line)):
                 out["error"] = m.group(1).strip()
     return out
