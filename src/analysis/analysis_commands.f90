@@ -3,7 +3,7 @@
 !> INCREMENT, NEWTON, CONVERGENCE and SOLVEUR, run the core (linear_static,
 !> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
 module analysis_commands
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
     use deck_concept, only: concept_t
@@ -32,6 +32,13 @@ module analysis_commands
 
     public :: run_stat_non_line, run_meca_statique
 
+    !> Most memory an analysis may set aside for what it records: the fields of every
+    !> instant (DEPL, FORC_NODA, REAC_NODA, spring states) and the spring statuses of every
+    !> Newton iteration of a step. Both are allocated before the first step from counts the
+    !> deck gives (instants, ITER_GLOB_MAXI): beyond this they are refused with a message at
+    !> the keyword instead of an allocation failure (issue 13).
+    integer(i8), parameter :: MAX_RECORD_BYTES = 2_i8**30
+
 contains
 
     !> STAT_NON_LINE (see contact_newton for the algorithm and its defaults).
@@ -58,6 +65,8 @@ contains
         if (st%failed()) return
         options%deadline = ctx%deadline            ! polled between Newton iterations
         call structure_check(s, st)
+        if (st%ok()) call check_records(cmd, 'INCREMENT', 'LIST_INST', size(times, kind=i8), &
+            s%dofs%n_equations, count(s%choc), options%iter_glob_maxi, st)
         if (st%failed()) return
         call ctx%write_mess('    ' // to_text(count(s%choc)) // ' DIS_CHOC cell(s), ' // &
             to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
@@ -107,6 +116,8 @@ contains
         end if
         if (st%failed()) return
         call structure_check(s, st)
+        if (st%ok()) call check_records(cmd, '', merge('LIST_INST', 'INST     ', &
+            cmd%has('LIST_INST')), size(times, kind=i8), s%dofs%n_equations, 0_i4, 0_i4, st)
         if (st%failed()) return
         allocate (res)
         call meca_statique(s, excit, times, options%factor, res, log, st)
@@ -116,6 +127,58 @@ contains
         if (st%failed()) return
         call move_alloc(res, result)
     end subroutine run_meca_statique
+
+    !> Refuses, before anything is allocated, an analysis whose records would take more
+    !> than MAX_RECORD_BYTES: n_inst instants of 3 fields of n_eq equations and n_springs
+    !> spring states (a logical and a force each), and n_springs statuses and a residual for
+    !> each of the iter_max + 1 Newton iterations of a step.
+    !>  factor, key : where the instants come from (factor '' = the command level)
+    !>  st : out, located at CONVERGENCE/ITER_GLOB_MAXI or at the instants' keyword
+    subroutine check_records(cmd, factor, key, n_inst, n_eq, n_springs, iter_max, st)
+        type(command_t), intent(in) :: cmd
+        character(len=*), intent(in) :: factor, key
+        integer(i8), intent(in) :: n_inst
+        integer(i4), intent(in) :: n_eq, n_springs, iter_max
+        type(status_t), intent(inout) :: st
+        type(keyword_set_t) :: occ
+        integer(i8) :: per_instant, per_iteration
+        real(dp) :: bytes
+        per_iteration = int(n_springs, i8) * storage_size(.true.) / 8 + &
+            storage_size(1.0_dp) / 8                    ! the statuses, the residual
+        bytes = real(per_iteration, dp) * (real(iter_max, dp) + 1.0_dp)
+        if (bytes > real(MAX_RECORD_BYTES, dp)) then
+            occ = cmd%occurrence('CONVERGENCE', 1)
+            call occ%error_at('ITER_GLOB_MAXI', 'ITER_GLOB_MAXI = ' // to_text(iter_max) // &
+                ': more iterations than can be recorded (the statuses of ' // &
+                to_text(n_springs) // ' springs at each iteration of a step would take ' // &
+                gib_text(bytes) // ', more than ' // gib_text(real(MAX_RECORD_BYTES, dp)) &
+                // ')', st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        per_instant = 3_i8 * n_eq * storage_size(1.0_dp) / 8 + &
+            int(n_springs, i8) * (storage_size(.true.) + storage_size(1.0_dp)) / 8
+        bytes = real(per_instant, dp) * real(n_inst, dp)
+        if (bytes > real(MAX_RECORD_BYTES, dp)) then
+            if (len(factor) > 0) then
+                occ = cmd%occurrence(factor, 1)
+            else
+                occ = cmd%keyword_set_t
+            end if
+            call occ%error_at(key, to_text(n_inst) // ' instants: more than can be ' // &
+                'recorded (the fields of ' // to_text(n_eq) // ' equations at every ' // &
+                'instant would take ' // gib_text(bytes) // ', more than ' // &
+                gib_text(real(MAX_RECORD_BYTES, dp)) // ')', st, code=STATUS_MODEL_ERROR)
+        end if
+    end subroutine check_records
+
+    ! Bytes as GiB with 3 significant digits ("68.0 GiB").
+    function gib_text(bytes) result(text)
+        real(dp), intent(in) :: bytes
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write (buf, '(f16.1)') bytes / 2.0_dp**30
+        text = trim(adjustl(buf)) // ' GiB'
+    end function gib_text
 
     !> MODELE, CHAM_MATER, CARA_ELEM -> the structure (copies).
     subroutine gather_structure(cmd, s, st)

@@ -11,7 +11,9 @@ module assembly_loads
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS
     use model_loads, only: load_set_t, load_item_t, load_value_at, LOAD_DDL_IMPO, &
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
-        LOAD_KIND_NAMES
+        LOAD_KIND_NAMES, load_locate, load_slot_name
+    use number_limits, only: product_fits
+    use strings, only: to_text
     use element_loads, only: plate_load_points, plate_pressure_forces, plate_surface_forces, &
         edge_load_points, edge_line_forces, PLATE_LOAD_MAX_POINTS, EDGE_POINT_COUNT, &
         plate_load_point_count
@@ -70,8 +72,10 @@ contains
                         if (.not. item%values(comp)%given) cycle
                         eq = s%dofs%equation(comp, node)
                         if (eq <= 0) cycle
-                        call load_value_at(item%values(comp), item%kind, t, &
+                        call load_value_at(item%values(comp), item%kind, comp, t, &
                             s%mesh%coords(:, node), v, st)
+                        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                        call load_locate(item, comp, st)
                         if (st%failed()) return
                         u(eq) = factor * v
                     end do
@@ -129,8 +133,10 @@ contains
                         trim(COMPONENT_NAMES(comp)) // ' in the model')
                     return
                 end if
-                call load_value_at(item%values(comp), item%kind, t, &
+                call load_value_at(item%values(comp), item%kind, comp, t, &
                     s%mesh%coords(:, item%nodes(i)), v, st)
+                if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                call load_locate(item, comp, st)
                 if (st%failed()) return
                 fext(eq) = fext(eq) + factor * v
             end do
@@ -166,11 +172,19 @@ contains
             do comp = 1, 3
                 if (pressure .and. comp > 1) exit
                 if (pressure) then
-                    call load_value_at(item%values(SLOT_PRES), item%kind, t, xg(:, g), &
-                        q(1, g), st)
+                    call load_value_at(item%values(SLOT_PRES), item%kind, SLOT_PRES, t, &
+                        xg(:, g), q(1, g), st)
+                    if (st%ok()) call check_factor(wg(g), q(1, g), item%kind, SLOT_PRES, st)
+                    if (st%ok()) call check_factor(factor, q(1, g) * wg(g), item%kind, &
+                                                   SLOT_PRES, st)
+                    call load_locate(item, SLOT_PRES, st)
                 else if (item%values(comp)%given) then
-                    call load_value_at(item%values(comp), item%kind, t, xg(:, g), &
+                    call load_value_at(item%values(comp), item%kind, comp, t, xg(:, g), &
                         q(comp, g), st)
+                    if (st%ok()) call check_factor(wg(g), q(comp, g), item%kind, comp, st)
+                    if (st%ok()) call check_factor(factor, q(comp, g) * wg(g), item%kind, &
+                                                   comp, st)
+                    call load_locate(item, comp, st)
                 end if
                 if (st%failed()) return
             end do
@@ -213,8 +227,12 @@ contains
         do g = 1, EDGE_POINT_COUNT
             do comp = 1, 2
                 if (.not. item%values(comp)%given) cycle
-                call load_value_at(item%values(comp), item%kind, t, &
+                call load_value_at(item%values(comp), item%kind, comp, t, &
                     [xg(1, g), xg(2, g), 0.0_dp], q(comp, g), st)
+                if (st%ok()) call check_factor(wg(g), q(comp, g), item%kind, comp, st)
+                if (st%ok()) call check_factor(factor, q(comp, g) * wg(g), item%kind, comp, &
+                                               st)
+                call load_locate(item, comp, st)
                 if (st%failed()) return
             end do
         end do
@@ -227,5 +245,18 @@ contains
             end do
         end do
     end subroutine edge_cell_forces
+
+    ! A load value times a factor (the FONC_MULT of its EXCIT, an integration weight) must
+    ! stay inside the magnitudes products may be formed from (number_limits): decided
+    ! before multiplying, so the check cannot overflow.
+    subroutine check_factor(factor, value, kind, slot, st)
+        real(dp), intent(in) :: factor, value
+        integer(i4), intent(in) :: kind, slot
+        type(status_t), intent(inout) :: st
+        if (product_fits(factor, value)) return
+        call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(kind)) // ' ' // &
+            load_slot_name(kind, slot) // ' = ' // to_text(value) // ' times ' // &
+            to_text(factor) // ' (FONC_MULT, or the area or length it acts on) overflows')
+    end subroutine check_factor
 
 end module assembly_loads

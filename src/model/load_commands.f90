@@ -16,7 +16,7 @@ module load_commands
     use model_concept, only: model_concept_t
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
         LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
-        LOAD_FORCE_CONTOUR, SLOT_PRES
+        LOAD_FORCE_CONTOUR, SLOT_PRES, load_set_location
     use function_concept, only: function_concept_t
     implicit none
     private
@@ -166,6 +166,7 @@ contains
             end if
         end if
         call load_add_item(loads, kind, nodes, index, label)
+        call locate_item(occ, loads, index)
         do k = 1, size(keys)
             call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
             if (st%failed()) return
@@ -238,6 +239,7 @@ contains
             return
         end if
         call load_add_item(loads, kind, cells, index)
+        call locate_item(occ, loads, index)
         do k = 1, size(keys)
             slot = k
             if (trim(keys(k)) == 'PRES') slot = SLOT_PRES
@@ -273,6 +275,17 @@ contains
                 'FORMULE), got ' // f%type_name(), st)
         end select
     end subroutine set_slot
+
+    ! Records where the occurrence of item `index` is, for errors found when it is applied.
+    subroutine locate_item(occ, loads, index)
+        type(keyword_set_t), intent(in) :: occ
+        type(load_set_t), intent(inout) :: loads
+        integer(i4), intent(in) :: index
+        character(len=:), allocatable :: file
+        integer :: line, col
+        call occ%location('', file, line, col)
+        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
+    end subroutine locate_item
 
     subroutine append(list, more)
         integer(i4), allocatable, intent(inout) :: list(:)
