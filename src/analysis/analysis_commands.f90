@@ -4,7 +4,7 @@
 !> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
 module analysis_commands
     use kinds, only: dp, i4, i8
-    use status, only: status_t, STATUS_MODEL_ERROR
+    use status, only: status_t, clear_status, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
@@ -20,6 +20,9 @@ module analysis_commands
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
     use assembly_system, only: structure_t, structure_check
+    use assembly_loads, only: record_imposed
+    use model_loads, only: load_item_where
+    use function_concept, only: param_binding_t
     use direct_solver, only: solver_options_t
     use solver_factory, only: DEFAULT_METHOD, default_renum, renum_allowed
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
@@ -67,6 +70,7 @@ contains
         call structure_check(s, st)
         if (st%ok()) call check_records(cmd, 'INCREMENT', 'LIST_INST', size(times, kind=i8), &
             s%dofs%n_equations, count(s%choc), options%iter_glob_maxi, st)
+        if (st%ok()) call check_imposed(s, excit, times(2:), st)
         if (st%failed()) return
         call ctx%write_mess('    ' // to_text(count(s%choc)) // ' DIS_CHOC cell(s), ' // &
             to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
@@ -118,6 +122,7 @@ contains
         call structure_check(s, st)
         if (st%ok()) call check_records(cmd, '', merge('LIST_INST', 'INST     ', &
             cmd%has('LIST_INST')), size(times, kind=i8), s%dofs%n_equations, 0_i4, 0_i4, st)
+        if (st%ok()) call check_imposed(s, excit, times, st)
         if (st%failed()) return
         allocate (res)
         call meca_statique(s, excit, times, options%factor, res, log, st)
@@ -170,6 +175,47 @@ contains
                 gib_text(real(MAX_RECORD_BYTES, dp)) // ')', st, code=STATUS_MODEL_ERROR)
         end if
     end subroutine check_records
+
+    !> A component imposed twice with different values (in one load or two loads of EXCIT,
+    !> FONC_MULT applied) at any instant of the analysis is an error at the occurrence found
+    !> second, naming the first: Code_Aster refuses conflicting DDL_IMPO, and imposing them
+    !> in turn would silently keep the last.
+    !>  times : in, the instants the loads are applied at
+    subroutine check_imposed(s, excit, times, st)
+        type(structure_t), intent(in) :: s
+        type(excitation_t), intent(in) :: excit(:)
+        real(dp), intent(in) :: times(:)
+        type(status_t), intent(inout) :: st
+        real(dp), allocatable :: value(:)
+        integer(i4), allocatable :: owner(:, :)
+        integer(i4) :: i, k, first(2)
+        real(dp) :: factor
+        type(param_binding_t) :: binding
+        allocate (value(s%dofs%n_equations), owner(2, s%dofs%n_equations))
+        do i = 1, size(times)
+            owner = 0
+            do k = 1, size(excit)
+                factor = 1.0_dp
+                if (associated(excit(k)%fonc_mult)) then
+                    call excit(k)%fonc_mult%bind(['INST'], binding)
+                    call excit(k)%fonc_mult%evaluate(binding, [times(i)], factor, st)
+                    if (st%failed()) then
+                        call clear_status(st)      ! the analysis reports it, located
+                        cycle
+                    end if
+                end if
+                call record_imposed(s, excit(k)%load, k, times(i), factor, value, owner, &
+                                    first, st)
+                if (st%failed()) then
+                    if (first(1) > 0) st%message = st%message // ' at ' // &
+                        load_item_where(excit(first(1))%load%items(first(2))) // &
+                        ' (Code_Aster refuses conflicting imposed values: impose each ' // &
+                        'component once)'
+                    return
+                end if
+            end do
+        end do
+    end subroutine check_imposed
 
     ! Bytes as GiB with 3 significant digits ("68.0 GiB").
     function gib_text(bytes) result(text)

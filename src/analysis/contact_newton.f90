@@ -40,6 +40,7 @@ module contact_newton
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
     use run_deadline, only: deadline_t
+    use number_limits, only: is_finite, MAX_BINARY_EXPONENT
     implicit none
     private
 
@@ -625,7 +626,7 @@ contains
         have_held = .false.
         if (allocated(held%equations)) have_held = size(held%equations) > 0
         if (have_held) rhs = r
-        call solver%solve(r, st)
+        call solve_in_range(s, map, matrix, solver, r, t, st)
         if (st%failed() .or. .not. have_held) return
         allocate (ax(size(r)))
         call sym_matvec(matrix, r, ax)
@@ -657,6 +658,48 @@ contains
             held%warned = .true.
         end if
     end subroutine solve_held
+
+    !> solver%solve without overflow (issue 13): the right-hand side is scaled by a power of
+    !> two to |r| <= 1 (exact: the solution is bit for bit the unscaled one's, scaled), and
+    !> the solution is scaled back only when it fits, with the products K u the analysis
+    !> forms from it (number_limits): otherwise STATUS_SINGULAR at the largest component,
+    !> a load out of all proportion to what holds the structure there.
+    subroutine solve_in_range(s, map, matrix, solver, r, t, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(sym_matrix_t), intent(in) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
+        real(dp), intent(inout) :: r(:)
+        real(dp), intent(in) :: t
+        type(status_t), intent(out) :: st
+        integer :: shift
+        integer(i4) :: worst
+        real(dp) :: largest
+        shift = 0
+        if (size(r) > 0) then
+            if (maxval(abs(r)) > 0.0_dp) shift = exponent(maxval(abs(r)))
+        end if
+        r = scale(r, -shift)
+        call solver%solve(r, st)
+        if (st%failed() .or. size(r) == 0) return
+        worst = int(maxloc(abs(r), dim=1), i4)
+        largest = abs(r(worst))
+        if (.not. is_finite(largest)) then
+            worst = int(findloc(is_finite(r), .false., dim=1), i4)
+        else if (largest > 0.0_dp .and. exponent(largest) + shift + &
+                 max(0, exponent(maxval(abs(sym_diagonal(matrix))))) <= MAX_BINARY_EXPONENT) then
+            r = scale(r, shift)
+            return
+        else if (.not. largest > 0.0_dp) then
+            return
+        end if
+        call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': the solution at ' // &
+            describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // ' is beyond ' // &
+            'double precision (about 2**' // to_text(exponent(largest) + shift) // &
+            ' times the stiffness): the loads are out of all proportion to what holds the ' // &
+            'structure there (a support or a stiffness missing, or loads too large)')
+        r = 0.0_dp
+    end subroutine solve_in_range
 
     !> Node and component of the first held equations (cut after LIST_EQUATIONS).
     function held_names(s, map, equations) result(text)

@@ -21,7 +21,10 @@ module assembly_loads
     implicit none
     private
 
-    public :: mark_imposed, impose_values, add_external_forces
+    public :: mark_imposed, impose_values, add_external_forces, record_imposed
+
+    !> Relative difference under which two values imposed on one component are the same.
+    real(dp), parameter :: SAME_IMPOSED_VALUE = 1.0e-12_dp
 
 contains
 
@@ -83,6 +86,61 @@ contains
             end associate
         end do
     end subroutine impose_values
+
+    !> Records the DDL_IMPO values of load set number `load_number` at time t (times
+    !> factor) and finds a component imposed twice with different values: Code_Aster refuses
+    !> conflicting imposed values, and applying them in turn would silently keep the last.
+    !>  value, owner : inout, (n_equations) and (2, n_equations): the value imposed so far
+    !>                 and (load number, item) that imposed it, owner(1, eq) = 0 for none
+    !>  first : out, on a conflict the owner of the other value (load number, item)
+    !>  st : out, the conflict, located at the occurrence found second (the caller names the
+    !>       first one); function errors and values out of range, located
+    subroutine record_imposed(s, load, load_number, t, factor, value, owner, first, st)
+        type(structure_t), intent(in) :: s
+        type(load_set_t), intent(in) :: load
+        integer(i4), intent(in) :: load_number
+        real(dp), intent(in) :: t, factor
+        real(dp), intent(inout) :: value(:)
+        integer(i4), intent(inout) :: owner(:, :)
+        integer(i4), intent(out) :: first(2)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, i, comp, eq, node
+        real(dp) :: v
+        first = 0
+        do k = 1, load%n_items
+            if (load%items(k)%kind /= LOAD_DDL_IMPO) cycle
+            associate (item => load%items(k))
+                do i = 1, size(item%nodes)
+                    node = item%nodes(i)
+                    do comp = 1, N_COMPONENTS
+                        if (.not. item%values(comp)%given) cycle
+                        eq = s%dofs%equation(comp, node)
+                        if (eq <= 0) cycle
+                        call load_value_at(item%values(comp), item%kind, comp, t, &
+                            s%mesh%coords(:, node), v, st)
+                        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                        call load_locate(item, comp, st)
+                        if (st%failed()) return
+                        v = factor * v
+                        if (owner(1, eq) == 0) then
+                            owner(:, eq) = [load_number, k]
+                            value(eq) = v
+                        else if (abs(v - value(eq)) > SAME_IMPOSED_VALUE * &
+                                 max(abs(v), abs(value(eq)))) then
+                            first = owner(:, eq)
+                            call set_error(st, STATUS_MODEL_ERROR, 'node ' // &
+                                node_name(s%mesh, node) // ' ' // trim(COMPONENT_NAMES(comp)) &
+                                // ' is imposed twice with different values at INST ' // &
+                                to_text(t) // ': ' // to_text(v) // ' here, ' // &
+                                to_text(value(eq)) // ' by the DDL_IMPO')
+                            call load_locate(item, comp, st)
+                            return
+                        end if
+                    end do
+                end do
+            end associate
+        end do
+    end subroutine record_imposed
 
     !> Adds the external forces of a load set at time t (times factor) to fext.
     !>  st : out, function evaluation errors; a load on a cell of the wrong kind; a nodal

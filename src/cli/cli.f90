@@ -15,7 +15,7 @@ module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use kinds, only: i4, dp
     use strings, only: string_t, to_text, starts_with
-    use status, only: status_t, format_status, set_error, add_context, STATUS_DECK_ERROR
+    use status, only: status_t, format_status, set_error, add_context, STATUS_DECK_ERROR, STATUS_IO_ERROR
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
     use atomic_file, only: open_atomic
@@ -247,6 +247,14 @@ contains
         end do
         call register_commands(ctx)
         if (.not. opts%check) then
+            ! A deck (or export file) of the command line that cannot be opened gets no
+            ! listings: no run took place, nothing is written (issue 13).
+            call check_openable(opts, io)
+            if (io%failed()) then
+                write (error_unit, '(a)') format_status(io)
+                exit_status = EXIT_ERROR
+                return
+            end if
             call open_atomic(ctx%mess, mess_path, io)
             if (io%ok()) call open_atomic(ctx%resu, resu_path, io)
             if (io%failed()) then
@@ -283,6 +291,37 @@ contains
         call finish(ctx, st, exit_status)
         call ctx%reset_symbols()
     end subroutine run_deck
+
+    !> An error when the export file or a deck named on the command line cannot be opened
+    !> for reading (the system's reason), checked before the listings are created.
+    subroutine check_openable(opts, st)
+        type(options_t), intent(in) :: opts
+        type(status_t), intent(out) :: st
+        integer :: k
+        if (allocated(opts%export)) then
+            call try_open(opts%export, 'the export file', st)
+        else
+            do k = 1, size(opts%decks)
+                call try_open(opts%decks(k)%s, 'the deck', st)
+                if (st%failed()) return
+            end do
+        end if
+    contains
+        subroutine try_open(path, what, st)
+            character(len=*), intent(in) :: path, what
+            type(status_t), intent(inout) :: st
+            integer :: unit, ios
+            character(len=256) :: msg
+            open (newunit=unit, file=path, access='stream', form='unformatted', &
+                  status='old', action='read', iostat=ios, iomsg=msg)
+            if (ios /= 0) then
+                call set_error(st, STATUS_IO_ERROR, 'cannot open ' // what // ' ' // path // &
+                               ': ' // trim(msg) // ' (no listing written)')
+                return
+            end if
+            close (unit)
+        end subroutine try_open
+    end subroutine check_openable
 
     !> Takes from an export file what the run needs: its command files (in order), its
     !> units (F mmed|med|mail|msh NAME D U, and the result files parasol writes on a unit),

@@ -254,6 +254,10 @@ contains
             case default
                 cycle
             end select
+            if (mesh%cell_type(c) == CELL_QUAD4) then
+                call check_corners(c, RELATIVE_TOLERANCE * size_scale)
+                if (st%failed()) return
+            end if
             if (cell_measure(mesh, c) <= threshold) then
                 call set_error(st, STATUS_MESH_ERROR, 'degenerate cell ' // cell_name(mesh, c) &
                     // ': its ' // trim(CELL_TYPE_NAMES(mesh%cell_type(c))) // ' has zero ' // &
@@ -262,6 +266,36 @@ contains
                 return
             end if
         end do
+    contains
+        ! Two corners of QUAD4 c closer than `tolerance` (or the same node twice): the cell
+        ! is a collapsed quadrangle, whose area test may still pass (a triangle's) while its
+        ! bilinear map is singular at the collapsed corner.
+        subroutine check_corners(c, tolerance)
+            integer(i4), intent(in) :: c
+            real(dp), intent(in) :: tolerance
+            integer(i4) :: i, j, p0
+            p0 = mesh%cell_ptr(c) - 1
+            do i = 1, 3
+                do j = i + 1, 4
+                    if (norm2(mesh%coords(:, mesh%cell_nodes(p0 + i)) - &
+                              mesh%coords(:, mesh%cell_nodes(p0 + j))) > tolerance) cycle
+                    if (mesh%cell_nodes(p0 + i) == mesh%cell_nodes(p0 + j)) then
+                        call set_error(st, STATUS_MESH_ERROR, 'cell ' // cell_name(mesh, c) // &
+                            ': node ' // node_name(mesh, mesh%cell_nodes(p0 + i)) // &
+                            ' is corner ' // to_text(i) // ' and corner ' // to_text(j) // &
+                            ' (a QUAD4 needs four distinct corners)', file=mesh%file, &
+                            line=mesh%cell_line(c))
+                    else
+                        call set_error(st, STATUS_MESH_ERROR, 'cell ' // cell_name(mesh, c) // &
+                            ': its corners ' // node_name(mesh, mesh%cell_nodes(p0 + i)) // &
+                            ' and ' // node_name(mesh, mesh%cell_nodes(p0 + j)) // &
+                            ' coincide (a QUAD4 needs four distinct corners)', &
+                            file=mesh%file, line=mesh%cell_line(c))
+                    end if
+                    return
+                end do
+            end do
+        end subroutine check_corners
     end subroutine check_degenerate_cells
 
     !> Number of GROUP_NO / GROUP_MA.
