@@ -31,7 +31,7 @@ module contact_newton
     use function_concept, only: function_concept_t, param_binding_t
     use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move
     use direct_solver, only: direct_solver_t, solver_options_t, factor_report_t, &
-        effective_nprec, check_disabled
+        effective_nprec, check_disabled, nprec_text
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
@@ -836,7 +836,7 @@ contains
         end if
         diag%n_flagged = eq
         diag%where = ' (pivot lost ' // real_digits(max(report%max_digits_lost, 0.0_dp)) // &
-            ' digits, NPREC = ' // to_text(diag%nprec) // ')'
+            ' digits, NPREC = ' // nprec_text(options) // ')'
     end subroutine classify_pivots
 
     !> A flagged matrix that is not an iterate's overshoot: STATUS_SINGULAR (STOP_SINGULIER

@@ -248,7 +248,7 @@ contains
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('NOEUD', 'TXM', max=MANY)
         call c%rule(RULE_UN_PARMI, 'TOUT GROUP_NO GROUP_MA NOEUD')
-        call add_components(c, DOFS, vtype)
+        call add_components(c, DOFS, vtype, bound=MAX_LENGTH)   ! displacements, rotations
         call c%end_fact()
         call c%fact('FORCE_NODALE', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
@@ -277,15 +277,21 @@ contains
         call c%end_fact()
     end subroutine describe_load_command
 
-    !> Optional components (at least one) of a load factor keyword.
-    subroutine add_components(c, names, vtype)
+    !> Optional components (at least one) of a load factor keyword; real values within
+    !> +-bound when given (functions are checked where they are evaluated, model_loads).
+    subroutine add_components(c, names, vtype, bound)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: names, vtype
+        real(dp), intent(in), optional :: bound
         integer :: i, j
         i = 1
         do while (i <= len_trim(names))
             j = index(names(i:) // ' ', ' ') + i - 1
-            call c%key(names(i:j - 1), vtype)
+            if (present(bound) .and. vtype == 'R') then
+                call c%key(names(i:j - 1), vtype, vmin=-bound, vmax=bound)
+            else
+                call c%key(names(i:j - 1), vtype)
+            end if
             i = j + 1
         end do
         call c%rule(RULE_AU_MOINS_UN, names)

@@ -88,7 +88,7 @@ contains
                 call next_line(lex)
                 cycle
             end if
-            k = findloc(SECTIONS, lex%text(first:last), dim=1)
+            k = section_index(lex%text(first:last))
             if (k > 0) then
                 if (gs%section_line(k) > 0) then
                     call set_error(st, STATUS_MESH_ERROR, 'a second ' // trim(SECTIONS(k)) // &
@@ -129,6 +129,15 @@ contains
         if (st%failed()) return
         call mesh_finish(mesh, lex%line, st)
     end subroutine read_gmsh_mesh
+
+    ! Index of a section header in SECTIONS, 0 for another token.
+    pure integer function section_index(word) result(k)
+        character(len=*), intent(in) :: word
+        do k = 1, size(SECTIONS)
+            if (trim(SECTIONS(k)) == word) return
+        end do
+        k = 0
+    end function section_index
 
     ! Reads the next integer, across line ends unless same_line.
     subroutine get_int(lex, value, what, st, same_line)
@@ -455,8 +464,8 @@ contains
         integer(i4), allocatable :: tags(:)
         real(dp) :: xyz(3), u
         if (gs%version == 41) then
-            header_line = lex%line
             call get_count(lex, n_blocks, 'number of node blocks', BYTES_BLOCK, st)
+            header_line = lex%line
             if (st%ok()) call get_count(lex, n_total, 'number of nodes', BYTES_NODE, st)
             if (st%ok()) call get_int(lex, min_tag, 'minimum node tag', st)
             if (st%ok()) call get_int(lex, max_tag, 'maximum node tag', st)
@@ -617,8 +626,8 @@ contains
         integer(i4) :: physicals(4), min_tag, max_tag, lowest, highest, header_line
         integer(i8) :: n_read
         if (gs%version == 41) then
-            header_line = lex%line
             call get_count(lex, n_blocks, 'number of element blocks', BYTES_BLOCK, st)
+            header_line = lex%line
             if (st%ok()) call get_count(lex, n_total, 'number of elements', BYTES_ELEMENT, st)
             if (st%ok()) call get_int(lex, min_tag, 'minimum element tag', st)
             if (st%ok()) call get_int(lex, max_tag, 'maximum element tag', st)
