@@ -10,8 +10,9 @@
 !>    power an element forms, EPAIS**3 times an area) stays below 1e180;
 !>  - a mesh spans at least 1e-30 (largest side of its bounding box), its cells are not degenerate
 !>    against that span (mesh_types), so inverse lengths stay below 1e42;
-!>  - moduli and stiffnesses (E, spring stiffnesses): 0 <= x <= 1e100 (steel: 2e11 Pa);
-!>    E * EPAIS**3 <= 1e190.
+!>  - moduli and stiffnesses (E, spring stiffnesses): 1e-100 <= |x| <= 1e100 or 0 (steel:
+!>    2e11 Pa); EPAIS >= 1e-30; so E * EPAIS**3 stays within 1e-190 .. 1e190 and the
+!>    stiffness matrix, its inverse and the solution of a bounded load stay finite.
 !> Values formed at run time from deck functions (loads of FORMULE, imposed displacements)
 !> are checked where they are formed with `product_fits`, which decides from the binary
 !> exponents whether a product is representable, without forming it.
@@ -24,10 +25,15 @@ module number_limits
     !> Largest |coordinate| of a mesh node and largest length given in a deck (EPAIS,
     !> DIST_1, DIST_2, COOR_CENTRE), in the deck's length unit.
     real(dp), parameter, public :: MAX_LENGTH = 1.0e30_dp
-    !> Smallest span of a mesh with cells other than POI1 (largest side of its bounding box).
-    real(dp), parameter, public :: MIN_MESH_EXTENT = 1.0e-30_dp
-    !> Largest modulus or stiffness (E, the values of K_T_D_N/K_T_D_L, RIGI_NOR).
+    !> Smallest length given in a deck where it is inverted or cubed (EPAIS), and smallest
+    !> span of a mesh with cells other than POI1 (largest side of its bounding box).
+    real(dp), parameter, public :: MIN_LENGTH = 1.0e-30_dp
+    real(dp), parameter, public :: MIN_MESH_EXTENT = MIN_LENGTH
+    !> Largest modulus or stiffness (E, the values of K_T_D_N/K_T_D_L, RIGI_NOR), and the
+    !> smallest one other than 0: a stiffness of 1e-320 (a denormal) has an inverse beyond
+    !> double precision, and the solvers scale by 1/sqrt of the diagonal.
     real(dp), parameter, public :: MAX_MODULUS = 1.0e100_dp
+    real(dp), parameter, public :: MIN_MODULUS = 1.0e-100_dp
     !> Largest |instant| (DEFI_LIST_REEL, INST): differences of instants stay finite.
     real(dp), parameter, public :: MAX_INSTANT = 1.0e30_dp
     !> Largest magnitude of a computed quantity that products may still be formed from

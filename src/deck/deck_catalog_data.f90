@@ -6,7 +6,7 @@
 module deck_catalog_data
     use kinds, only: dp
     use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
-    use number_limits, only: MAX_LENGTH, MAX_MODULUS, MAX_INSTANT
+    use number_limits, only: MAX_LENGTH, MIN_LENGTH, MAX_MODULUS, MIN_MODULUS, MAX_INSTANT
     implicit none
     private
     public :: build_catalog
@@ -94,7 +94,8 @@ contains
 
         call c%command('DEFI_MATERIAU', 'mater')
         call c%fact('ELAS')
-        call c%key('E', 'R', req=.true., vmin=0.0_dp, vmax=MAX_MODULUS)
+        call c%key('E', 'R', req=.true., vmin=0.0_dp, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)                   ! val_min 0; E > 0: the handler
         call c%key('NU', 'R', req=.true., vmin=-1.0_dp, vmax=0.5_dp)
         call c%key('RHO', 'R')
         call c%key('ALPHA', 'R', noop=.true.)
@@ -102,8 +103,9 @@ contains
         call c%key('AMOR_BETA', 'R', noop=.true.)
         call c%end_fact()
         call c%fact('DIS_CONTACT')
-        call c%key('RIGI_NOR', 'R', vmin=0.0_dp, vmax=MAX_MODULUS)
-        call c%key('RIGI_TAN', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_MODULUS)
+        call c%key('RIGI_NOR', 'R', vmin=0.0_dp, vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+        call c%key('RIGI_TAN', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
         call c%key('DIST_1', 'R', def='0.0', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
         call c%key('DIST_2', 'R', def='0.0', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
         call c%key('JEU', 'R', def='0.0', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
@@ -135,7 +137,7 @@ contains
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%fact('COQUE', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
-        call c%key('EPAIS', 'R', req=.true., vmax=MAX_LENGTH)
+        call c%key('EPAIS', 'R', req=.true., vmax=MAX_LENGTH, vtiny=MIN_LENGTH)  ! > 0: handler
         call c%key('COQUE_NCOU', 'I', noop=.true.)
         call c%key('COEF_RIGI_DRZ', 'R', def='1.0E-5', &  ! Code_Aster default
                    vmin=-RATIO_MAX, vmax=RATIO_MAX)
@@ -161,10 +163,12 @@ contains
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('GROUP_MA_SEG2', 'TXM', max=MANY)
         call c%key('GROUP_MA_POI1', 'TXM', max=MANY)
-        call c%key('COEF_GROUP', 'R', max=MANY, vmin=-WEIGHT_MAX, vmax=WEIGHT_MAX)
+        call c%key('COEF_GROUP', 'R', max=MANY, vmin=-WEIGHT_MAX, vmax=WEIGHT_MAX, &
+                   vtiny=1.0_dp / WEIGHT_MAX)
         call c%key('FONC_GROUP', 'FUNC', max=MANY)
         call c%key('CARA', 'TXM', max=2, req=.true., into=K_CARA)
-        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS)
+        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
         call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL')
         call c%key('GROUP_NO_CENTRE', 'TXM')
         call c%key('NOEUD_CENTRE', 'TXM')
@@ -181,7 +185,8 @@ contains
         character(len=*), intent(in) :: cara
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('CARA', 'TXM', req=.true., into=cara)
-        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS)
+        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
         call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL LOCAL')
         call c%key('SYME', 'TXM', def='OUI', into=OUI_NON)
     end subroutine describe_discrete

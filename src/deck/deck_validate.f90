@@ -298,8 +298,16 @@ contains
         character(len=:), allocatable :: msg
         real(dp) :: x
         msg = ''
-        if (.not. (kw%has_vmin .or. kw%has_vmax) .or. .not. is_number(v)) return
+        if (.not. (kw%has_vmin .or. kw%has_vmax .or. kw%has_vtiny) .or. &
+            .not. is_number(v)) return
         x = as_real(v)
+        if (kw%has_vtiny .and. abs(x) > 0.0_dp .and. abs(x) < kw%vtiny) then
+            msg = 'value ' // value_text(v) // ' is too small: ' // kw%name // ' is 0 or at ' &
+                // 'least ' // range_bound(kw%vtiny) // ' in magnitude (its inverse must ' // &
+                'stay finite)'
+            return
+        end if
+        if (.not. (kw%has_vmin .or. kw%has_vmax)) return
         if (kw%has_vmin .and. kw%has_vmax) then
             if (x < kw%vmin .or. x > kw%vmax) msg = 'value ' // value_text(v) // &
                 ' is out of range (' // range_bound(kw%vmin) // ' <= ' // kw%name // ' <= ' &

@@ -326,3 +326,42 @@ def med_content(rng, path):
                 g.attrs[key] = rng.choice([-1, 0, 4, 1000000000])
             return "%s attribute %s changed" % (g.name, key)
         return "nothing changed"
+
+
+def main(argv):
+    """`mutate.py med PATH SEED`: med_content in a process of its own (HDF5 may crash on a
+    damaged file: the fuzzer must not). Prints the description."""
+    import random
+    if len(argv) == 4 and argv[1] == "med":
+        print(med_content(random.Random(int(argv[3])), argv[2]))
+        return 0
+    if len(argv) == 3 and argv[1] == "finite":
+        return finite_report(argv[2])
+    print("usage: mutate.py med PATH SEED | finite PATH")
+    return 2
+
+
+def finite_report(path):
+    """`mutate.py finite PATH`: the float datasets of an HDF5 file holding NaN or Inf, one per
+    line (none: nothing printed); exit 3 when the file cannot be read."""
+    import h5py
+    import numpy
+    bad = []
+    try:
+        with h5py.File(path, "r") as f:
+            def visit(name, obj):
+                if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f":
+                    if not numpy.all(numpy.isfinite(obj[()])):
+                        bad.append(name)
+            f.visititems(visit)
+    except Exception as exc:
+        print("unreadable result file (%s)" % exc)
+        return 3
+    for name in bad:
+        print(name)
+    return 0
+
+
+if __name__ == "__main__":
+    import sys
+    sys.exit(main(sys.argv))
