@@ -4,10 +4,10 @@
 set -euo pipefail
 # libsuitesparse-dev: CHOLMOD (METHODE='MULT_FRONT'); libmumps-seq-dev: MUMPS (the default
 # METHODE); libmumps-dev, libopenmpi-dev, openmpi-bin: the MPI build (-DPARASOL_MUMPS_MPI=ON)
-# and its `mpi` test.
+# and its `mpi` test. python3-matplotlib: the plots of the benchmarks and doc/ (label bench).
 packages=(gfortran cmake ninja-build liblapack-dev libblas-dev libopenblas-dev libmetis-dev
           python3 python3-numpy python3-meshio libsuitesparse-dev libmumps-seq-dev
-          libmumps-dev libopenmpi-dev openmpi-bin
+          libmumps-dev libopenmpi-dev openmpi-bin python3-matplotlib
           libmedc-dev libmed-tools python3-h5py    # MED plug-in; mdump and h5py check MED files
           valgrind)                                 # the valgrind.* tests (memcheck)
 missing=()

@@ -213,16 +213,19 @@ def write_gmsh41(mesh, out):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--model", choices=["a", "b"], default="a")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                     formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    parser.add_argument("--model", choices=["a", "b"], default="a",
+                        help="a: 3D plate on SEG2 springs; b: 2D slice on 2D springs")
     parser.add_argument("--a", type=float, default=1.0, help="plate width (x), model A")
     parser.add_argument("--b", type=float, default=2.0, help="plate length")
     parser.add_argument("--nx", type=int, default=4, help="cells across the width (model A)")
     parser.add_argument("--ny", type=int, default=16, help="cells along the length")
     parser.add_argument("--L", type=float, default=0.1, help="spring length")
     parser.add_argument("--h", type=float, default=0.3, help="slice thickness (model B)")
-    parser.add_argument("--format", choices=["aster", "gmsh41", "gmsh22"], default="aster")
-    parser.add_argument("-o", "--output", default="-", help="output file (default stdout)")
+    parser.add_argument("--format", choices=["aster", "gmsh41", "gmsh22"], default="aster",
+                        help="mesh file format: Code_Aster .mail, or Gmsh .msh 4.1 / 2.2")
+    parser.add_argument("-o", "--output", default="-", help="output file ('-': stdout)")
     args = parser.parse_args(argv)
     if args.nx < 1 or args.ny < 1 or min(args.a, args.b, args.L, args.h) <= 0:
         parser.error("sizes and counts must be positive")

@@ -17,13 +17,25 @@ are solved, and the first n whose solution is consistent (z_j <= 0 for j <= n, z
 beyond) is kept. All arithmetic is in Fractions, so the result is exact. The ground lift is
 added to the displacements afterwards (a rigid shift of everything).
 
+--load nodes: the load Code_Aster (and parasol) apply for a pressure FORMULE on DKT/DKQ
+plates: P evaluated at the node rows y_j and interpolated linearly between them (the DKQ
+load weights integrate a linear field and its first moment exactly), so F and M are those
+of the interpolant (SSNL130 A: F = 855/64 instead of 40/3). The default, --load exact,
+integrates P itself (the 2D slice, whose FORCE_CONTOUR is integrated at Gauss points).
+
 Used by the test decks of tests/ (values written into the decks) and by the benchmarks.
 
 Usage: rigid_bed_exact.py [--ny 16] [--a 1 --b 2 --K 1e4 --p 5 --m 2 --lift 0 --bilateral]
+                         [--load exact|nodes]
 """
 import argparse
 import sys
 from fractions import Fraction as Fr
+
+
+class HelpFormatter(argparse.ArgumentDefaultsHelpFormatter,
+                    argparse.RawDescriptionHelpFormatter):
+    """--help shows each option's default, and the docstring as written."""
 
 
 class NoEquilibrium(ValueError):
@@ -35,17 +47,37 @@ def load_resultants(a, b, p, m=2):
     return a * p * b ** (m + 1) / (m + 1), a * p * b ** (m + 2) / ((m + 1) * (m + 2))
 
 
-def solve_rigid_bed(ny, a=1, b=2, K=10000, p=5, m=2, lift=0, bilateral=False):
+def nodal_load_resultants(a, b, p, m, ny):
+    """F and M of the linear interpolant of P between the node rows y_j = j b / ny: on
+    [y_j, y_j+1] (length h) the integral of P is h (P_j + P_j+1) / 2 and that of y P is
+    h ((y_j P_j + y_j+1 P_j+1) / 3 + (y_j P_j+1 + y_j+1 P_j) / 6)."""
+    h = b / ny
+    ys = [h * j for j in range(ny + 1)]
+    ps = [p * (b - y) ** m for y in ys]
+    F = a * sum(h * (ps[j] + ps[j + 1]) / 2 for j in range(ny))
+    M = a * sum(h * ((ys[j] * ps[j] + ys[j + 1] * ps[j + 1]) / 3
+                     + (ys[j] * ps[j + 1] + ys[j + 1] * ps[j]) / 6) for j in range(ny))
+    return F, M
+
+
+def solve_rigid_bed(ny, a=1, b=2, K=10000, p=5, m=2, lift=0, bilateral=False, load="exact"):
     """Return dict(pt01, pt03, w, t, n, y0) exactly: the displacement at y = 0 and y = b
     (ground lift included), the relative motion z = w + t y, the last closed row n and the
-    zero crossing y0 = -w / t (None for a uniform settlement).
+    zero crossing y0 = -w / t (None for a uniform settlement). load: "exact" (P integrated)
+    or "nodes" (P interpolated between the node rows, nodal_load_resultants).
 
-    Errors: ValueError when ny < 1; NoEquilibrium when no consistent contact set exists.
+    Errors: ValueError when ny < 1 or load is unknown; NoEquilibrium when no consistent
+    contact set exists.
     """
     if ny < 1:
         raise ValueError(f"ny = {ny}: need at least one cell along y")
     a, b, K, p, lift = Fr(a), Fr(b), Fr(K), Fr(p), Fr(lift)
-    F, M = load_resultants(a, b, p, m)
+    if load == "exact":
+        F, M = load_resultants(a, b, p, m)
+    elif load == "nodes":
+        F, M = nodal_load_resultants(a, b, p, m, ny)
+    else:
+        raise ValueError(f"load = {load}: exact or nodes")
     ys = [b * j / ny for j in range(ny + 1)]
     ks = [K / (2 * ny) if j in (0, ny) else K / ny for j in range(ny + 1)]
     candidates = [ny] if bilateral else range(ny, 0, -1)
@@ -68,20 +100,24 @@ def solve_rigid_bed(ny, a=1, b=2, K=10000, p=5, m=2, lift=0, bilateral=False):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--ny", type=int, default=16)
-    ap.add_argument("--a", default="1")
-    ap.add_argument("--b", default="2")
-    ap.add_argument("--K", default="10000")
-    ap.add_argument("--p", default="5")
-    ap.add_argument("--m", type=int, default=2)
-    ap.add_argument("--lift", default="0")
-    ap.add_argument("--bilateral", action="store_true")
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=HelpFormatter)
+    ap.add_argument("--ny", type=int, default=16, help="cells along the length (rows - 1)")
+    ap.add_argument("--a", default="1", help="plate width in m (exact fraction allowed)")
+    ap.add_argument("--b", default="2", help="plate length in m")
+    ap.add_argument("--K", default="10000", help="global bed stiffness in N/m")
+    ap.add_argument("--p", default="5", help="load scale: P(y) = p (b - y)^m")
+    ap.add_argument("--m", type=int, default=2, help="load exponent m")
+    ap.add_argument("--lift", default="0", help="rigid ground lift added to the answer")
+    ap.add_argument("--bilateral", action="store_true",
+                    help="springs that also pull (every row carries)")
+    ap.add_argument("--load", choices=["exact", "nodes"], default="exact",
+                    help="exact: the pressure integrated exactly; nodes: its values at the "
+                    "nodes, interpolated (what Code_Aster integrates for a pressure function "
+                    "on plates)")
     o = ap.parse_args(argv)
     try:
         r = solve_rigid_bed(o.ny, Fr(o.a), Fr(o.b), Fr(o.K), Fr(o.p), o.m, Fr(o.lift),
-                            o.bilateral)
+                            o.bilateral, o.load)
     except ValueError as e:
         print(f"rigid_bed_exact: {e}", file=sys.stderr)
         return 1

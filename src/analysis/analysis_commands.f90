@@ -1,5 +1,6 @@
 !> Command handlers MECA_STATIQUE and STAT_NON_LINE: gather the structure from the MODELE,
-!> CHAM_MATER and CARA_ELEM concepts, the EXCIT loads, COMPORTEMENT (DIS_CHOC cells),
+!> CHAM_MATER and CARA_ELEM concepts, the EXCIT loads, COMPORTEMENT (DIS_CHOC and
+!> DIS_CONTACT cells),
 !> INCREMENT, NEWTON, CONVERGENCE and SOLVEUR, run the core (linear_static,
 !> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
 module analysis_commands
@@ -20,7 +21,7 @@ module analysis_commands
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
     use assembly_system, only: structure_t, structure_check
-    use assembly_loads, only: record_imposed
+    use assembly_loads, only: check_imposed_owners, record_imposed
     use model_loads, only: load_item_where
     use function_concept, only: param_binding_t
     use direct_solver, only: solver_options_t
@@ -29,7 +30,7 @@ module analysis_commands
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
     use analysis_result, only: result_concept_t, RESULT_INST_PRECISION
-    use analysis_log, only: analysis_log_t
+    use analysis_log, only: analysis_log_t, log_stream, log_flush
     implicit none
     private
 
@@ -59,26 +60,26 @@ contains
         type(analysis_log_t) :: log
         type(newton_summary_t) :: summary
         real(dp), allocatable :: times(:)
-        integer(i4) :: k
         call gather_structure(cmd, s, st)
-        if (st%ok()) call gather_excitations(cmd, excit, st)
+        if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_behaviour(cmd, s, st)
         if (st%ok()) call read_increment(cmd, times, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
         options%deadline = ctx%deadline            ! polled between Newton iterations
+        options%progress => ctx%progress           ! a line per step, work under way
         call structure_check(s, st)
         if (st%ok()) call check_records(cmd, 'INCREMENT', 'LIST_INST', size(times, kind=i8), &
             s%dofs%n_equations, count(s%choc), options%iter_glob_maxi, st)
         if (st%ok()) call check_imposed(s, excit, times(2:), st)
         if (st%failed()) return
-        call ctx%write_mess('    ' // to_text(count(s%choc)) // ' DIS_CHOC cell(s), ' // &
-            to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
+        call ctx%write_mess('    ' // to_text(count(s%choc .and. .not. s%dis_contact)) // &
+            ' DIS_CHOC cell(s), ' // to_text(count(s%dis_contact)) // ' DIS_CONTACT cell(s), ' &
+            // to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
         allocate (res)
+        call log_stream(log, ctx%mess%unit, '    ')   ! the .mess grows step by step
         call stat_non_line(s, excit, times, options, res, log, summary, st)
-        do k = 1, log%n
-            call ctx%write_mess('    ' // log%lines(k)%s)
-        end do
+        call log_flush(log)
         if (st%failed()) return
         call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
             ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
@@ -101,9 +102,8 @@ contains
         type(analysis_log_t) :: log
         real(dp), allocatable :: times(:)
         class(concept_t), pointer :: p
-        integer(i4) :: k
         call gather_structure(cmd, s, st)
-        if (st%ok()) call gather_excitations(cmd, excit, st)
+        if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
         allocate (s%choc(s%mesh%n_cells), source=.false.)
@@ -125,10 +125,9 @@ contains
         if (st%ok()) call check_imposed(s, excit, times, st)
         if (st%failed()) return
         allocate (res)
-        call meca_statique(s, excit, times, options%factor, res, log, st)
-        do k = 1, log%n
-            call ctx%write_mess('    ' // log%lines(k)%s)
-        end do
+        call log_stream(log, ctx%mess%unit, '    ')
+        call meca_statique(s, excit, times, options%factor, res, log, st, ctx%progress)
+        call log_flush(log)
         if (st%failed()) return
         call move_alloc(res, result)
     end subroutine run_meca_statique
@@ -271,14 +270,19 @@ contains
         end if
     end subroutine gather_structure
 
-    !> EXCIT occurrences: CHARGE (char_meca) and optional FONC_MULT.
-    subroutine gather_excitations(cmd, excit, st)
+    !> EXCIT occurrences: CHARGE (char_meca, or char_cine_meca of AFFE_CHAR_CINE) and
+    !> optional FONC_MULT. An equation imposed by an AFFE_CHAR_CINE and by another load is an
+    !> error at the later EXCIT's CHARGE (check_imposed_owners).
+    subroutine gather_excitations(cmd, s, excit, st)
         type(command_t), intent(in) :: cmd
+        type(structure_t), intent(in) :: s
         type(excitation_t), allocatable, intent(out) :: excit(:)
         type(status_t), intent(out) :: st
         type(keyword_set_t) :: occ
         class(concept_t), pointer :: p
         integer(i4) :: k
+        integer(i4), allocatable :: owner(:)
+        allocate (owner(s%dofs%n_equations), source=0_i4)
         allocate (excit(cmd%count('EXCIT')))
         do k = 1, size(excit)
             occ = cmd%occurrence('EXCIT', k)
@@ -287,6 +291,11 @@ contains
             select type (p)
             type is (char_meca_concept_t)
                 excit(k)%load => p%loads
+                call check_imposed_owners(s, p%loads, k, owner, st)
+                if (st%failed()) then
+                    call occ%error_at('CHARGE', st%message, st, code=STATUS_MODEL_ERROR)
+                    return
+                end if
             class default
                 call occ%error_at('CHARGE', 'expected a load (char_meca), got ' // &
                     p%type_name(), st)
@@ -305,8 +314,8 @@ contains
         end do
     end subroutine gather_excitations
 
-    !> COMPORTEMENT: RELATION per cell (TOUT or GROUP_MA; later occurrences win). DIS_CHOC
-    !> only on discrete (DIS_T / 2D_DIS_T) cells.
+    !> COMPORTEMENT: RELATION per cell (TOUT or GROUP_MA; later occurrences win). The contact
+    !> laws DIS_CHOC and DIS_CONTACT apply to discrete (DIS_T, 2D_DIS_T) cells only.
     subroutine read_behaviour(cmd, s, st)
         type(command_t), intent(in) :: cmd
         type(structure_t), intent(inout) :: s
@@ -315,27 +324,29 @@ contains
         character(len=:), allocatable :: relation
         integer(i4), allocatable :: cells(:)
         integer(i4) :: k
-        allocate (s%choc(s%mesh%n_cells), source=.false.)
+        logical :: contact_law
+        allocate (s%choc(s%mesh%n_cells), s%dis_contact(s%mesh%n_cells), source=.false.)
         do k = 1, cmd%count('COMPORTEMENT')
             occ = cmd%occurrence('COMPORTEMENT', k)
             call occ%get_text('RELATION', relation, st)
             if (st%failed()) return
+            contact_law = relation == 'DIS_CHOC' .or. relation == 'DIS_CONTACT'
             if (occ%has('GROUP_MA')) then
                 call group_cells(occ, 'GROUP_MA', s%mesh, cells, st)
                 if (st%failed()) return
-                if (relation == 'DIS_CHOC' .and. .not. all(is_discrete(s%model%element(cells)))) &
-                    then
-                    call occ%error_at('GROUP_MA', 'DIS_CHOC applies to discrete (DIS_T, ' // &
-                        '2D_DIS_T) cells only; ' // to_text(count(.not. is_discrete( &
+                if (contact_law .and. .not. all(is_discrete(s%model%element(cells)))) then
+                    call occ%error_at('GROUP_MA', relation // ' applies to discrete (DIS_T, ' &
+                        // '2D_DIS_T) cells only; ' // to_text(count(.not. is_discrete( &
                         s%model%element(cells)))) // ' cell(s) of the group are not', st, &
                         code=STATUS_MODEL_ERROR)
                     return
                 end if
             else
                 cells = all_cells(s%mesh)
-                if (relation == 'DIS_CHOC') cells = pack(cells, is_discrete(s%model%element))
+                if (contact_law) cells = pack(cells, is_discrete(s%model%element))
             end if
-            s%choc(cells) = relation == 'DIS_CHOC'
+            s%choc(cells) = contact_law
+            s%dis_contact(cells) = relation == 'DIS_CONTACT'
         end do
     end subroutine read_behaviour
 
@@ -415,14 +426,26 @@ contains
             if (st%failed()) return
         end if
         if (cmd%count('CONVERGENCE') > 0) then
+            ! Code_Aster (U4.51.03, nmcore): the criteria given are all tested; RESI_GLOB_RELA
+            ! at its default 1e-6 only when neither is given.
             occ = cmd%occurrence('CONVERGENCE', 1)
-            if (occ%has('RESI_GLOB_MAXI')) then
-                options%use_maxi = .true.
-                options%use_rela = .false.
-                call occ%get_real('RESI_GLOB_MAXI', options%resi_glob_maxi, st)
-            end if
-            if (occ%has('RESI_GLOB_RELA')) call occ%get_real('RESI_GLOB_RELA', &
+            options%use_maxi = occ%has('RESI_GLOB_MAXI')
+            options%use_rela = occ%has('RESI_GLOB_RELA') .or. .not. options%use_maxi
+            if (options%use_maxi) call occ%get_real('RESI_GLOB_MAXI', options%resi_glob_maxi, &
+                st)
+            if (st%ok() .and. occ%has('RESI_GLOB_RELA')) call occ%get_real('RESI_GLOB_RELA', &
                 options%resi_glob_rela, st)
+            if (st%failed()) return
+            if (options%use_rela .and. .not. options%resi_glob_rela > 0.0_dp) then
+                call occ%error_at('RESI_GLOB_RELA', 'must be > 0 (got ' // &
+                    real_e13(options%resi_glob_rela) // ')', st, code=STATUS_MODEL_ERROR)
+                return
+            end if
+            if (options%use_maxi .and. .not. options%resi_glob_maxi > 0.0_dp) then
+                call occ%error_at('RESI_GLOB_MAXI', 'must be > 0 (got ' // &
+                    real_e13(options%resi_glob_maxi) // ')', st, code=STATUS_MODEL_ERROR)
+                return
+            end if
             if (st%ok()) call occ%get_int('ITER_GLOB_MAXI', options%iter_glob_maxi, st)
             if (st%failed()) return
         end if

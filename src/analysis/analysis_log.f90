@@ -1,22 +1,26 @@
-!> Lines an analysis writes to the .mess (the handler copies them to the run's message
-!> file): the renumbering summary, the Newton/contact table of each step, warnings.
+!> Lines an analysis writes to the .mess: the renumbering summary, the Newton/contact table
+!> of each step, warnings. They are kept in order and, once the handler has connected the
+!> log to the run's .mess (log_stream), also written there as they come and flushed at the
+!> end of each step (log_flush), so that the .mess of a long run grows while it runs.
 module analysis_log
     use kinds, only: i4
     use strings, only: string_t
     implicit none
     private
 
-    !> A growing list of lines.
+    !> A growing list of lines, optionally written through to an open file.
     type, public :: analysis_log_t
         integer(i4) :: n = 0
         type(string_t), allocatable :: lines(:)
+        integer :: unit = -1                       !< open file the lines go to (-1: none)
+        character(len=:), allocatable :: indent    !< put before each line written there
     end type analysis_log_t
 
-    public :: log_add
+    public :: log_add, log_stream, log_flush
 
 contains
 
-    !> Appends one line (trailing blanks removed).
+    !> Appends one line (trailing blanks removed), and writes it to the connected file.
     subroutine log_add(log, text)
         type(analysis_log_t), intent(inout) :: log
         character(len=*), intent(in) :: text
@@ -32,6 +36,29 @@ contains
         end if
         log%n = log%n + 1
         log%lines(log%n)%s = trim(text)
+        if (log%unit /= -1) write (log%unit, '(a)') log%indent // trim(text)
     end subroutine log_add
+
+    !> Connects the log to an open formatted file: the lines already in it and every later
+    !> one are written there, each after `indent`.
+    !>  unit : in, the open unit (the .mess's temporary file, run_context%mess%unit)
+    subroutine log_stream(log, unit, indent)
+        type(analysis_log_t), intent(inout) :: log
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: indent
+        integer(i4) :: k
+        log%unit = unit
+        log%indent = indent
+        if (unit == -1) return
+        do k = 1, log%n
+            write (unit, '(a)') indent // log%lines(k)%s
+        end do
+    end subroutine log_stream
+
+    !> Hands the lines written so far to the system (a reader of the file sees them).
+    subroutine log_flush(log)
+        type(analysis_log_t), intent(in) :: log
+        if (log%unit /= -1) flush (log%unit)
+    end subroutine log_flush
 
 end module analysis_log

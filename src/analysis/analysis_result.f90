@@ -8,7 +8,11 @@
 !>   FORC_NODA nodal internal forces f_int(u);
 !>   REAC_NODA reactions f_int(u) - f_ext on the imposed equations, 0 elsewhere.
 !> Spring (discrete) results, for DIS_CHOC: per spring cell, the contact status and the
-!> normal force (negative in compression) per stored instant.
+!> normal force (negative in compression) per stored instant, and Code_Aster's element
+!> fields (element_spring_fields):
+!>   SIEF_ELGA discrete forces in the element frame, N VY VZ (N VY in 2D), POINT 1 and 2;
+!>   VARI_ELGA the DIS_CHOC internal variables V1 .. V10 (V4: 0 in contact, 2 open).
+!> Both points of a spring hold the same values (as Code_Aster's DIS_CHOC), stored once.
 module analysis_result
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -16,6 +20,9 @@ module analysis_result
     use deck_concept, only: concept_t
     use mesh_types, only: mesh_t
     use model_dof_numbering, only: dof_numbering_t, component_index
+    use mesh_types, only: cell_name
+    use element_spring_fields, only: SPRING_POINTS, DIS_CHOC_N_VARI, sief_component_index, &
+        vari_component_index
     implicit none
     private
 
@@ -36,12 +43,16 @@ module analysis_result
         integer(i4), allocatable :: spring_cell(:)     !< (n_springs) DIS_CHOC cells
         logical, allocatable :: spring_closed(:, :)    !< (n_springs, capacity)
         real(dp), allocatable :: spring_force(:, :)    !< (n_springs, capacity) normal force
+        integer(i4) :: spring_dim = 3                  !< 3 (DIS_T) or 2 (2D_DIS_T)
+        real(dp), allocatable :: spring_sief(:, :, :)  !< (3, n_springs, capacity) N VY VZ
+        real(dp), allocatable :: spring_vari(:, :, :)  !< (DIS_CHOC_N_VARI, n_springs, capacity)
     contains
         procedure :: type_name => result_type_name
         procedure :: summary => result_summary
     end type result_concept_t
 
-    public :: result_init, result_store, result_find, result_node_value
+    public :: result_init, result_store, result_find, result_node_value, &
+        result_store_spring_fields, result_cell_value, is_cell_field
 
 contains
 
@@ -87,6 +98,8 @@ contains
         if (present(spring_cell)) n_springs = size(spring_cell)
         allocate (res%spring_cell(n_springs), res%spring_closed(n_springs, capacity), &
             res%spring_force(n_springs, capacity))
+        allocate (res%spring_sief(3, n_springs, capacity), &
+            res%spring_vari(DIS_CHOC_N_VARI, n_springs, capacity), source=0.0_dp)
         if (present(spring_cell)) res%spring_cell = spring_cell
     end subroutine result_init
 
@@ -185,5 +198,70 @@ contains
                 ' is not stored (DEPL, FORC_NODA, REAC_NODA)')
         end select
     end subroutine result_node_value
+
+    !> Stores the spring fields of the last stored instant (spring_results).
+    !>  ndim : in, 3 (DIS_T) or 2 (2D_DIS_T)
+    !>  sief : in, (3, n_springs) N VY VZ;  vari : in, (DIS_CHOC_N_VARI, n_springs)
+    subroutine result_store_spring_fields(res, ndim, sief, vari)
+        type(result_concept_t), intent(inout) :: res
+        integer(i4), intent(in) :: ndim
+        real(dp), intent(in) :: sief(:, :), vari(:, :)
+        if (res%n_stored < 1) return
+        res%spring_dim = ndim
+        res%spring_sief(:, :, res%n_stored) = sief
+        res%spring_vari(:, :, res%n_stored) = vari
+    end subroutine result_store_spring_fields
+
+    !> True for the element fields (SIEF_ELGA, VARI_ELGA), read at a cell and a point.
+    pure logical function is_cell_field(field)
+        character(len=*), intent(in) :: field
+        is_cell_field = field == 'SIEF_ELGA' .or. field == 'VARI_ELGA'
+    end function is_cell_field
+
+    !> Value of component `component` of element field `field` (SIEF_ELGA: N VY VZ;
+    !> VARI_ELGA: V1 .. V10) at point `point` of cell `cell` for stored instant `index`.
+    !>  st : STATUS_MODEL_ERROR naming the cell when it holds no such field (the fields are
+    !>       stored for DIS_CHOC springs only), the point or the component when they do not
+    !>       exist there
+    subroutine result_cell_value(res, field, index, cell, point, component, value, st)
+        type(result_concept_t), intent(in) :: res
+        character(len=*), intent(in) :: field, component
+        integer(i4), intent(in) :: index, cell, point
+        real(dp), intent(out) :: value
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c
+        value = 0.0_dp
+        k = findloc(res%spring_cell, cell, dim=1)
+        if (k == 0) then
+            call set_error(st, STATUS_MODEL_ERROR, field // ' is not stored at cell ' // &
+                cell_name(res%mesh, cell) // ': parasol stores it for the DIS_CHOC ' // &
+                'springs of STAT_NON_LINE only (' // to_text(size(res%spring_cell, kind=i4)) &
+                // ' in this result)')
+            return
+        end if
+        if (point < 1 .or. point > SPRING_POINTS) then
+            call set_error(st, STATUS_MODEL_ERROR, 'cell ' // cell_name(res%mesh, cell) // &
+                ' has points 1 and 2 (the Gauss points of a SEG2 discrete sit at its ' // &
+                'nodes), not ' // to_text(point))
+            return
+        end if
+        select case (field)
+        case ('SIEF_ELGA')
+            c = sief_component_index(component, res%spring_dim)
+            if (c > 0) value = res%spring_sief(c, k, index)
+            if (c == 0) call set_error(st, STATUS_MODEL_ERROR, 'SIEF_ELGA of a ' // &
+                trim(merge('DIS_T   ', '2D_DIS_T', res%spring_dim == 3)) // &
+                ' spring has components ' // trim(merge('N VY VZ', 'N VY   ', &
+                res%spring_dim == 3)) // ', not ' // component)
+        case ('VARI_ELGA')
+            c = vari_component_index(component, DIS_CHOC_N_VARI)
+            if (c > 0) value = res%spring_vari(c, k, index)
+            if (c == 0) call set_error(st, STATUS_MODEL_ERROR, 'VARI_ELGA of DIS_CHOC ' // &
+                'has components V1 to V' // to_text(DIS_CHOC_N_VARI) // ', not ' // component)
+        case default
+            call set_error(st, STATUS_MODEL_ERROR, 'field ' // field // &
+                ' is not an element field (SIEF_ELGA, VARI_ELGA)')
+        end select
+    end subroutine result_cell_value
 
 end module analysis_result

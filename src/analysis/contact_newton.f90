@@ -1,14 +1,19 @@
-!> STAT_NON_LINE core: quasi-static time stepping with DIS_CHOC springs (design.md,
+!> STAT_NON_LINE core: quasi-static time stepping with DIS_CHOC / DIS_CONTACT springs (design.md,
 !> "STAT_NON_LINE"; Code_Aster U4.51.03 for the NEWTON/CONVERGENCE keywords).
 !>
 !> Per step (instant t+): imposed values and external forces at t+; then iterations
 !> u <- u + K^-1 (f_ext - f_int(u)) on the free equations, iteration 0 being the prediction.
-!> K is the "elastic" matrix (every DIS_CHOC spring closed and bilateral; assembled and
-!> factored once per analysis and reused) or the tangent at the current spring status.
+!> K is the "elastic" matrix (every contact spring closed and bilateral) or the tangent at
+!> the current spring status; there is one assembled matrix and one factor per analysis, so
+!> switching between the two refactors (drop marks the factor stale).
 !>   prediction: PREDICTION (default: the MATRICE choice, as Code_Aster); a tangent
-!>               prediction is rebuilt every REAC_INCR steps (1), otherwise reused;
+!>               prediction, assembled at the start of the step, is rebuilt every REAC_INCR
+!>               steps (1), otherwise reused;
 !>   corrections: MATRICE = ELASTIQUE: the elastic matrix; TANGENTE: rebuilt every REAC_ITER
 !>               iterations (REAC_ITER = 0, the default: the prediction's matrix is kept).
+!>   With DIS_CHOC springs every correction and every tangent prediction use the tangent
+!>   rebuilt at that point, whatever MATRICE/REAC_ITER/REAC_INCR say (Code_Aster,
+!>   MECANONLINE5_5); DIS_CONTACT springs follow NEWTON as given.
 !> Convergence: RESI_GLOB_RELA = max|f_ext - f_int| (free equations) / max(max|f_ext|,
 !> max|reactions|) <= tolerance (and RESI_GLOB_MAXI = the numerator <= its value if given)
 !> and no spring changed status in the last iteration. A zero denominator (no load) switches
@@ -21,7 +26,7 @@
 !> iterate whose tangent is free takes the elastic matrix for its correction. Plate and
 !> plane forces are accumulated from the increments (internal_forces_incremental).
 module contact_newton
-    use kinds, only: dp, i4, i8
+    use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_NO_CONVERGENCE, STATUS_NO_EQUILIBRIUM, &
         STATUS_SINGULAR
     use strings, only: to_text, real_e13, real_short
@@ -35,12 +40,16 @@ module contact_newton
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces, internal_forces_incremental, renumbering_lines, &
-        linear_cache_t
+        linear_cache_t, contact_history_t, contact_history_start, contact_history_update, &
+        is_dis_contact
     use assembly_loads, only: mark_imposed, impose_values, add_external_forces
     use analysis_result, only: result_concept_t, result_init, result_store
-    use analysis_log, only: analysis_log_t, log_add
+    use spring_results, only: store_spring_fields
+    use analysis_log, only: analysis_log_t, log_add, log_flush
     use run_deadline, only: deadline_t
     use number_limits, only: is_finite, MAX_BINARY_EXPONENT
+    use progress, only: progress_t, wall_seconds, progress_note, progress_update, &
+        progress_done, progress_context
     implicit none
     private
 
@@ -65,6 +74,8 @@ module contact_newton
     real(dp), parameter :: FREE_PIVOT_DIGITS = 12.0_dp
     !> Pivot classes (classify_pivots).
     integer(i4), parameter :: PIVOT_REGULAR = 0, PIVOT_ILL_CONDITIONED = 1, PIVOT_FREE = 2
+    !> Class of a matrix not factored yet (newton_state_t%elastic_kind).
+    integer(i4), parameter :: PIVOT_UNKNOWN = -1
     !> Consecutive iterations with a free tangent (and a residual that does not decrease)
     !> after which full Newton declares that the load cannot be carried.
     integer(i4), parameter :: FREE_ITERATIONS_MAX = 2
@@ -115,6 +126,8 @@ module contact_newton
         integer(i4) :: iter_glob_maxi = DEFAULT_ITER_GLOB_MAXI
         type(solver_options_t) :: factor           !< SOLVEUR: METHODE, RENUM, NPREC ...
         type(deadline_t) :: deadline               !< the run's time limit, polled per iteration
+        !> the run's reporter: a line per step, the work under way (null: nobody listens)
+        class(progress_t), pointer :: progress => null()
     end type newton_options_t
 
     !> One EXCIT occurrence: a char_meca's load set and an optional FONC_MULT of INST.
@@ -143,10 +156,17 @@ module contact_newton
         real(dp), allocatable :: flin(:)    !< plate/plane forces, accumulated (K_lin du)
         real(dp), allocatable :: du(:)      !< last increment (imposed and free equations)
         type(linear_cache_t) :: linear      !< plate/plane element matrices, built once
+        type(contact_history_t) :: history  !< DIS_CONTACT springs at the start of the step
         logical, allocatable :: closed(:)
         type(sym_matrix_t) :: matrix        !< the one assembled matrix, filled in place
         class(direct_solver_t), allocatable :: solver   !< its factor (analysed once)
         integer(i4) :: factored = MATRIX_NONE   !< which matrix the factor holds
+        !> pivot class of the elastic matrix, PIVOT_UNKNOWN until it is first factored (the
+        !> matrix is the same for the whole analysis: linear cells, every spring closed)
+        integer(i4) :: elastic_kind = PIVOT_UNKNOWN
+        !> DIS_CHOC springs present: every correction uses the tangent, rebuilt (Code_Aster)
+        logical :: forced_tangent = .false.
+        real(dp), allocatable :: u_start(:)  !< u at the start of the step (prediction point)
         integer(i4) :: current = MATRIX_NONE
         type(held_t) :: held                !< equations held with the check off
         integer(i4) :: factorizations = 0
@@ -193,6 +213,10 @@ contains
         logical, allocatable :: imposed(:)
         integer(i4) :: k, step, n_eq
         n_eq = s%dofs%n_equations
+        call progress_note(options%progress, 'STAT_NON_LINE: ' // to_text(n_eq) // &
+            ' equations, ' // to_text(count(s%choc, kind=i4)) // ' DIS_CHOC springs, ' // &
+            to_text(size(times, kind=i4) - 1) // ' step(s) from INST ' // &
+            real_short(times(1)) // ' to ' // real_short(times(size(times))))
         allocate (imposed(n_eq), source=.false.)
         do k = 1, size(excit)
             call mark_imposed(s, excit(k)%load, imposed, st)
@@ -204,16 +228,31 @@ contains
         call sym_move(map%pattern, state%matrix)
         call open_solver(options%factor, state%matrix, state%solver, log, st)
         if (st%failed()) return
-        call log_add(log, to_text(size(map%springs)) // ' DIS_CHOC springs')
+        state%solver%progress => options%progress
+        call log_add(log, to_text(size(map%springs)) // ' ' // spring_law(s, map) // ' springs')
         allocate (state%u(n_eq), state%fint(n_eq), state%fext(n_eq), state%flin(n_eq), &
             state%du(n_eq), source=0.0_dp)
         allocate (state%closed(size(map%springs)), state%fn(size(map%springs)))
         state%nprec = options%factor%nprec
-        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st)
+        call contact_history_start(s, map, state%history, st)
+        if (st%failed()) return
+        call warn_unpressed_dis_contact(s, map, state%history, log)
+        state%forced_tangent = .false.
+        do k = 1, size(map%springs)
+            if (.not. is_dis_contact(s, map%springs(k))) state%forced_tangent = .true.
+        end do
+        if (state%forced_tangent .and. (options%matrix_elastic .or. options%reac_iter /= 1)) &
+            call log_add(log, 'DIS_CHOC springs: the corrections use the tangent matrix, ' // &
+            'rebuilt at every iteration (REAC_ITER = 1), whatever NEWTON/MATRICE and ' // &
+            'REAC_ITER say, as Code_Aster does (its message MECANONLINE5_5)')
+        call internal_forces(s, map, state%u, state%fint, state%closed, state%fn, st, &
+            state%history)
         if (st%failed()) return
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
             state%closed, state%fn)
+        call store_spring_fields(s, state%u, res, st)      ! SIEF_ELGA, VARI_ELGA
+        if (st%failed()) return
         n_eq = int(size(times), i4) - 1
         allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
             summary%resi_rela(n_eq), summary%resi_maxi(n_eq))
@@ -223,6 +262,8 @@ contains
             if (st%failed()) return
             call result_store(res, step, times(step + 1), state%u, state%fint, &
                 reactions(map, state), state%closed, state%fn)
+            call store_spring_fields(s, state%u, res, st)
+            if (st%failed()) return
         end do
     end subroutine stat_non_line
 
@@ -296,20 +337,20 @@ contains
         type(status_t), intent(out) :: st
         logical, allocatable :: start(:), history(:, :)
         real(dp), allocatable :: r(:), resi_history(:)
-        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds
+        real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start
         integer(i4) :: iter, changed, use, repeat_of
         character(len=:), allocatable :: seen
-        integer(i8) :: t0, t1, rate
         logical :: zero_load, converged, said_zero
         type(step_pivots_t) :: piv
+        step_start = wall_seconds()
         call log_add(log, '')
         call log_add(log, 'INST ' // real_e13(t) // ' (step ' // to_text(step) // ')')
         call log_add(log, ' ITER  RESI_GLOB_RELA  RESI_GLOB_MAXI  MATRIX                ' // &
             'CLOSED CHANGED  TIME(s)')
-        state%du = state%u
+        state%u_start = state%u
         call loads_at(s, excit, t, state%u, state%fext, st)
         if (st%failed()) return
-        state%du = state%u - state%du
+        state%du = state%u - state%u_start
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
             resi_history(0:options%iter_glob_maxi), r(map%n_free))
@@ -317,35 +358,51 @@ contains
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
+        ! Prediction (Code_Aster nmprta/nsassp): the imposed-value increments enter through
+        ! the prediction matrix, K du = f_ext(t+) - f_int(t-) - K du_imposed, i.e. the springs
+        ! are linearised about the start of the step (doc/analysis.md, "Prediction").
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
-            state%closed, state%fn, st, state%linear)
+            state%closed, state%fn, st, state%linear, u_ref=state%u_start, &
+            elastic_ref=prediction_is_elastic(options), history=state%history)
         if (st%failed()) return
         do iter = 0, options%iter_glob_maxi
             call options%deadline%check('STAT_NON_LINE at INST ' // real_e13(t) // &
                                         ', Newton iteration ' // to_text(iter), st)
             if (st%failed()) return
-            call system_clock(t0, rate)
+            t0 = wall_seconds()
+            call progress_context(options%progress, 'STAT_NON_LINE, INST ' // real_short(t) &
+                // ' (step ' // to_text(step) // '/' // to_text(size(summary%inst)) // &
+                '), iteration ' // to_text(iter))
             use = choose_matrix(options, iter, step, state)
-            call matrix_for_iteration(s, map, state, use, options%factor, t, log, piv, st)
+            call matrix_for_iteration(s, map, state, use, iter == 0, options%factor, t, log, &
+                piv, st)
             if (st%failed()) return
             r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
-            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+            call progress_update(options%progress, 'solve')
+            call solve_correction(s, map, state, use, iter == 0, options%factor, r, t, log, &
+                piv, st)
             if (st%failed()) return
+            if (piv%free_now) then
+                piv%n_free = piv%n_free + 1
+            else
+                piv%n_free = 0
+            end if
+            call progress_update(options%progress, 'internal forces')
             state%du = 0.0_dp
             state%du(map%free_to_eq) = r
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + r
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st, state%linear)
+                state%fint, state%closed, state%fn, st, state%linear, history=state%history)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
             resi_history(iter) = resi_maxi
-            call system_clock(t1)
-            seconds = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
+            seconds = wall_seconds() - t0
             call log_add(log, iteration_row(iter, resi_rela, resi_maxi, zero_load, use, &
                 state%refactored, count(state%closed, kind=i4), changed, seconds))
+            call log_flush(log)             ! the .mess shows each row as it comes
             if (zero_load .and. .not. said_zero) then
                 call log_add(log, '  no load and no reaction: RESI_GLOB_RELA is undefined,' &
                     // ' absolute criterion RESI_GLOB_MAXI <= ' // real_e13(absolute_tol( &
@@ -392,6 +449,7 @@ contains
                 if (st%failed()) return
             end if
         end if
+        call contact_history_update(s, map, state%u, state%fn, state%history)
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
             to_text(count(state%closed, kind=i4)) // ' of ' // to_text(size(state%closed)) // &
@@ -400,6 +458,14 @@ contains
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.false.))
+        seconds = wall_seconds() - step_start
+        call log_add(log, '  wall time of the step: ' // seconds_text(seconds) // ' s')
+        call log_flush(log)
+        call progress_done(options%progress)
+        call progress_note(options%progress, step_line(t, step, size(summary%inst, kind=i4), &
+            iter, resi_rela, zero_load, count(state%closed, kind=i4), &
+            count(state%closed .neqv. start, kind=i4), size(state%closed, kind=i4), &
+            state%factorizations, seconds))
         summary%n_steps = step
         summary%max_digits_lost = state%pivots%max_digits_lost
         if (allocated(state%pivots%digits_at)) summary%digits_at = state%pivots%digits_at
@@ -434,24 +500,37 @@ contains
             resi_maxi <= options%resi_glob_maxi
     end function criteria_met
 
+    !> The prediction's matrix: PREDICTION, or MATRICE when PREDICTION is not given.
+    pure logical function prediction_is_elastic(options) result(elastic)
+        type(newton_options_t), intent(in) :: options
+        elastic = options%matrix_elastic
+        if (options%prediction_given) elastic = options%prediction_elastic
+    end function prediction_is_elastic
+
     !> Which matrix iteration `iter` of step `step` uses; marks a tangent to rebuild by
-    !> dropping it (factor_and_diagnose then assembles and factors).
+    !> dropping it (factor_and_diagnose then assembles and factors). With DIS_CHOC springs
+    !> (state%forced_tangent) Code_Aster rebuilds the tangent at every correction and every
+    !> tangent prediction, whatever MATRICE, REAC_ITER and REAC_INCR say (NonLinear_module:
+    !> getMatrTypeCorr turns the correction matrix to TANGENTE, isMatrUpdate forces the
+    !> update; message MECANONLINE5_5).
     integer(i4) function choose_matrix(options, iter, step, state) result(use)
         type(newton_options_t), intent(in) :: options
         integer(i4), intent(in) :: iter, step
         type(newton_state_t), intent(inout) :: state
-        logical :: elastic
         if (iter == 0) then
-            elastic = options%matrix_elastic
-            if (options%prediction_given) elastic = options%prediction_elastic
-            if (elastic) then
+            if (prediction_is_elastic(options)) then
                 use = MATRIX_ELASTIC
             else
                 use = MATRIX_TANGENT
-                if (options%reac_incr > 0) then
+                if (state%forced_tangent) then
+                    call drop(state, MATRIX_TANGENT)
+                else if (options%reac_incr > 0) then
                     if (mod(step - 1, options%reac_incr) == 0) call drop(state, MATRIX_TANGENT)
                 end if
             end if
+        else if (state%forced_tangent) then
+            use = MATRIX_TANGENT
+            call drop(state, MATRIX_TANGENT)
         else if (options%matrix_elastic) then
             use = MATRIX_ELASTIC
         else
@@ -469,44 +548,76 @@ contains
     !> The matrix of one iteration, with the pivot rules of doc/analysis.md:
     !>  - tangent with springs open and a FREE pivot (an overshooting iterate, or no
     !>    equilibrium): this correction uses the elastic matrix (every spring closed,
-    !>    regular when the supports exist) and piv%n_free counts such iterations;
+    !>    regular when the supports exist) and piv%free_now says so; unless the elastic
+    !>    matrix is free too: then the free motion is the structure's own (a plate's
+    !>    in-plane motion on vertical springs), not the open springs', and the tangent is
+    !>    used with its pivot reported like any other. The elastic matrix is the same for the
+    !>    whole analysis, so its class is learnt once (state%elastic_kind); with one factor
+    !>    per analysis, learning it when it turns out free costs one refactorization of the
+    !>    tangent;
     !>  - tangent with springs open and an ILL-CONDITIONED pivot: used; judged at
     !>    convergence (newton_step) if the converged status is the same;
     !>  - otherwise a flagged matrix goes to report_pivots (STATUS_SINGULAR or a warning).
-    !> With the singularity check off (METHODE='MUMPS', NPREC < 0) free pivots are held by
-    !> the solver and judged after the solve (solve_held), and nothing else is reported.
-    !>  use : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
-    subroutine matrix_for_iteration(s, map, state, use, options, t, log, piv, st)
+    !> With the singularity check off (METHODE='MUMPS', NPREC < 0) the solver holds the free
+    !> pivots and nothing is reported here: a free tangent (held equations) with springs open
+    !> follows the first rule all the same, except that when the elastic matrix holds
+    !> equations too, the load decides after the solve (solve_correction): the structure's
+    !> own free motion is unloaded, the overshoot's is loaded.
+    !>  use        : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
+    !>  prediction : in, iteration 0: a tangent is assembled at the start of the step
+    subroutine matrix_for_iteration(s, map, state, use, prediction, options, t, log, piv, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(inout) :: use
+        logical, intent(in) :: prediction
         type(solver_options_t), intent(in) :: options
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(step_pivots_t), intent(inout) :: piv
         type(status_t), intent(out) :: st
-        type(pivot_diagnosis_t) :: diag
-        logical :: open_springs
-        call factor_and_diagnose(s, map, state, use, t, log, diag, st)
+        type(pivot_diagnosis_t) :: diag, elastic_diag, again
+        logical :: open_springs, tangent_factored, check_off
+        call factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
         if (st%failed()) return
         open_springs = .not. all(state%closed)
+        check_off = check_disabled(options)
         piv%free_now = .false.
-        if (check_disabled(options)) then
-            piv%n_free = 0
-            return
-        end if
         if (diag%kind == PIVOT_FREE .and. use == MATRIX_TANGENT .and. open_springs) then
-            call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
-                to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
-                'correction with the elastic matrix')
-            call drop(state, MATRIX_TANGENT)
-            piv%free_now = .true.
-            piv%free_where = diag%where
-            use = MATRIX_ELASTIC
-            call factor_and_diagnose(s, map, state, use, t, log, diag, st)
-            if (st%failed()) return
-            if (diag%kind /= PIVOT_REGULAR) call report_pivots(diag, options, t, log, st)
+            tangent_factored = state%refactored
+            if (state%elastic_kind == PIVOT_UNKNOWN) then
+                call factor_and_diagnose(s, map, state, MATRIX_ELASTIC, prediction, t, log, &
+                    elastic_diag, st)
+                if (st%failed()) return
+                state%refactored = tangent_factored .or. state%refactored
+            end if
+            if (state%elastic_kind == PIVOT_FREE) then
+                if (.not. check_off) call report_pivots(diag, options, t, log, st)
+                if (st%failed()) return
+                ! the factor may hold the elastic matrix just classified: back to the tangent
+                tangent_factored = state%refactored
+                call factor_and_diagnose(s, map, state, MATRIX_TANGENT, prediction, t, log, &
+                    again, st)
+                state%refactored = tangent_factored .or. state%refactored
+            else
+                call log_add(log, '  tangent matrix free at ' // diag%where // ' with ' // &
+                    to_text(count(.not. state%closed, kind=i4)) // ' springs open: ' // &
+                    'correction with the elastic matrix')
+                call drop(state, MATRIX_TANGENT)
+                piv%free_now = .true.
+                piv%free_where = diag%where
+                use = MATRIX_ELASTIC
+                if (state%factored /= MATRIX_ELASTIC) then
+                    call factor_and_diagnose(s, map, state, use, prediction, t, log, &
+                        elastic_diag, st)
+                    if (st%failed()) return
+                    state%refactored = tangent_factored .or. state%refactored
+                end if
+                if (elastic_diag%kind /= PIVOT_REGULAR .and. .not. check_off) &
+                    call report_pivots(elastic_diag, options, t, log, st)
+            end if
+        else if (check_off) then
+            ! nothing else is reported: held equations are judged after the solve
         else if (diag%kind == PIVOT_ILL_CONDITIONED .and. use == MATRIX_TANGENT .and. &
                  open_springs) then
             call log_add(log, '  tangent matrix ill-conditioned at ' // diag%where // &
@@ -515,11 +626,6 @@ contains
             piv%ill_closed = state%closed
         else if (diag%kind /= PIVOT_REGULAR) then
             call report_pivots(diag, options, t, log, st)
-        end if
-        if (piv%free_now) then
-            piv%n_free = piv%n_free + 1
-        else
-            piv%n_free = 0
         end if
     end subroutine matrix_for_iteration
 
@@ -532,12 +638,16 @@ contains
 
     !> Assembles and factors the matrix `use` unless the solver's factor already holds it
     !> (one matrix and one factor per analysis: switching between the elastic and the
-    !> tangent matrix refactors); diag is PIVOT_REGULAR when the factor was reused.
-    subroutine factor_and_diagnose(s, map, state, use, t, log, diag, st)
+    !> tangent matrix refactors); diag is PIVOT_REGULAR when the factor was reused
+    !> (state%elastic_kind keeps the class of the elastic matrix). A prediction's tangent is
+    !> the one at the start of the step, before the imposed-value increments (Code_Aster
+    !> nmprta: zero increment).
+    subroutine factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
         integer(i4), intent(in) :: use
+        logical, intent(in) :: prediction
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(pivot_diagnosis_t), intent(out) :: diag
@@ -545,8 +655,14 @@ contains
         state%refactored = .false.
         if (use == state%factored) return
         state%factored = MATRIX_NONE
-        call assemble_and_factor(s, map, state%u, use == MATRIX_ELASTIC, state%matrix, &
-            state%solver, diag, st, state%linear, state%held, log)
+        if (use == MATRIX_TANGENT .and. prediction) then
+            call assemble_and_factor(s, map, state%u_start, .false., state%matrix, &
+                state%solver, diag, st, state%linear, state%history, state%held, log)
+        else
+            call assemble_and_factor(s, map, state%u, use == MATRIX_ELASTIC, state%matrix, &
+                state%solver, diag, st, state%linear, state%history, state%held, log)
+        end if
+        if (st%ok() .and. use == MATRIX_ELASTIC) state%elastic_kind = diag%kind
         if (st%failed()) return
         state%factored = use
         call accumulate_pivots(diag, state%pivots)
@@ -604,12 +720,66 @@ contains
             dp) / 1.0e6_dp) // ' MB estimated')
     end subroutine open_solver
 
+    !> Solves one correction with the factor (solve_held). With the singularity check off
+    !> (METHODE='MUMPS', NPREC < 0) and a tangent kept although it holds equations with
+    !> springs open (matrix_for_iteration: the elastic matrix holds equations too, e.g.
+    !> SSNL130 A's in-plane plate on vertical springs), the load tells the free motions
+    !> apart: the structure's own is unloaded, while a loaded held equation is the
+    !> overshooting iterate (or no equilibrium) of the pivot rules, and this correction is
+    !> solved again with the elastic matrix, as with the check on (piv%free_now counts it
+    !> for check_no_equilibrium). Without that, the overshoot would stop as a loaded free
+    !> equation. A loaded held equation of the elastic matrix stops the analysis there.
+    !>  use : inout, MATRIX_TANGENT may become MATRIX_ELASTIC
+    !>  r   : inout, right-hand side (free equations) in, solution out
+    subroutine solve_correction(s, map, state, use, prediction, options, r, t, log, piv, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        integer(i4), intent(inout) :: use
+        logical, intent(in) :: prediction
+        type(solver_options_t), intent(in) :: options
+        real(dp), intent(inout) :: r(:)
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(step_pivots_t), intent(inout) :: piv
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: rhs(:)
+        character(len=:), allocatable :: loaded_at
+        type(pivot_diagnosis_t) :: diag
+        logical :: tangent_factored
+        if (.not. (check_disabled(options) .and. use == MATRIX_TANGENT .and. &
+                   .not. all(state%closed))) then
+            call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+            return
+        end if
+        rhs = r
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st, &
+            loaded_at)
+        if (st%failed() .or. .not. allocated(loaded_at)) return
+        call log_add(log, '  tangent matrix free at ' // loaded_at // ' with ' // &
+            to_text(count(.not. state%closed, kind=i4)) // ' springs open: correction ' // &
+            'with the elastic matrix')
+        tangent_factored = state%refactored
+        call drop(state, MATRIX_TANGENT)
+        piv%free_now = .true.
+        piv%free_where = loaded_at
+        use = MATRIX_ELASTIC
+        call factor_and_diagnose(s, map, state, use, prediction, t, log, diag, st)
+        if (st%failed()) return
+        state%refactored = tangent_factored .or. state%refactored
+        r = rhs
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st)
+    end subroutine solve_correction
+
     !> Solves with the factor; with held equations (check off) the penalty that holds each
     !> one must carry (almost) nothing: then the equation is free and unloaded, solved with
     !> zero displacement and named once in the .mess; otherwise a load drives a free
     !> motion and STATUS_SINGULAR names its node and component.
     !>  r : inout, right-hand side (free equations) in, solution out
-    subroutine solve_held(s, map, matrix, solver, held, r, t, log, st)
+    !>  loaded_at : out, optional: when given, a loaded held equation is not an error; it is
+    !>              named here (node, component, load carried) and r is zeroed; unallocated
+    !>              when no held equation is loaded
+    subroutine solve_held(s, map, matrix, solver, held, r, t, log, st, loaded_at)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(sym_matrix_t), intent(in) :: matrix
@@ -619,6 +789,7 @@ contains
         real(dp), intent(in) :: t
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
+        character(len=:), allocatable, intent(out), optional :: loaded_at
         real(dp), allocatable :: rhs(:), ax(:)
         real(dp) :: scale, carried, roundoff
         integer(i4) :: k, eq, worst
@@ -642,7 +813,13 @@ contains
                 worst = eq
             end if
         end do
-        if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff)) then
+        if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff) .and. &
+            present(loaded_at)) then
+            loaded_at = describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // &
+                ' (held, carrying ' // real_e13(carried) // ' against ' // real_e13(scale) // ')'
+            r = 0.0_dp
+            return
+        else if (worst > 0 .and. carried > max(HELD_LOAD_RATIO * scale, roundoff)) then
             call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': singular ' // &
                 'matrix at ' // describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // &
                 ': the equation is free (SOLVEUR/NPREC < 0 switched the singularity check ' // &
@@ -747,10 +924,11 @@ contains
     !> and classifies its pivots (classify_pivots).
     !>  diag  : out, PIVOT_REGULAR, PIVOT_ILL_CONDITIONED or PIVOT_FREE, and where
     !>  cache : in, optional, the plate/plane matrices (assemble_stiffness)
+    !>  history : in, optional, DIS_CONTACT state at the start of the step
     !>  held  : inout, optional, the equations the factor holds (check off)
     !>  log   : inout, optional, gets the factorization line (method, ordering, size, time)
-    subroutine assemble_and_factor(s, map, u, elastic, matrix, solver, diag, st, cache, held, &
-                                   log)
+    subroutine assemble_and_factor(s, map, u, elastic, matrix, solver, diag, st, cache, &
+                                   history, held, log)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -760,15 +938,20 @@ contains
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         type(linear_cache_t), intent(in), optional :: cache
+        type(contact_history_t), intent(in), optional :: history
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
-        call assemble_stiffness(s, map, u, elastic, matrix, st, cache)
+        call progress_update(solver%progress, 'assembly of the ' // &
+            trim(merge('elastic', 'tangent', elastic)) // ' matrix')
+        call assemble_stiffness(s, map, u, elastic, matrix, st, cache, history)
         if (st%failed()) return
         largest = 0.0_dp
         if (matrix%n > 0) largest = maxval(abs(sym_diagonal(matrix)))
+        call progress_update(solver%progress, 'factorization (' // &
+            trim(solver%options%method) // ')')
         call solver%factor(matrix, report, st)
         if (st%failed()) return
         if (present(log)) call log_add(log, factorization_line(report))
@@ -807,6 +990,7 @@ contains
     !> the largest diagonal term (round-off level: a free motion); PIVOT_ILL_CONDITIONED
     !> when pivots only exceed NPREC; PIVOT_REGULAR otherwise. On return diag%n_flagged
     !> holds the equation to name (free numbering) and diag%where the pivot text after it.
+    !> With the check off (check_disabled) the solver reports only the pivots it held.
     subroutine classify_pivots(report, pivots, largest, options, diag)
         type(factor_report_t), intent(in) :: report
         real(dp), intent(in) :: pivots(:), largest
@@ -837,6 +1021,7 @@ contains
         diag%n_flagged = eq
         diag%where = ' (pivot lost ' // real_digits(max(report%max_digits_lost, 0.0_dp)) // &
             ' digits, NPREC = ' // nprec_text(options) // ')'
+        if (check_disabled(options)) diag%where = ' (pivot held: NPREC < 0, check off)'
     end subroutine classify_pivots
 
     !> A flagged matrix that is not an iterate's overshoot: STATUS_SINGULAR (STOP_SINGULIER
@@ -900,16 +1085,17 @@ contains
             ! ELASTIQUE never factors the tangent: a stalled residual with a stable contact
             ! status is no equilibrium if that status leaves the structure free
             call assemble_and_factor(s, map, state%u, .false., state%matrix, state%solver, &
-                diag, st, state%linear, state%held)
+                diag, st, state%linear, state%history, state%held)
             state%factored = MATRIX_NONE
             if (st%ok()) state%factored = MATRIX_TANGENT
             if (st%failed()) return
-            stays_free = diag%kind == PIVOT_FREE
+            ! free as the elastic matrix is: the structure's own motion, not the springs'
+            stays_free = diag%kind == PIVOT_FREE .and. state%elastic_kind /= PIVOT_FREE
         end if
         if (.not. ((all_open .and. stalled) .or. stays_free)) return
         text = 'INST ' // real_e13(t) // ': no equilibrium: ' // &
             to_text(count(.not. state%closed, kind=i4)) // ' of ' // &
-            to_text(size(state%closed)) // ' DIS_CHOC springs are open (' // &
+            to_text(size(state%closed)) // ' ' // spring_law(s, map) // ' springs are open (' // &
             spring_group(s, map) // ') and the structure is left free'
         if (allocated(piv%free_where)) then
             text = text // ': rigid motion at ' // piv%free_where
@@ -917,7 +1103,7 @@ contains
             ! ELASTIQUE never factors the tangent: factor it once here to name the motion
             if (diag%kind == PIVOT_REGULAR) then
                 call assemble_and_factor(s, map, state%u, .false., state%matrix, &
-                    state%solver, diag, st, state%linear, state%held)
+                    state%solver, diag, st, state%linear, state%history, state%held)
                 state%factored = MATRIX_NONE
                 if (st%ok()) state%factored = MATRIX_TANGENT
             end if
@@ -928,7 +1114,47 @@ contains
             real_e13(resi_maxi) // ' N no longer decreases')
     end subroutine check_no_equilibrium
 
-    !> The cell group made of exactly the DIS_CHOC springs ("group G"), else the first
+    !> A DIS_CONTACT spring that does not start pressed (DIST_1 + DIST_2 <= its length, so
+    !> F- = 0 before the first step) never gets a force in a static analysis: Code_Aster's
+    !> law only follows a compression it already has (element_dis_contact). parasol computes
+    !> the same, and says so once in the .mess, naming the first such spring.
+    subroutine warn_unpressed_dis_contact(s, map, history, log)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(contact_history_t), intent(in) :: history
+        type(analysis_log_t), intent(inout) :: log
+        integer(i4) :: k, n, first
+        n = 0
+        first = 0
+        do k = 1, size(map%springs)
+            if (.not. is_dis_contact(s, map%springs(k))) cycle
+            if (history%fn0(k) < 0.0_dp) cycle
+            n = n + 1
+            if (first == 0) first = map%springs(k)
+        end do
+        if (n == 0) return
+        call log_add(log, 'warning: ' // to_text(n) // ' DIS_CONTACT spring(s) (first ' // &
+            cell_name(s%mesh, first) // ') do not start pressed (DIST_1 + DIST_2 <= their ' // &
+            'length): in a static analysis the DIS_CONTACT law, as Code_Aster integrates it, ' // &
+            'never gives them a force; DIS_CHOC, or DIST_1 + DIST_2 above the length, would')
+    end subroutine warn_unpressed_dis_contact
+
+    !> The springs' law for messages: DIS_CHOC, DIS_CONTACT, or "contact" when mixed.
+    function spring_law(s, map) result(text)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        character(len=:), allocatable :: text
+        integer(i4) :: k, n_contact
+        n_contact = 0
+        do k = 1, size(map%springs)
+            if (is_dis_contact(s, map%springs(k))) n_contact = n_contact + 1
+        end do
+        text = 'DIS_CHOC'
+        if (n_contact == size(map%springs) .and. n_contact > 0) text = 'DIS_CONTACT'
+        if (n_contact > 0 .and. n_contact < size(map%springs)) text = 'contact'
+    end function spring_law
+
+    !> The cell group made of exactly the contact springs ("group G"), else the first
     !> spring's name ("from cell C").
     function spring_group(s, map) result(text)
         type(structure_t), intent(in) :: s
@@ -1010,6 +1236,37 @@ contains
         write (buf, '(f5.1)') x
         text = trim(adjustl(buf))
     end function real_digits
+
+    !> The terminal line of a finished step: INST, iterations, residual, springs closed and
+    !> changed in the step, factorizations, wall time.
+    function step_line(t, step, n_steps, iterations, resi_rela, zero_load, n_closed, &
+                       n_changed, n_springs, factorizations, seconds) result(text)
+        real(dp), intent(in) :: t, resi_rela, seconds
+        integer(i4), intent(in) :: step, n_steps, iterations, n_closed, n_changed, n_springs, &
+            factorizations
+        logical, intent(in) :: zero_load
+        character(len=:), allocatable :: text
+        text = 'INST ' // real_short(t) // ' (step ' // to_text(step) // '/' // &
+            to_text(n_steps) // '): ' // to_text(iterations) // ' iteration(s), '
+        if (zero_load) then
+            text = text // 'no load (absolute criterion)'
+        else
+            text = text // 'RESI_GLOB_RELA ' // real_short(resi_rela)
+        end if
+        text = text // ', ' // to_text(n_closed) // ' of ' // to_text(n_springs) // &
+            ' springs closed (' // to_text(n_changed) // ' changed), ' // &
+            to_text(factorizations) // ' factorization(s), ' // seconds_text(seconds) // ' s'
+    end function step_line
+
+    !> Seconds with three decimals (the TIME column's precision).
+    function seconds_text(seconds) result(text)
+        real(dp), intent(in) :: seconds
+        character(len=:), allocatable :: text
+        character(len=24) :: buf
+        write (buf, '(f0.3)') max(seconds, 0.0_dp)
+        text = trim(buf)
+        if (text(1:1) == '.') text = '0' // text
+    end function seconds_text
 
     !> One row of the Newton table.
     function iteration_row(iter, resi_rela, resi_maxi, zero_load, use, refactored, n_closed, &

@@ -18,6 +18,7 @@ module linear_static
         open_solver, log_numbering, solve_held, held_t
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
+    use progress, only: progress_t, progress_note
     implicit none
     private
 
@@ -39,7 +40,8 @@ contains
     !>  res     : out, evol_elas with DEPL, FORC_NODA, REAC_NODA
     !>  log     : inout, .mess lines
     !>  st      : out, STATUS_MODEL_ERROR with DIS_CHOC cells, STATUS_SINGULAR, load errors
-    subroutine meca_statique(s, excit, times, options, res, log, st)
+    !>  progress : in, optional, the run's reporter (a line when it starts, the factorization)
+    subroutine meca_statique(s, excit, times, options, res, log, st, progress)
         type(structure_t), intent(in) :: s
         type(excitation_t), intent(in) :: excit(:)
         real(dp), intent(in) :: times(:)
@@ -47,6 +49,7 @@ contains
         type(result_concept_t), intent(out) :: res
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
+        class(progress_t), pointer, intent(in), optional :: progress
         type(assembly_map_t) :: map
         type(sym_matrix_t) :: matrix
         class(direct_solver_t), allocatable :: solver
@@ -60,6 +63,8 @@ contains
             return
         end if
         n_eq = s%dofs%n_equations
+        if (present(progress)) call progress_note(progress, 'MECA_STATIQUE: ' // &
+            to_text(n_eq) // ' equations, ' // to_text(size(times, kind=i4)) // ' instant(s)')
         allocate (imposed(n_eq), source=.false.)
         do k = 1, size(excit)
             call mark_imposed(s, excit(k)%load, imposed, st)
@@ -70,6 +75,7 @@ contains
         call log_numbering(map, options, log)
         call sym_move(map%pattern, matrix)
         call open_solver(options, matrix, solver, log, st)
+        if (present(progress) .and. st%ok()) solver%progress => progress
         if (st%failed()) return
         allocate (u(n_eq), fint(n_eq), fext(n_eq), r(map%n_free), closed(0), fn(0))
         u = 0.0_dp

@@ -1,27 +1,28 @@
 !> Loads of a static analysis on the original equations: which equations DDL_IMPO imposes,
 !> their values at an instant, and the external force vector at an instant (FORCE_NODALE
-!> at nodes; FORCE_COQUE / PRES_REP / FORCE_CONTOUR integrated at the element's load points
-!> with the functions evaluated there, design.md "Loads"). Every value is multiplied by the
-!> FONC_MULT factor of its EXCIT occurrence (evaluated by the caller at the instant).
+!> at nodes; FORCE_COQUE / PRES_REP known at the plate's nodes and FORCE_CONTOUR at the
+!> edge's Gauss points, as Code_Aster discretises them: element_loads, design.md "Loads").
+!> Every value is multiplied by the FONC_MULT factor of its EXCIT occurrence (evaluated by
+!> the caller at the instant).
 module assembly_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use mesh_types, only: cell_label, node_name
+    use strings, only: real_e13, to_text
+    use mesh_types, only: cell_label, node_name, cell_measure
     use model_types, only: is_plate, is_plane_edge
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS
     use model_loads, only: load_set_t, load_item_t, load_value_at, LOAD_DDL_IMPO, &
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
         LOAD_KIND_NAMES, load_locate, load_slot_name
     use number_limits, only: product_fits
-    use strings, only: to_text
-    use element_loads, only: plate_load_points, plate_pressure_forces, plate_surface_forces, &
-        edge_load_points, edge_line_forces, PLATE_LOAD_MAX_POINTS, EDGE_POINT_COUNT, &
-        plate_load_point_count
+    use element_loads, only: plate_nodal_pressure, plate_nodal_forces, edge_load_points, &
+        edge_line_forces, EDGE_POINT_COUNT
     use assembly_system, only: structure_t
     implicit none
     private
 
-    public :: mark_imposed, impose_values, add_external_forces, record_imposed
+    public :: mark_imposed, impose_values, add_external_forces, check_imposed_owners, &
+        record_imposed
 
     !> Relative difference under which two values imposed on one component are the same.
     real(dp), parameter :: SAME_IMPOSED_VALUE = 1.0e-12_dp
@@ -44,6 +45,7 @@ contains
                     do comp = 1, N_COMPONENTS
                         if (.not. item%values(comp)%given) cycle
                         eq = s%dofs%equation(comp, item%nodes(i))
+                        if (eq <= 0 .and. item%blocage) cycle
                         if (eq <= 0) then
                             call set_error(st, STATUS_MODEL_ERROR, 'DDL_IMPO: node ' // &
                                 node_name(s%mesh, item%nodes(i)) // ' has no component ' // &
@@ -56,6 +58,49 @@ contains
             end associate
         end do
     end subroutine mark_imposed
+
+    !> Records which load imposes each equation and refuses an equation imposed by a
+    !> kinematic load (AFFE_CHAR_CINE) and by another load: Code_Aster cannot eliminate an
+    !> equation and dualise it too (nor combine two eliminations of it), and the values could
+    !> differ. Repeats inside one load are left to that load (the last value wins).
+    !>  load  : in, the load set of EXCIT occurrence `which`
+    !>  owner : inout, (n_equations) the EXCIT occurrence imposing each equation (0: none);
+    !>          negative for a kinematic load
+    !>  st    : out, STATUS_MODEL_ERROR naming the node and component
+    subroutine check_imposed_owners(s, load, which, owner, st)
+        type(structure_t), intent(in) :: s
+        type(load_set_t), intent(in) :: load
+        integer(i4), intent(in) :: which
+        integer(i4), intent(inout) :: owner(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, i, comp, eq, me
+        me = which
+        if (load%kinematic) me = -which
+        do k = 1, load%n_items
+            if (load%items(k)%kind /= LOAD_DDL_IMPO) cycle
+            associate (item => load%items(k))
+                do i = 1, size(item%nodes)
+                    do comp = 1, N_COMPONENTS
+                        if (.not. item%values(comp)%given) cycle
+                        eq = s%dofs%equation(comp, item%nodes(i))
+                        if (eq <= 0) cycle
+                        if (owner(eq) /= 0 .and. owner(eq) /= me .and. &
+                            (owner(eq) < 0 .or. me < 0)) then
+                            call set_error(st, STATUS_MODEL_ERROR, 'node ' // &
+                                node_name(s%mesh, item%nodes(i)) // ' component ' // &
+                                trim(COMPONENT_NAMES(comp)) // ' is imposed by EXCIT ' // &
+                                'occurrences ' // to_text(abs(owner(eq))) // ' and ' // &
+                                to_text(which) // ', one of them an AFFE_CHAR_CINE: ' // &
+                                'an eliminated value must be imposed once (remove it from ' // &
+                                'one load)')
+                            return
+                        end if
+                        owner(eq) = me
+                    end do
+                end do
+            end associate
+        end do
+    end subroutine check_imposed_owners
 
     !> Writes the DDL_IMPO values at time t (times factor) into u.
     subroutine impose_values(s, load, t, factor, u, st)
@@ -201,7 +246,10 @@ contains
         end do
     end subroutine nodal_forces
 
-    !> FORCE_COQUE / PRES_REP on one plate cell: PRES (force = -PRES n) or FX/FY/FZ.
+    !> FORCE_COQUE / PRES_REP on one plate cell: PRES (force = -PRES n) or FX/FY/FZ, known
+    !> at the cell's nodes (element_loads: Code_Aster's DKT/DKQ discretisation). A PRES_REP
+    !> function is refused where it is not zero, as Code_Aster refuses it on plates
+    !> (message ELEMENTS4_92: a pressure function on shells goes through FORCE_COQUE).
     subroutine plate_cell_forces(s, item, c, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
@@ -209,9 +257,8 @@ contains
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        real(dp) :: x(3, 4), xg(3, PLATE_LOAD_MAX_POINTS), wg(PLATE_LOAD_MAX_POINTS)
-        real(dp) :: q(3, PLATE_LOAD_MAX_POINTS), fe(12)
-        integer(i4) :: nn, np, g, a, comp, p0, eq
+        real(dp) :: x(3, 4), q(3, 4), pres(4), fe(12), area
+        integer(i4) :: nn, a, comp, p0, eq
         logical :: pressure
         if (.not. is_plate(s%model%element(c))) then
             call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(item%kind)) // &
@@ -221,38 +268,51 @@ contains
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
         x(:, 1:nn) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
-        np = plate_load_point_count(nn)
-        call plate_load_points(x(:, 1:nn), nn, xg, wg, st)
-        if (st%failed()) return
         pressure = item%values(SLOT_PRES)%given
         q = 0.0_dp
-        do g = 1, np
-            do comp = 1, 3
-                if (pressure .and. comp > 1) exit
-                if (pressure) then
-                    call load_value_at(item%values(SLOT_PRES), item%kind, SLOT_PRES, t, &
-                        xg(:, g), q(1, g), st)
-                    if (st%ok()) call check_factor(wg(g), q(1, g), item%kind, SLOT_PRES, st)
-                    if (st%ok()) call check_factor(factor, q(1, g) * wg(g), item%kind, &
-                                                   SLOT_PRES, st)
-                    call load_locate(item, SLOT_PRES, st)
-                else if (item%values(comp)%given) then
-                    call load_value_at(item%values(comp), item%kind, comp, t, xg(:, g), &
-                        q(comp, g), st)
-                    if (st%ok()) call check_factor(wg(g), q(comp, g), item%kind, comp, st)
-                    if (st%ok()) call check_factor(factor, q(comp, g) * wg(g), item%kind, &
-                                                   comp, st)
-                    call load_locate(item, comp, st)
-                end if
-                if (st%failed()) return
-            end do
+        pres = 0.0_dp
+        area = cell_measure(s%mesh, c)      ! the nodal forces are values times parts of it
+        do a = 1, nn
+            if (pressure) then
+                call load_value_at(item%values(SLOT_PRES), item%kind, SLOT_PRES, t, x(:, a), &
+                    pres(a), st)
+                if (st%ok()) call check_factor(area, pres(a), item%kind, SLOT_PRES, st)
+                if (st%ok()) call check_factor(factor, pres(a) * area, item%kind, SLOT_PRES, &
+                                               st)
+                call load_locate(item, SLOT_PRES, st)
+            else
+                do comp = 1, 3
+                    if (item%values(comp)%given) then
+                        call load_value_at(item%values(comp), item%kind, comp, t, x(:, a), &
+                            q(comp, a), st)
+                        if (st%ok()) call check_factor(area, q(comp, a), item%kind, comp, st)
+                        if (st%ok()) call check_factor(factor, q(comp, a) * area, item%kind, &
+                                                       comp, st)
+                        call load_locate(item, comp, st)
+                    end if
+                    if (st%failed()) exit
+                end do
+            end if
+            if (st%failed()) return
         end do
-        if (pressure) then
-            call plate_pressure_forces(x(:, 1:nn), nn, q(1, 1:np), fe(1:3 * nn), st)
-        else
-            call plate_surface_forces(x(:, 1:nn), nn, q(:, 1:np), fe(1:3 * nn), st)
+        if (item%kind == LOAD_PRES_REP .and. associated(item%values(SLOT_PRES)%func) .and. &
+            any(abs(pres(1:nn)) > 0.0_dp)) then
+            call set_error(st, STATUS_MODEL_ERROR, 'PRES_REP: a pressure function that ' // &
+                'is not zero on plate ' // cell_label(s%mesh, c, item%group) // ' (INST ' // &
+                real_e13(t) // '): Code_Aster refuses it on DKT cells (ELEMENTS4_92); ' // &
+                'give it as FORCE_COQUE(PRES=...)')
+            return
         end if
-        if (st%failed()) return
+        if (pressure) then
+            call plate_nodal_pressure(x(:, 1:nn), nn, pres(1:nn), fe(1:3 * nn), st)
+        else
+            call plate_nodal_forces(x(:, 1:nn), nn, q(:, 1:nn), fe(1:3 * nn), st)
+        end if
+        if (st%failed()) then
+            call set_error(st, st%code, trim(LOAD_KIND_NAMES(item%kind)) // ' on ' // &
+                cell_label(s%mesh, c, item%group) // ': ' // st%message)
+            return
+        end if
         do a = 1, nn
             do comp = 1, 3
                 eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))

@@ -23,6 +23,7 @@ module assembly_system
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
     use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2
+    use element_dis_contact, only: dis_contact_seg2, dis_contact_start
     use sparse_matrix, only: sym_matrix_t, sym_pattern_from_elements, sym_zero, &
         sym_add_element, envelope_of_elements
     use renumbering, only: renumber_graph, graph_from_elements
@@ -39,7 +40,10 @@ module assembly_system
         type(material_field_t) :: materials
         type(cara_elem_t) :: cara
         type(dof_numbering_t) :: dofs
-        logical, allocatable :: choc(:)     !< (n_cells) COMPORTEMENT DIS_CHOC on the cell
+        logical, allocatable :: choc(:)     !< (n_cells) a contact law (DIS_CHOC, DIS_CONTACT)
+        !> (n_cells) COMPORTEMENT DIS_CONTACT on the cell (those are also choc); may be left
+        !> unallocated when there is none
+        logical, allocatable :: dis_contact(:)
     end type structure_t
 
     !> Free-equation numbering, the matrix pattern and the renumbering figures (profile and
@@ -50,7 +54,8 @@ module assembly_system
         integer(i4), allocatable :: free_to_eq(:)   !< (n_free) original equation
         logical, allocatable :: imposed(:)          !< (n_equations)
         integer(i4), allocatable :: cells(:)        !< modelled cells with a stiffness
-        integer(i4), allocatable :: springs(:)      !< DIS_CHOC cells (result order)
+        integer(i4), allocatable :: springs(:)      !< DIS_CHOC / DIS_CONTACT cells (result order)
+        integer(i4), allocatable :: spring_of(:)    !< (n_cells) index in springs, 0 = none
         character(len=:), allocatable :: renum      !< RCMK, METIS or SANS
         integer(i8) :: profile_before = 0, profile_after = 0
         integer(i4) :: bandwidth_before = 0, bandwidth_after = 0
@@ -81,21 +86,30 @@ module assembly_system
         real(dp), allocatable :: xy(:, :, :)        !< (2, 4, n_cached) plate local coords
     end type linear_cache_t
 
+    !> State of the DIS_CONTACT springs at the start of the step (element_dis_contact), one
+    !> entry per spring of map%springs (DIS_CHOC entries unused): normal force F- and
+    !> normal displacement U-.
+    type, public :: contact_history_t
+        real(dp), allocatable :: fn0(:), un0(:)
+    end type contact_history_t
+
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
-        internal_forces, internal_forces_incremental, renumbering_lines
+        internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
+        contact_history_start, contact_history_update, spring_response
 
 contains
 
     !> Checks that every modelled cell has what its element needs: ELAS (plates, plane
-    !> solids), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC springs; SEG2 only).
+    !> solids), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC and DIS_CONTACT
+    !> springs; SEG2 only).
     !>  st : out, STATUS_MODEL_ERROR naming the cell (and its group when given), or
-    !>       STATUS_NOT_IMPLEMENTED for DIS_CHOC on a POI1 or with COULOMB
+    !>       STATUS_NOT_IMPLEMENTED for a contact law on a POI1 or with COULOMB
     subroutine structure_check(s, st, group_of)
         type(structure_t), intent(in) :: s
         type(status_t), intent(out) :: st
         character(len=*), intent(in), optional :: group_of
         integer(i4) :: c, kind, m
-        character(len=:), allocatable :: what
+        character(len=:), allocatable :: what, law
         do c = 1, s%mesh%n_cells
             kind = s%model%element(c)
             if (kind == ELEM_NONE .or. is_plane_edge(kind)) cycle
@@ -113,12 +127,13 @@ contains
                 if (s%cara%discrete_cara(c) == CARA_NONE) &
                     what = 'no DISCRET stiffness (AFFE_CARA_ELEM DISCRET or RIGI_PARASOL)'
                 if (s%choc(c) .and. len(what) == 0) then
+                    law = trim(merge('DIS_CONTACT', 'DIS_CHOC   ', is_dis_contact(s, c)))
                     if (m == 0) then
-                        what = 'DIS_CHOC but no material (AFFE_MATERIAU with DIS_CONTACT)'
+                        what = law // ' but no material (AFFE_MATERIAU with DIS_CONTACT)'
                     else if (.not. s%materials%materials(m)%has_dis_contact) then
-                        what = 'DIS_CHOC but no DIS_CONTACT in its material'
+                        what = law // ' but no DIS_CONTACT in its material'
                     else if (s%mesh%cell_type(c) == CELL_POI1) then
-                        call set_error(st, STATUS_NOT_IMPLEMENTED, 'DIS_CHOC on ' // &
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
                             cell_label(s%mesh, c, group_of) // ' (POI1) is not built; ' // &
                             'use SEG2 springs')
                         return
@@ -190,6 +205,10 @@ contains
         end do
         map%cells = map%cells(1:n_cells)
         map%springs = map%springs(1:k)
+        allocate (map%spring_of(s%mesh%n_cells), source=0_i4)
+        do k = 1, size(map%springs)
+            map%spring_of(map%springs(k)) = k
+        end do
         call node_graph(s, map%cells, xadj, adjncy, st)
         if (st%failed()) return
         call renumber_graph(renum, s%mesh%n_nodes, xadj, adjncy, new_to_old, old_to_new, st)
@@ -308,9 +327,12 @@ contains
     end function renumbering_lines
 
     !> Element matrix and internal forces of one cell at element displacements ue.
-    !>  elastic : in, DIS_CHOC springs give the closed bilateral matrix
-    !>  closed  : out, DIS_CHOC status (.true. for other elements); fn : out, normal force
-    subroutine cell_response(s, c, ue, n, elastic, want_matrix, ke, fe, closed, fn, st)
+    !>  elastic : in, DIS_CHOC / DIS_CONTACT springs give their elastic (closed) matrix
+    !>  closed  : out, contact status (.true. for other elements); fn : out, normal force
+    !>  history : in, optional, DIS_CONTACT state at the start of the step (absent: the
+    !>            state before the first step)
+    subroutine cell_response(s, c, ue, n, elastic, want_matrix, ke, fe, closed, fn, st, &
+                             map, history)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
         real(dp), intent(in) :: ue(n)
@@ -318,6 +340,8 @@ contains
         real(dp), intent(out) :: ke(n, n), fe(n), fn
         logical, intent(out) :: closed
         type(status_t), intent(out) :: st
+        type(assembly_map_t), intent(in), optional :: map
+        type(contact_history_t), intent(in), optional :: history
         integer(i4) :: kind, m, nn, p0
         real(dp) :: x(3, 4), x2(2, 4), k8(8, 8), d8(8)
         kind = s%model%element(c)
@@ -352,6 +376,9 @@ contains
                     fe = matmul(k8, d8)
                 end if
             end associate
+        else if (is_dis_contact(s, c)) then
+            call dis_contact_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st, map, &
+                history)
         else
             call discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
         end if
@@ -359,18 +386,23 @@ contains
             st%message)
     end subroutine cell_response
 
-    !> Springs: linear DIS_T / 2D_DIS_T, or DIS_CHOC on SEG2.
-    subroutine discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
+    !> True when cell c follows COMPORTEMENT RELATION = 'DIS_CONTACT'.
+    pure logical function is_dis_contact(s, c)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        is_dis_contact = .false.
+        if (allocated(s%dis_contact)) is_dis_contact = s%dis_contact(c)
+    end function is_dis_contact
+
+    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation).
+    subroutine discrete_matrix(s, c, x, n, ke, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4), ue(n)
-        logical, intent(in) :: elastic
-        real(dp), intent(out) :: ke(n, n), fe(n), fn
-        logical, intent(out) :: closed
+        real(dp), intent(in) :: x(3, 4)
+        real(dp), intent(out) :: ke(n, n)
         type(status_t), intent(out) :: st
-        integer(i4) :: kind, m
-        real(dp) :: kv(6), angles(3), gap, k6(6, 6), k4(4, 4), k3(3, 3), k2(2, 2)
-        real(dp) :: c3(3, 2), c2(2, 2)
+        integer(i4) :: kind
+        real(dp) :: kv(6), angles(3), k6(6, 6), k4(4, 4), c3(3, 2), c2(2, 2)
         logical :: global
         kind = s%model%element(c)
         c3 = x(:, 1:2)
@@ -381,8 +413,7 @@ contains
         if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
             s%cara%orientation_values(1, c)
         if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
-        closed = .true.
-        fn = 0.0_dp
+        ke = 0.0_dp
         select case (kind)
         case (ELEM_DIS_T_SEG2)
             call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
@@ -395,6 +426,142 @@ contains
         case (ELEM_2D_DIS_T_POI1)
             call dis_2d_t_poi1_stiffness(kv(1:2), global, angles(1), ke)
         end select
+    end subroutine discrete_matrix
+
+    !> DIS_CONTACT on a SEG2 (element_dis_contact), from the spring's state at the start of
+    !> the step (history) or, without one, the state before the first step.
+    subroutine dis_contact_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st, map, &
+                                    history)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(3, 4), ue(n)
+        logical, intent(in) :: elastic
+        real(dp), intent(out) :: ke(n, n), fe(n), fn
+        logical, intent(out) :: closed
+        type(status_t), intent(out) :: st
+        type(assembly_map_t), intent(in), optional :: map
+        type(contact_history_t), intent(in), optional :: history
+        integer(i4) :: m, d, k
+        real(dp) :: fn0, un0, un
+        real(dp), allocatable :: kd(:, :), kblock(:, :), xd(:, :)
+        closed = .false.
+        fn = 0.0_dp
+        fe = 0.0_dp
+        allocate (kd(n, n))
+        call discrete_matrix(s, c, x, n, kd, st)
+        if (st%failed()) return
+        d = n / 2
+        kblock = kd(1:d, 1:d)       ! contiguous copies for the law (no array temporaries)
+        xd = x(1:d, 1:2)
+        m = material_of_cell(s%materials, c)
+        associate (dc => s%materials%materials(m)%dis_contact)
+            k = 0
+            if (present(history) .and. present(map)) k = map%spring_of(c)
+            if (k > 0) then
+                fn0 = history%fn0(k)
+                un0 = history%un0(k)
+            else if (dc%has_rigi_nor) then
+                call dis_contact_start(d, xd, kblock, dc%dist_1, dc%dist_2, fn0, un0, st, &
+                    dc%rigi_nor)
+            else
+                call dis_contact_start(d, xd, kblock, dc%dist_1, dc%dist_2, fn0, un0, st)
+            end if
+            if (st%failed()) return
+            if (dc%has_rigi_nor) then
+                call dis_contact_seg2(d, xd, ue, kblock, dc%dist_1, dc%dist_2, fn0, un0, &
+                    elastic, closed, fn, un, fe, ke, st, dc%rigi_nor)
+            else
+                call dis_contact_seg2(d, xd, ue, kblock, dc%dist_1, dc%dist_2, fn0, un0, &
+                    elastic, closed, fn, un, fe, ke, st)
+            end if
+            if (elastic .and. st%ok()) ke = kd
+        end associate
+    end subroutine dis_contact_response
+
+    !> The DIS_CONTACT springs' state before the first step (dis_contact_start).
+    !>  history : out, sized to map%springs (DIS_CHOC entries 0)
+    !>  st      : out, a zero-length spring, naming the cell
+    subroutine contact_history_start(s, map, history, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(contact_history_t), intent(out) :: history
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, c, n, d, m, p0
+        real(dp) :: x(3, 4)
+        real(dp), allocatable :: kd(:, :), kblock(:, :), xd(:, :)
+        allocate (history%fn0(size(map%springs)), history%un0(size(map%springs)), &
+            source=0.0_dp)
+        do k = 1, size(map%springs)
+            c = map%springs(k)
+            if (.not. is_dis_contact(s, c)) cycle
+            p0 = s%mesh%cell_ptr(c)
+            x = 0.0_dp
+            x(:, 1:2) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + 1))
+            n = merge(4_i4, 6_i4, is_discrete_2d(s%model%element(c)))
+            d = n / 2
+            if (allocated(kd)) deallocate (kd)
+            allocate (kd(n, n))
+            call discrete_matrix(s, c, x, n, kd, st)
+            kblock = kd(1:d, 1:d)
+            xd = x(1:d, 1:2)
+            m = material_of_cell(s%materials, c)
+            associate (dc => s%materials%materials(m)%dis_contact)
+                if (st%ok() .and. dc%has_rigi_nor) then
+                    call dis_contact_start(d, xd, kblock, dc%dist_1, dc%dist_2, &
+                        history%fn0(k), history%un0(k), st, dc%rigi_nor)
+                else if (st%ok()) then
+                    call dis_contact_start(d, xd, kblock, dc%dist_1, dc%dist_2, &
+                        history%fn0(k), history%un0(k), st)
+                end if
+            end associate
+            if (st%failed()) then
+                call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // st%message)
+                return
+            end if
+        end do
+    end subroutine contact_history_start
+
+    !> At the end of a converged step: F- = the springs' normal forces fn, U- = their normal
+    !> displacement (u2 - u1) . e at u.
+    subroutine contact_history_update(s, map, u, fn, history)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), fn(:)
+        type(contact_history_t), intent(inout) :: history
+        integer(i4) :: k, c, n, d, p0, eqs(MAX_ELEMENT_DOFS)
+        real(dp) :: e(3), ue(MAX_ELEMENT_DOFS)
+        do k = 1, size(map%springs)
+            c = map%springs(k)
+            if (.not. is_dis_contact(s, c)) cycle
+            call element_equations(s, c, eqs, n)
+            call gather_into(u, eqs, n, ue)
+            d = n / 2
+            p0 = s%mesh%cell_ptr(c)
+            e(1:d) = s%mesh%coords(1:d, s%mesh%cell_nodes(p0 + 1)) - &
+                s%mesh%coords(1:d, s%mesh%cell_nodes(p0))
+            e(1:d) = e(1:d) / norm2(e(1:d))
+            history%fn0(k) = fn(k)
+            history%un0(k) = dot_product(ue(d + 1:2 * d) - ue(1:d), e(1:d))
+        end do
+    end subroutine contact_history_update
+
+    !> Springs: linear DIS_T / 2D_DIS_T, or DIS_CHOC on SEG2.
+    subroutine discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(3, 4), ue(n)
+        logical, intent(in) :: elastic
+        real(dp), intent(out) :: ke(n, n), fe(n), fn
+        logical, intent(out) :: closed
+        type(status_t), intent(out) :: st
+        integer(i4) :: kind, m
+        real(dp) :: gap, k3(3, 3), k2(2, 2), c3(3, 2), c2(2, 2)
+        kind = s%model%element(c)
+        c3 = x(:, 1:2)
+        c2 = x(1:2, 1:2)
+        closed = .true.
+        fn = 0.0_dp
+        call discrete_matrix(s, c, x, n, ke, st)
         if (st%failed()) return
         if (.not. s%choc(c)) then
             fe = matmul(ke, ue)
@@ -543,7 +710,8 @@ contains
     !>  st      : out, element failures, naming the cell
     !>  cache   : in, optional, once built (internal_forces_incremental): the plate and
     !>            plane matrices are taken from it (bit for bit those cell_response builds)
-    subroutine assemble_stiffness(s, map, u, elastic, a, st, cache)
+    !>  history : in, optional, DIS_CONTACT state at the start of the step
+    subroutine assemble_stiffness(s, map, u, elastic, a, st, cache, history)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -551,6 +719,7 @@ contains
         type(sym_matrix_t), intent(inout) :: a
         type(status_t), intent(out) :: st
         type(linear_cache_t), intent(in), optional :: cache
+        type(contact_history_t), intent(in), optional :: history
         integer(i4) :: k, c, n, eqs(MAX_ELEMENT_DOFS), i
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: fn
@@ -569,7 +738,7 @@ contains
                 call cached_global_matrix(cache, i, ke)
             else
                 call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, &
-                    closed, fn, st)
+                    closed, fn, st, map, history)
                 if (st%failed()) return
             end if
             call sym_add_element(a, free_of(map, eqs(1:n)), ke, st)
@@ -581,13 +750,15 @@ contains
     !>  fint   : out, (n_equations)
     !>  closed : out, (size(map%springs)) status of each DIS_CHOC spring
     !>  fn     : out, (size(map%springs)) normal force of each (<= 0 when closed)
-    subroutine internal_forces(s, map, u, fint, closed, fn, st)
+    !>  history: in, optional, DIS_CONTACT state at the start of the step
+    subroutine internal_forces(s, map, u, fint, closed, fn, st, history)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
         real(dp), intent(out) :: fint(:), fn(:)
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
+        type(contact_history_t), intent(in), optional :: history
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: f
@@ -599,7 +770,7 @@ contains
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
             call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st)
+                is_closed, f, st, map, history)
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
@@ -625,7 +796,14 @@ contains
     !>  closed, fn, st : as internal_forces
     !>  cache  : inout, optional, the linear cells' matrices (built on the first call that
     !>           passes it, then reused: the structure and map must stay the same)
-    subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st, cache)
+    !>  history: in, optional, DIS_CONTACT state at the start of the step
+    !>  u_ref, elastic_ref : in, optional (together): the contact springs are linearised
+    !>           about u_ref, f(u_ref) + K (u - u_ref), K their elastic (elastic_ref) or
+    !>           tangent matrix at u_ref, and closed/fn are their state at u_ref. This is
+    !>           the force of Code_Aster's prediction with imposed-value increments (the
+    !>           second member of nsassp: the increments enter through the matrix).
+    subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st, cache, &
+                                           u_ref, elastic_ref, history)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:), du(:)
@@ -634,11 +812,14 @@ contains
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
         type(linear_cache_t), intent(inout), optional :: cache
+        real(dp), intent(in), optional :: u_ref(:)
+        logical, intent(in), optional :: elastic_ref
+        type(contact_history_t), intent(in), optional :: history
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
-        real(dp) :: ue(MAX_ELEMENT_DOFS)
+        real(dp) :: ue(MAX_ELEMENT_DOFS), ur(MAX_ELEMENT_DOFS)
         real(dp) :: f
-        logical :: is_closed, linear
+        logical :: is_closed, linear, linearise
         i_spring = 0
         if (present(cache)) then
             if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
@@ -667,7 +848,17 @@ contains
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
             call gather_into(u, eqs, n, ue)     ! a local array: no function-result temporary
-            call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, is_closed, f, st)
+            linearise = .false.
+            if (present(u_ref)) linearise = s%choc(c)
+            if (linearise) then
+                call gather_into(u_ref, eqs, n, ur)
+                call cell_response(s, c, ur(1:n), n, elastic_ref, .true., ke, fe, is_closed, &
+                    f, st, map, history)
+                if (st%ok()) fe = fe + matmul(ke, ue(1:n) - ur(1:n))
+            else
+                call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, is_closed, f, &
+                    st, map, history)
+            end if
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
@@ -813,5 +1004,34 @@ contains
         d8 = plane_deformation(x2, ue)    ! not inline in matmul: see cell_response
         fe = matmul(k8, d8)
     end subroutine plane_forces
+
+    !> The response of one SEG2 spring (DIS_T, 2D_DIS_T; DIS_CHOC or linear) at u: its
+    !> element displacements and the force on its second node (global frame), for the
+    !> spring results (analysis spring_results: SIEF_ELGA, VARI_ELGA).
+    !>  c      : in, a SEG2 discrete cell
+    !>  ue     : out, ue(1:n) the element displacements, node 1 then node 2
+    !>  n      : out, 2 x the space dimension
+    !>  force2 : out, force2(1:n/2) the force on node 2
+    !>  closed, fn : out, the DIS_CHOC status and normal force (closed, 0 for a linear one)
+    !>  st     : out, element failures, naming the cell
+    subroutine spring_response(s, c, u, ue, n, force2, closed, fn, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: u(:)
+        real(dp), intent(out) :: ue(MAX_ELEMENT_DOFS), force2(3), fn
+        integer(i4), intent(out) :: n
+        logical, intent(out) :: closed
+        type(status_t), intent(out) :: st
+        integer(i4) :: eqs(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        force2 = 0.0_dp
+        ue = 0.0_dp
+        call element_equations(s, c, eqs, n)
+        call gather_into(u, eqs, n, ue)
+        call size_element_arrays(n, ke, fe)
+        call cell_response(s, c, ue(1:n), n, .false., .false., ke, fe, closed, fn, st)
+        if (st%failed()) return
+        force2(1:n / 2) = fe(n / 2 + 1:n)
+    end subroutine spring_response
 
 end module assembly_system

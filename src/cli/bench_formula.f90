@@ -47,13 +47,13 @@ contains
         call deck_from_text(ctx, BENCH_DECK, st)
         if (st%ok()) call evaluate_deck(ctx, st)
         if (st%failed()) then
-            write (error_unit, '(a)') format_status(st)
+            write (error_unit, '(a)') 'parasol-bench formula: ' // format_status(st)
             return
         end if
         call time_formula(ctx, 'PLAIN', '5.0*(Y-2.0)**2*min(INST,1.0)', n, st)
         if (st%ok()) call time_formula(ctx, 'WITH_DEF', 'Pression(INST,X,Y,Z) via def', n, st)
         if (st%failed()) then
-            write (error_unit, '(a)') format_status(st)
+            write (error_unit, '(a)') 'parasol-bench formula: ' // format_status(st)
             return
         end if
         exit_status = 0

@@ -17,7 +17,8 @@ contains
         type(string_t), intent(in) :: args(:)
         integer, intent(out) :: exit_status
         if (size(args) /= 1) then
-            write (error_unit, '(a)') 'usage: parasol-bench mesh FILE   (.mail, or .msh for Gmsh)'
+            write (error_unit, '(a)') 'parasol-bench mesh: error: give one mesh file; usage: ' // &
+                'parasol-bench mesh FILE   (.mail, or .msh for Gmsh)'
             exit_status = 1
             return
         end if
@@ -36,7 +37,7 @@ contains
         call read_mesh(path, mesh, st)
         call system_clock(t1)
         if (st%failed()) then
-            write (error_unit, '(a)') format_status(st)
+            write (error_unit, '(a)') 'parasol-bench mesh: ' // format_status(st)
             exit_status = 1
             return
         end if

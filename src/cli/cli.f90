@@ -15,7 +15,9 @@ module cli
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use kinds, only: i4, dp
     use strings, only: string_t, to_text, starts_with
-    use status, only: status_t, format_status, set_error, add_context, STATUS_DECK_ERROR, STATUS_IO_ERROR
+    use status, only: status_t, format_status, set_error, add_context, STATUS_DECK_ERROR, &
+        STATUS_IO_ERROR
+    use system_error, only: readable_errno, errno_text
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
     use atomic_file, only: open_atomic
@@ -25,6 +27,8 @@ module cli
     use deck_interpreter, only: read_source_text, load_source, evaluate_session
     use export_file, only: export_t, read_export, is_export_path, module_name
     use command_registration, only: register_commands
+    use progress, only: silent_progress_t, wall_seconds
+    use cli_progress, only: terminal_progress_t, stdout_is_terminal
     use mumps_solver, only: mumps_session_t, mumps_session_start, mumps_session_stop
     implicit none
     private
@@ -42,6 +46,8 @@ module cli
         type(string_t), allocatable :: decks(:)
         character(len=:), allocatable :: export, outdir
         logical :: check = .false.
+        logical :: quiet = .false.      !< --quiet: nothing on standard output
+        logical :: bundled = .false.    !< the bundled deck (its own closing lines)
         integer(i4), allocatable :: units(:)
         type(string_t), allocatable :: unit_paths(:)
     end type options_t
@@ -102,11 +108,13 @@ contains
             return
         end if
         call append_string(opts%decks, deck)
-        write (output_unit, '(a)') 'parasol ' // parasol_version_string // ': no deck given ' // &
-            '(usage: parasol [options] [DECK]; parasol --help), running the bundled SSNL130 ' // &
-            'model A deck ' // deck
+        opts%bundled = .true.
+        if (.not. opts%quiet) write (output_unit, '(a)') 'parasol ' // &
+            parasol_version_string // ': no deck given (usage: parasol [options] [DECK]; ' // &
+            'parasol --help), running the bundled SSNL130 model A deck ' // deck
         call run_deck(opts, exit_status)
-        if (exit_status /= EXIT_ERROR) call echo_test_resu(opts, exit_status)
+        if (exit_status /= EXIT_ERROR .and. .not. opts%quiet) &
+            call echo_test_resu(opts, exit_status)
     end subroutine run_bundled
 
     !> Copies the TEST_RESU blocks of the run's .resu (identification lines, table header,
@@ -165,6 +173,8 @@ contains
                 write (output_unit, '(a)') 'parasol ' // parasol_version_string; return
             case ('--check')
                 opts%check = .true.
+            case ('--quiet', '-q')
+                opts%quiet = .true.
             case ('--unit', '--outdir')
                 if (i == size(args)) then
                     call usage_error('option ' // a // ' needs a value'); return
@@ -212,7 +222,10 @@ contains
     end subroutine parse_options
 
     !> Reads, checks and (unless --check) runs the command files: the decks of the
-    !> command line, or those of an export file.
+    !> command line, or those of an export file. A file named on the command line that
+    !> cannot be opened stops the run before any listing is created. Progress goes to
+    !> standard output through the run context's reporter (nothing with --quiet); a run of a
+    !> given deck ends with a one-line summary (run_summary).
     subroutine run_deck(opts, exit_status)
         type(options_t), intent(in) :: opts
         integer, intent(out) :: exit_status
@@ -220,20 +233,35 @@ contains
         type(export_t) :: exp
         type(status_t) :: st, io
         type(string_t), allocatable :: files(:)
-        character(len=:), allocatable :: mess_path, resu_path, header
+        character(len=:), allocatable :: mess_path, resu_path, header, names
         integer, allocatable :: file_lines(:)
         integer :: k
+        real(dp) :: started
+        started = wall_seconds()
+        if (allocated(opts%export)) then
+            call check_readable(opts%export, 'the export file', st)
+            names = opts%export
+        else
+            names = opts%decks(1)%s
+            do k = 1, size(opts%decks)
+                if (st%ok()) call check_readable(opts%decks(k)%s, 'the deck', st)
+                if (k > 1) names = names // ' ' // opts%decks(k)%s
+            end do
+        end if
+        if (st%failed()) then
+            write (error_unit, '(a)') error_line(st)
+            exit_status = EXIT_ERROR
+            return
+        end if
         if (allocated(opts%export)) then
             call init_context(ctx, opts%export, opts%outdir)
             call read_export(opts%export, exp, st)
             header = 'export file ' // opts%export
         else
             call init_context(ctx, opts%decks(1)%s, opts%outdir)
-            header = 'deck'
-            do k = 1, size(opts%decks)
-                header = header // ' ' // opts%decks(k)%s
-            end do
+            header = 'deck ' // names
         end if
+        call start_reporter(ctx, opts%quiet)
         mess_path = ctx%output_path('.mess')
         resu_path = ctx%output_path('.resu')
         if (allocated(opts%export) .and. st%ok()) &
@@ -247,20 +275,13 @@ contains
         end do
         call register_commands(ctx)
         if (.not. opts%check) then
-            ! A deck (or export file) of the command line that cannot be opened gets no
-            ! listings: no run took place, nothing is written (issue 13).
-            call check_openable(opts, io)
-            if (io%failed()) then
-                write (error_unit, '(a)') format_status(io)
-                exit_status = EXIT_ERROR
-                return
-            end if
             call open_atomic(ctx%mess, mess_path, io)
             if (io%ok()) call open_atomic(ctx%resu, resu_path, io)
             if (io%failed()) then
                 call ctx%mess%discard()
                 write (error_unit, '(a)') 'parasol: ' // format_status(io)
                 exit_status = EXIT_ERROR
+                call stop_reporter(ctx)
                 return
             end if
             call ctx%write_mess('parasol ' // parasol_version_string // ' -- ' // header)
@@ -275,53 +296,101 @@ contains
         end if
         if (st%ok()) call check_pass(ctx, st)
         if (st%ok() .and. opts%check) then
-            if (ctx%ncommand_file == 1) then
-                write (output_unit, '(a)') ctx%sources(1)%name // ': deck is valid (' // &
-                    to_text(int(ctx%ncommand, i4)) // ' commands checked)'
-            else
-                write (output_unit, '(a)') to_text(int(ctx%ncommand_file, i4)) // &
-                    ' command files are valid (' // to_text(int(ctx%ncommand, i4)) // &
-                    ' commands checked)'
-            end if
+            if (.not. opts%quiet) call say_valid(ctx)
             exit_status = EXIT_OK
+            call stop_reporter(ctx)
             call ctx%reset_symbols()
             return
         end if
         if (st%ok()) call run_pass(ctx, st)
         call finish(ctx, st, exit_status)
+        if (exit_status /= EXIT_ERROR .and. .not. (opts%quiet .or. opts%bundled)) &
+            write (output_unit, '(a)') run_summary(names, ctx%n_ok, ctx%n_nook, mess_path, &
+            resu_path, wall_seconds() - started)
+        call stop_reporter(ctx)
         call ctx%reset_symbols()
     end subroutine run_deck
 
-    !> An error when the export file or a deck named on the command line cannot be opened
-    !> for reading (the system's reason), checked before the listings are created.
-    subroutine check_openable(opts, st)
-        type(options_t), intent(in) :: opts
-        type(status_t), intent(out) :: st
-        integer :: k
-        if (allocated(opts%export)) then
-            call try_open(opts%export, 'the export file', st)
+    !> --check found the command files valid: one line on standard output.
+    subroutine say_valid(ctx)
+        type(run_context_t), intent(in) :: ctx
+        if (ctx%ncommand_file == 1) then
+            write (output_unit, '(a)') ctx%sources(1)%name // ': deck is valid (' // &
+                to_text(int(ctx%ncommand, i4)) // ' commands checked)'
         else
-            do k = 1, size(opts%decks)
-                call try_open(opts%decks(k)%s, 'the deck', st)
-                if (st%failed()) return
-            end do
+            write (output_unit, '(a)') to_text(int(ctx%ncommand_file, i4)) // &
+                ' command files are valid (' // to_text(int(ctx%ncommand, i4)) // &
+                ' commands checked)'
         end if
-    contains
-        subroutine try_open(path, what, st)
-            character(len=*), intent(in) :: path, what
-            type(status_t), intent(inout) :: st
-            integer :: unit, ios
-            character(len=256) :: msg
-            open (newunit=unit, file=path, access='stream', form='unformatted', &
-                  status='old', action='read', iostat=ios, iomsg=msg)
-            if (ios /= 0) then
-                call set_error(st, STATUS_IO_ERROR, 'cannot open ' // what // ' ' // path // &
-                               ': ' // trim(msg) // ' (no listing written)')
-                return
-            end if
-            close (unit)
-        end subroutine try_open
-    end subroutine check_openable
+    end subroutine say_valid
+
+    !> The line that ends a run of a given deck (not with --quiet): what ran, the TEST_RESU
+    !> tally, the listings and the wall time, e.g.
+    !> `parasol: plate.comm: 4 TEST_RESU OK, 0 NOOK; listings plate.mess, plate.resu (2.3 s)`.
+    !>  names : in, the command files (or export file) as given
+    function run_summary(names, n_ok, n_nook, mess_path, resu_path, seconds) result(text)
+        character(len=*), intent(in) :: names, mess_path, resu_path
+        integer, intent(in) :: n_ok, n_nook
+        real(dp), intent(in) :: seconds
+        character(len=:), allocatable :: text
+        character(len=24) :: buf
+        text = 'parasol: ' // names // ': '
+        if (n_ok + n_nook == 0) then
+            text = text // 'no TEST_RESU'
+        else
+            text = text // to_text(int(n_ok, i4)) // ' TEST_RESU OK, ' // &
+                to_text(int(n_nook, i4)) // ' NOOK'
+            if (n_nook > 0) text = text // ' -- SOME TESTS FAILED'
+        end if
+        write (buf, '(f0.1)') max(seconds, 0.0_dp)
+        if (buf(1:1) == '.') buf = '0' // buf(1:len(buf) - 1)
+        text = text // '; listings ' // mess_path // ', ' // resu_path // ' (' // trim(buf) // &
+            ' s)'
+    end function run_summary
+
+    !> Gives the run context its progress reporter: the terminal one (cli_progress), or
+    !> with --quiet a silent one.
+    subroutine start_reporter(ctx, quiet)
+        type(run_context_t), intent(inout) :: ctx
+        logical, intent(in) :: quiet
+        type(terminal_progress_t), pointer :: screen
+        if (quiet) then
+            allocate (silent_progress_t :: ctx%progress)
+        else
+            allocate (screen)
+            screen%terminal = stdout_is_terminal()
+            ctx%progress => screen
+        end if
+    end subroutine start_reporter
+
+    !> Ends the reporter (its in-place line wiped) and frees it.
+    subroutine stop_reporter(ctx)
+        type(run_context_t), intent(inout) :: ctx
+        if (.not. associated(ctx%progress)) return
+        call ctx%progress%done()
+        deallocate (ctx%progress)
+    end subroutine stop_reporter
+
+    !> STATUS_IO_ERROR when `path` cannot be opened and read, with the system's reason
+    !> (readable_errno), e.g. "cannot open the deck plate.comm: No such file or directory".
+    !>  what : in, 'the deck' or 'the export file'
+    subroutine check_readable(path, what, st)
+        character(len=*), intent(in) :: path, what
+        type(status_t), intent(inout) :: st
+        integer :: code
+        code = readable_errno(path)
+        if (code /= 0) call set_error(st, STATUS_IO_ERROR, 'cannot open ' // what // ' ' // &
+            path // ': ' // errno_text(code))
+    end subroutine check_readable
+
+    !> An error as printed on the terminal: located (`file:line:col: error: ...`), or
+    !> `parasol: error: ...` when no file is known.
+    function error_line(st) result(text)
+        type(status_t), intent(in) :: st
+        character(len=:), allocatable :: text
+        text = format_status(st)
+        if (.not. allocated(st%file)) text = 'parasol: ' // text
+    end function error_line
 
     !> Takes from an export file what the run needs: its command files (in order), its
     !> units (F mmed|med|mail|msh NAME D U, and the result files parasol writes on a unit),
@@ -430,8 +499,9 @@ contains
         integer, intent(out) :: exit_status
         type(status_t) :: io
         character(len=:), allocatable :: verdict
+        if (associated(ctx%progress)) call ctx%progress%done()   ! wipe a progress line
         if (st%failed()) then
-            write (error_unit, '(a)') format_status(st)
+            write (error_unit, '(a)') error_line(st)
             call ctx%write_mess('')
             call ctx%write_mess(format_status(st))
             call ctx%write_mess('verdict: STOPPED ON AN ERROR after ' // &
@@ -483,6 +553,7 @@ contains
             '  --unit N=PATH      bind logical unit N to a file (LIRE_MAILLAGE reads unit 20)', &
             '  --outdir DIR       where <stem>.mess, <stem>.resu and result files go', &
             '  --check            parse and validate the command files, run nothing', &
+            '  --quiet, -q        print nothing but errors (no progress, no summary)', &
             '  --help, --version', &
             'exit status: 0 = ran, every TEST_RESU OK; 2 = some TEST_RESU NOOK;', &
             '             1 = stopped on an error'

@@ -12,7 +12,8 @@ module command_registration
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
     use cara_elem_commands, only: run_affe_cara_elem
-    use load_commands, only: run_affe_char_meca, run_affe_char_meca_f
+    use load_commands, only: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, &
+        run_affe_char_cine_f
     use analysis_commands, only: run_stat_non_line, run_meca_statique
     implicit none
     private
@@ -41,6 +42,8 @@ contains
         call ctx%register('AFFE_CARA_ELEM', run_affe_cara_elem)
         call ctx%register('AFFE_CHAR_MECA', run_affe_char_meca)
         call ctx%register('AFFE_CHAR_MECA_F', run_affe_char_meca_f)
+        call ctx%register('AFFE_CHAR_CINE', run_affe_char_cine)
+        call ctx%register('AFFE_CHAR_CINE_F', run_affe_char_cine_f)
         call ctx%register('MECA_STATIQUE', run_meca_statique)
         call ctx%register('STAT_NON_LINE', run_stat_non_line)
     end subroutine register_commands

@@ -16,6 +16,7 @@ module atomic_file
     contains
         procedure :: is_open => atomic_file_is_open
         procedure :: write_line => atomic_file_write_line
+        procedure :: flush => atomic_file_flush
         procedure :: commit => atomic_file_commit
         procedure :: discard => atomic_file_discard
     end type atomic_file_t
@@ -106,6 +107,14 @@ contains
         if (self%unit == -1) return
         write (self%unit, '(a)') line
     end subroutine atomic_file_write_line
+
+    !> Hands the lines written so far to the system (the temporary file then shows them,
+    !> e.g. to `tail -f`); the final name still appears only at commit.
+    subroutine atomic_file_flush(self)
+        class(atomic_file_t), intent(in) :: self
+        if (self%unit == -1) return
+        flush (self%unit)
+    end subroutine atomic_file_flush
 
     !> Closes the temporary file and renames it to the final name.
     subroutine atomic_file_commit(self, st)

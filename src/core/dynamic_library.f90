@@ -6,8 +6,9 @@
 !> declares. Failures come back as STATUS_IO_ERROR with the loader's own reason (dlerror).
 module dynamic_library
     use, intrinsic :: iso_c_binding, only: c_ptr, c_funptr, c_char, c_int, c_null_ptr, &
-        c_null_funptr, c_null_char, c_associated, c_f_pointer, c_size_t
+        c_null_funptr, c_null_char, c_associated
     use status, only: status_t, set_error, STATUS_IO_ERROR
+    use system_error, only: c_text
     implicit none
     private
 
@@ -47,11 +48,6 @@ module dynamic_library
             import :: c_ptr
             type(c_ptr) :: text
         end function c_dlerror
-        function c_strlen(s) result(n) bind(c, name='strlen')
-            import :: c_ptr, c_size_t
-            type(c_ptr), value :: s
-            integer(c_size_t) :: n
-        end function c_strlen
     end interface
 
 contains
@@ -118,18 +114,7 @@ contains
     !> dlerror's text ('' when no error is pending); reading it clears it.
     function last_error() result(text)
         character(len=:), allocatable :: text
-        type(c_ptr) :: p
-        character(kind=c_char), pointer :: chars(:)
-        integer :: n, k
-        text = ''
-        p = c_dlerror()
-        if (.not. c_associated(p)) return
-        n = int(c_strlen(p))
-        call c_f_pointer(p, chars, [n])
-        text = repeat(' ', n)
-        do k = 1, n
-            text(k:k) = chars(k)
-        end do
+        text = c_text(c_dlerror())
     end function last_error
 
 end module dynamic_library

@@ -2,11 +2,11 @@
 !> library (glibc), so that messages give the real reason ("No such file or directory",
 !> "Permission denied") rather than a generic "cannot write".
 module system_error
-    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_char, c_size_t, c_associated, &
-        c_f_pointer
+    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_ptr, c_char, c_size_t, &
+        c_associated, c_f_pointer
     implicit none
     private
-    public :: last_errno, errno_text, process_id
+    public :: last_errno, errno_text, process_id, readable_errno, c_text
 
     interface
         function c_errno_location() result(p) bind(c, name='__errno_location')
@@ -27,6 +27,24 @@ module system_error
             import :: c_int
             integer(c_int) :: pid
         end function c_getpid
+        function c_open(pathname, flags) result(fd) bind(c, name='open')
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int), value :: flags
+            integer(c_int) :: fd
+        end function c_open
+        function c_read(fd, buf, count) result(n) bind(c, name='read')
+            import :: c_int, c_char, c_size_t, c_long
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(out) :: buf(*)
+            integer(c_size_t), value :: count
+            integer(c_long) :: n                   ! ssize_t
+        end function c_read
+        function c_close(fd) result(rc) bind(c, name='close')
+            import :: c_int
+            integer(c_int), value :: fd
+            integer(c_int) :: rc
+        end function c_close
     end interface
 
 contains
@@ -43,20 +61,49 @@ contains
         integer, intent(in) :: code
         character(len=:), allocatable :: text
         type(c_ptr) :: p
-        character(kind=c_char), pointer :: chars(:)
-        integer :: n, k
         p = c_strerror(int(code, c_int))
         if (.not. c_associated(p)) then
             text = 'system error'
             return
         end if
+        text = c_text(p)
+    end function errno_text
+
+    !> The NUL-terminated C string at `p` as Fortran text ('' for a null pointer).
+    function c_text(p) result(text)
+        type(c_ptr), intent(in) :: p
+        character(len=:), allocatable :: text
+        character(kind=c_char), pointer :: chars(:)
+        integer :: n, k
+        text = ''
+        if (.not. c_associated(p)) return
         n = int(c_strlen(p))
         call c_f_pointer(p, chars, [n])
         text = repeat(' ', n)
         do k = 1, n
             text(k:k) = chars(k)
         end do
-    end function errno_text
+    end function c_text
+
+    !> 0 when `path` can be opened and read, else the errno of the failing call (open(2)
+    !> read-only, then a read(2) of one byte: a folder opens but fails with EISDIR).
+    integer function readable_errno(path) result(code)
+        use, intrinsic :: iso_c_binding, only: c_null_char
+        character(len=*), intent(in) :: path
+        integer(c_int), parameter :: O_RDONLY = 0_c_int
+        integer(c_int) :: fd, rc
+        integer(c_long) :: n
+        character(kind=c_char) :: buf(1)
+        code = 0
+        fd = c_open(path // c_null_char, O_RDONLY)
+        if (fd < 0) then
+            code = last_errno()
+            return
+        end if
+        n = c_read(fd, buf, 1_c_size_t)
+        if (n < 0_c_long) code = last_errno()
+        rc = c_close(fd)
+    end function readable_errno
 
     !> The process identifier (getpid), e.g. to make temporary names unique per process.
     integer function process_id()

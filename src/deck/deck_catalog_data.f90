@@ -18,6 +18,10 @@ module deck_catalog_data
     real(dp), parameter :: ANGLE_MAX = 1.0e30_dp          !< degrees, or a direction vector
     real(dp), parameter :: RATIO_MAX = 1.0e10_dp          !< COEF_RIGI_DRZ
     real(dp), parameter :: WEIGHT_MAX = 1.0e30_dp         !< RIGI_PARASOL COEF_GROUP
+    !> NOM_CMP of TEST_RESU and IMPR_RESU: DEPL, FORC_NODA, REAC_NODA components; SIEF_ELGA
+    !> of the discrete springs (N VY VZ); VARI_ELGA of DIS_CHOC (V1 .. V10).
+    character(len=*), parameter :: RESULT_COMPONENTS = 'DX DY DZ DRX DRY DRZ N VY VZ ' // &
+        'V1 V2 V3 V4 V5 V6 V7 V8 V9 V10'
 
 contains
 
@@ -236,7 +240,31 @@ contains
         type(catalog_t), intent(inout) :: c
         call describe_load_command(c, 'AFFE_CHAR_MECA', 'R')
         call describe_load_command(c, 'AFFE_CHAR_MECA_F', 'FUNC')
+        call describe_kinematic_load(c, 'AFFE_CHAR_CINE', 'R')
+        call describe_kinematic_load(c, 'AFFE_CHAR_CINE_F', 'FUNC')
     end subroutine describe_loads
+
+    !> AFFE_CHAR_CINE / AFFE_CHAR_CINE_F (Code_Aster U4.44.03): imposed values eliminated
+    !> from the system (no Lagrange multipliers), MECA_IMPO only; NOEUD in the real form only.
+    subroutine describe_kinematic_load(c, name, vtype)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: name, vtype
+        call c%command(name, 'char_cine_meca')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%fact('MECA_IMPO', max=MANY, req=.true.)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        if (vtype == 'R') then
+            call c%key('NOEUD', 'TXM', max=MANY)
+            call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA GROUP_NO NOEUD')
+        else
+            call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA GROUP_NO')
+        end if
+        call add_components(c, 'DX DY DZ DRX DRY DRZ', vtype)
+        call c%end_fact()
+    end subroutine describe_kinematic_load
 
     !> AFFE_CHAR_MECA (values are reals) and AFFE_CHAR_MECA_F (values are functions).
     subroutine describe_load_command(c, name, vtype)
@@ -253,7 +281,8 @@ contains
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('NOEUD', 'TXM', max=MANY)
         call c%rule(RULE_UN_PARMI, 'TOUT GROUP_NO GROUP_MA NOEUD')
-        call add_components(c, DOFS, vtype, bound=MAX_LENGTH)   ! displacements, rotations
+        call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
+        call add_components(c, DOFS, vtype, also='BLOCAGE', bound=MAX_LENGTH)  ! lengths, angles
         call c%end_fact()
         call c%fact('FORCE_NODALE', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
@@ -282,11 +311,13 @@ contains
         call c%end_fact()
     end subroutine describe_load_command
 
-    !> Optional components (at least one) of a load factor keyword; real values within
-    !> +-bound when given (functions are checked where they are evaluated, model_loads).
-    subroutine add_components(c, names, vtype, bound)
+    !> Optional components (at least one of them, or of the keywords `also`) of a load
+    !> factor keyword; real values within +-bound when given (functions are checked where
+    !> they are evaluated, model_loads).
+    subroutine add_components(c, names, vtype, also, bound)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: names, vtype
+        character(len=*), intent(in), optional :: also
         real(dp), intent(in), optional :: bound
         integer :: i, j
         i = 1
@@ -299,7 +330,11 @@ contains
             end if
             i = j + 1
         end do
-        call c%rule(RULE_AU_MOINS_UN, names)
+        if (present(also)) then
+            call c%rule(RULE_AU_MOINS_UN, names // ' ' // also)
+        else
+            call c%rule(RULE_AU_MOINS_UN, names)
+        end if
     end subroutine add_components
 
     subroutine describe_analyses(c)
@@ -309,7 +344,7 @@ contains
         call c%key('CHAM_MATER', 'cham_mater')
         call c%key('CARA_ELEM', 'cara_elem')
         call c%fact('EXCIT', max=MANY, req=.true.)
-        call c%key('CHARGE', 'char_meca', req=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
         call c%key('FONC_MULT', 'FUNC')
         call c%end_fact()
         call c%key('LIST_INST', 'listr8')
@@ -325,12 +360,12 @@ contains
         call c%key('CHAM_MATER', 'cham_mater', req=.true.)
         call c%key('CARA_ELEM', 'cara_elem')
         call c%fact('EXCIT', max=MANY, req=.true.)
-        call c%key('CHARGE', 'char_meca', req=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
         call c%key('FONC_MULT', 'FUNC')
         call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
         call c%end_fact()
         call c%fact('COMPORTEMENT', max=MANY, req=.true.)
-        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC')
+        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC DIS_CONTACT')
         call c%key('DEFORMATION', 'TXM', def='PETIT', into='PETIT')
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
@@ -356,7 +391,6 @@ contains
         call c%key('RESI_GLOB_MAXI', 'R', vmin=0.0_dp)
         call c%key('ITER_GLOB_MAXI', 'I', def='10', vmin=0.0_dp)   ! Code_Aster default
         call c%key('ARRET', 'TXM', def='OUI', into=OUI_NON)
-        call c%rule(RULE_EXCLUS, 'RESI_GLOB_RELA RESI_GLOB_MAXI')
         call c%end_fact()
         call describe_solver(c)
         call c%key('INFO', 'I', def='1', into='1 2')
@@ -399,12 +433,17 @@ contains
         call c%key('INST', 'R')
         call c%key('NUME_ORDRE', 'I')
         call c%rule(RULE_UN_PARMI, 'INST NUME_ORDRE')
-        call c%key('NOM_CHAM', 'TXM', req=.true., into='DEPL FORC_NODA REAC_NODA')
-        call c%key('NOM_CMP', 'TXM', req=.true., &
-                   into='DX DY DZ DRX DRY DRZ')
+        ! nodal fields at GROUP_NO / NOEUD; the spring fields (SIEF_ELGA, VARI_ELGA) at a
+        ! cell (GROUP_MA of one cell, or MAILLE) and POINT (test_resu_command)
+        call c%key('NOM_CHAM', 'TXM', req=.true., &
+                   into='DEPL FORC_NODA REAC_NODA SIEF_ELGA VARI_ELGA')
+        call c%key('NOM_CMP', 'TXM', req=.true., into=RESULT_COMPONENTS)
         call c%key('GROUP_NO', 'TXM')
         call c%key('NOEUD', 'TXM')
-        call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD')
+        call c%key('GROUP_MA', 'TXM')
+        call c%key('MAILLE', 'TXM')
+        call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD GROUP_MA MAILLE')
+        call c%key('POINT', 'I')
         call c%key('VALE_CALC', 'R', req=.true.)
         call c%key('TOLE_MACHINE', 'R', def='1.0E-6', vmin=0.0_dp)     ! Code_Aster default
         call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
@@ -422,12 +461,13 @@ contains
         call c%key('PROC0', 'TXM', into=OUI_NON, noop=.true.)
         call c%fact('RESU', max=MANY, req=.true.)
         call c%key('RESULTAT', 'RESU', req=.true.)
-        call c%key('NOM_CHAM', 'TXM', max=MANY, into='DEPL FORC_NODA REAC_NODA')
+        call c%key('NOM_CHAM', 'TXM', max=MANY, &
+                   into='DEPL FORC_NODA REAC_NODA SIEF_ELGA VARI_ELGA')
         call c%key('INST', 'R', max=MANY)
         call c%key('NUME_ORDRE', 'I', max=MANY)
         call c%rule(RULE_EXCLUS, 'INST NUME_ORDRE')
         call c%key('GROUP_NO', 'TXM', max=MANY)
-        call c%key('NOM_CMP', 'TXM', max=MANY, into='DX DY DZ DRX DRY DRZ')
+        call c%key('NOM_CMP', 'TXM', max=MANY, into=RESULT_COMPONENTS)
         call c%end_fact()
     end subroutine describe_outputs
 

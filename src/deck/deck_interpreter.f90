@@ -10,6 +10,7 @@ module deck_interpreter
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp, i4, i8
     use strings, only: string_t, to_text
+    use system_error, only: readable_errno, errno_text
     use status, only: status_t, set_error, add_context, STATUS_DECK_ERROR, &
         STATUS_NOT_IMPLEMENTED, STATUS_INTERNAL, STATUS_IO_ERROR
     use deck_lexer, only: check_bytes
@@ -79,14 +80,19 @@ contains
         character(len=*), intent(in) :: path, what
         character(len=:), allocatable, intent(out) :: text
         type(status_t), intent(out) :: st
-        integer :: unit, ios, length
-        character(len=256) :: msg
+        integer :: unit, ios, length, code
         text = ''
-        open (newunit=unit, file=path, access='stream', form='unformatted', &
-              status='old', action='read', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
+        ! the system's reason, once (the Fortran message would repeat the path)
+        code = readable_errno(path)
+        if (code /= 0) then
             call set_error(st, STATUS_IO_ERROR, 'cannot open ' // what // ' ' // path // &
-                           ': ' // trim(msg))
+                           ': ' // errno_text(code))
+            return
+        end if
+        open (newunit=unit, file=path, access='stream', form='unformatted', &
+              status='old', action='read', iostat=ios)
+        if (ios /= 0) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot open ' // what // ' ' // path)
             return
         end if
         inquire (unit=unit, size=length)

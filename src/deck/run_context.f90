@@ -14,6 +14,7 @@ module run_context
     use kinds, only: i4, i8
     use strings, only: string_t, to_text, ends_with
     use run_deadline, only: deadline_t
+    use progress, only: progress_t
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_INTERNAL
     use atomic_file, only: atomic_file_t
     use deck_ast, only: ast_t
@@ -110,6 +111,9 @@ module run_context
         integer(i8) :: built = 0                   !< sequence items built in this pass
         integer(i8) :: next_list = 0               !< identities of lists (append)
         type(deadline_t) :: deadline               !< P time_limit of an export file
+        !> Where long work reports its progress (cli's reporter; null: nobody listens).
+        !> A pointer, so that handlers can hand it down to the analyses.
+        class(progress_t), pointer :: progress => null()
         !> Result files (MED) written so far in this run: a later IMPR_RESU adds to them, as
         !> Code_Aster adds to the file of a unit, instead of replacing them.
         type(string_t), allocatable :: result_files(:)
@@ -274,11 +278,14 @@ contains
     end function ctx_output_path
 
     !> Writes one line to the .mess (nothing during the check pass or without a file).
+    !> Each line is flushed: the .mess grows as the run goes (its temporary name, see
+    !> atomic_file; the final name appears when the run ends).
     subroutine ctx_write_mess(self, line)
         class(run_context_t), intent(in) :: self
         character(len=*), intent(in) :: line
         if (self%checking) return
         call self%mess%write_line(line)
+        call self%mess%flush()
     end subroutine ctx_write_mess
 
     !> A located warning ("mesh.mail:12: warning: ..."): a line of the .mess, and of stderr

@@ -28,7 +28,8 @@ module element_dis_choc
     implicit none
     private
 
-    public :: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_poi1, dis_choc_2d_poi1
+    public :: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_poi1, dis_choc_2d_poi1, &
+        dis_choc_seg2_gap
 
     !> Largest space dimension (size of the work arrays of the law).
     integer(i4), parameter :: MAX_DIM = 3
@@ -207,11 +208,7 @@ contains
         do i = 1, n
             t = t + r(i) * e(i)
         end do
-        if (abs(d0) <= epsilon(1.0_dp) * scale) then
-            gap = t
-        else
-            gap = d0 + t
-        end if
+        gap = contact_gap(d0, scale, t)
         closed = gap <= 0.0_dp
         fn = 0.0_dp
         f2 = 0.0_dp
@@ -233,6 +230,41 @@ contains
             f2(i) = fn * e(i) + t
         end do
     end subroutine choc_law
+
+    !> The gap d = d0 + t of the law (module header): an initial gap |d0| <= eps * scale is
+    !> taken as 0; the normal motion t is exact relative to itself.
+    pure real(dp) function contact_gap(d0, scale, t) result(gap)
+        real(dp), intent(in) :: d0, scale, t
+        if (abs(d0) <= epsilon(1.0_dp) * scale) then
+            gap = t
+        else
+            gap = d0 + t
+        end if
+    end function contact_gap
+
+    !> The normal gap d of a SEG2 spring at displacements ue (as dis_choc_seg2 computes it;
+    !> the V1 internal variable of element_spring_fields).
+    !>  n      : in, 3 (DIS_T) or 2 (2D_DIS_T)
+    !>  coords : in, coords(1:n, 2) node coordinates;  ue : in, ue(2n) displacements
+    !>  dist1, dist2 : in, DIS_CONTACT DIST_1, DIST_2
+    !>  gap    : out, d (0 for a zero-length segment, which dis_choc_seg2 refuses)
+    pure subroutine dis_choc_seg2_gap(n, coords, ue, dist1, dist2, gap)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: coords(n, 2), ue(2 * n), dist1, dist2
+        real(dp), intent(out) :: gap
+        real(dp) :: e(MAX_DIM), length, t
+        integer(i4) :: i
+        gap = 0.0_dp
+        e(1:n) = coords(:, 2) - coords(:, 1)
+        length = norm2(e(1:n))
+        if (.not. length > 0.0_dp) return
+        e(1:n) = e(1:n) / length              ! the same operations as choc_segment
+        t = 0.0_dp
+        do i = 1, n
+            t = t + (ue(n + i) - ue(i)) * e(i)
+        end do
+        gap = contact_gap(length - (dist1 + dist2), length, t)
+    end subroutine dis_choc_seg2_gap
 
     !> c(1:n, 1:n) = a b for n x n matrices (n <= MAX_DIM), sums in ascending order.
     pure subroutine small_matmul(n, a, b, c)

@@ -1,101 +1,123 @@
-!> Load integration on plate cells (FORCE_COQUE: PRES, FX/FY/FZ) and on 2D edges
-!> (FORCE_CONTOUR: FX, FY per unit length, unit depth).
+!> Load integration on plate cells (FORCE_COQUE: PRES, FX/FY/FZ; PRES_REP: PRES) and on 2D
+!> edges (FORCE_CONTOUR: FX, FY per unit length, unit depth).
 !>
-!> Two steps so the caller can evaluate load functions (formulas of X, Y, Z, INST) at the
-!> integration points: (1) *_load_points gives the points in global space and their weights
-!> (rule weight times the Jacobian, i.e. area or length measure); (2) *_forces turns the
-!> values at those points into equivalent nodal forces f_i = sum_g N_i(g) q_g w_g with the
-!> element's own linear (TRIA3, SEG2) / bilinear (QUAD4) interpolation N_i.
-!> Rules: QUAD4 3x3 Gauss (N_i q J has degree <= 5 per direction for q quadratic on any
-!> bilinear cell: exact); TRIA3 6-point degree-4 rule (N_i q of degree 3: exact); SEG2
-!> 2-point Gauss (N_i q of degree 3: exact). Pressure: force = -PRES n, n the element
-!> normal of element_plate (right-hand rule on the node order), so a positive pressure
-!> pushes against n. Only translations receive forces: fe = (FX1, FY1, FZ1, FX2, ...).
+!> Plates, as Code_Aster's DKT/DKQ elements (te0032, options CHAR_MECA_FRCO3D / FFCO3D /
+!> PRES_R; routines dxtfor, dxqfor): the load is known by its values q_j at the cell's NODES
+!> (a function is evaluated there, a constant is the same at every node) and turned into
+!> nodal forces f_i = sum_j W_ij q_j, componentwise:
+!>   TRIA3 (DKT): lumped, W = diag(A/3);
+!>   QUAD4 (DKQ): the cell is cut into its 4 corner triangles T_k = (k-1, k, k+1), which
+!>     cover it twice; on each, the consistent weights of the linear triangle
+!>     (A_k/6 on the diagonal, A_k/12 off it) are summed and halved.
+!> A_k are the areas in the cell's local plane (element_plate's frame). For a field linear
+!> over the cell both give its exact resultant; the DKQ weights also give its exact first
+!> moments. A pressure acts against the element normal n (right-hand rule on the node
+!> order): q_j = -PRES_j n. SSNL130 model A (P = 5 (y - 2)^2 at the nodes of the 4 x 16
+!> grid): resultant 855/64 N, where the exact integral of P is 40/3 N (ssnl130.md).
+!> Edges: the load is evaluated at the 2 Gauss points of the SEG2 and integrated with the
+!> linear shape functions, f_i = sum_g N_i(g) q_g w_g (exact for q quadratic), as Code_Aster
+!> integrates FORCE_CONTOUR on plane elements.
+!> Only translations receive forces: fe = (FX1, FY1, FZ1, FX2, ...) in global components.
 module element_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use element_quadrature, only: gauss_quad, dunavant_tria6, gauss_line
-    use element_plane_quad4, only: quad4_shape
+    use element_quadrature, only: gauss_line
     use element_plate, only: plate_local_frame
     implicit none
     private
 
-    !> Largest number of load points of a plate cell (QUAD4: 9, TRIA3: 6) and of an edge.
-    integer(i4), parameter, public :: PLATE_LOAD_MAX_POINTS = 9
+    !> Number of Gauss points of an edge (FORCE_CONTOUR).
     integer(i4), parameter, public :: EDGE_POINT_COUNT = 2
 
-    public :: plate_load_point_count, plate_load_points, plate_pressure_forces
-    public :: plate_surface_forces, edge_load_points, edge_line_forces
+    public :: plate_load_weights, plate_nodal_forces, plate_nodal_pressure
+    public :: edge_load_points, edge_line_forces
 
 contains
 
-    !> Number of load points of a plate cell: 9 for QUAD4 (nn = 4), 6 for TRIA3 (nn = 3).
-    pure integer(i4) function plate_load_point_count(nn)
-        integer(i4), intent(in) :: nn
-        plate_load_point_count = merge(9_i4, 6_i4, nn == 4)
-    end function plate_load_point_count
-
-    !> Load points of a plate cell.
+    !> Weights W(i, j) of a plate cell (see the module header): f_i = sum_j W(i, j) q_j.
     !>  coords : in, coords(1:3, nn) global node coordinates; nn : in, 3 or 4
-    !>  xg     : out, xg(1:3, npt) global coordinates of the points (npt =
-    !>           plate_load_point_count(nn); size >= npt)
-    !>  wg     : out, wg(npt) weight times the area Jacobian |dx/dxi x dx/deta|
-    !>  st     : out, STATUS_MODEL_ERROR for a degenerate cell
-    subroutine plate_load_points(coords, nn, xg, wg, st)
+    !>  w      : out, w(nn, nn) (symmetric; its entries sum to the cell's area)
+    !>  normal : out, the unit normal n of the cell's local frame
+    !>  st     : out, STATUS_MODEL_ERROR for a degenerate cell (zero area: no frame)
+    subroutine plate_load_weights(coords, nn, w, normal, st)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: coords(3, nn)
-        real(dp), intent(out) :: xg(:, :), wg(:)
+        real(dp), intent(out) :: w(nn, nn), normal(3)
         type(status_t), intent(out) :: st
-        real(dp) :: n(4, PLATE_LOAD_MAX_POINTS)
-        call plate_rule(coords, nn, xg, wg, n, st)
-    end subroutine plate_load_points
-
-    !> Nodal forces of a pressure on a plate cell: f_i = -n sum_g N_i(g) p_g w_g.
-    !>  coords, nn : in, as plate_load_points
-    !>  pres       : in, pres(npt) pressure values at the points of plate_load_points
-    !>  fe         : out, fe(3nn) forces on (DX, DY, DZ) node by node, global frame
-    !>  st         : out, degenerate cell
-    subroutine plate_pressure_forces(coords, nn, pres, fe, st)
-        integer(i4), intent(in) :: nn
-        real(dp), intent(in) :: coords(3, nn), pres(:)
-        real(dp), intent(out) :: fe(3 * nn)
-        type(status_t), intent(out) :: st
-        real(dp) :: xg(3, PLATE_LOAD_MAX_POINTS), wg(PLATE_LOAD_MAX_POINTS)
-        real(dp) :: n(4, PLATE_LOAD_MAX_POINTS), rot(3, 3), xy(2, nn), s
-        integer(i4) :: i, npt
-        fe = 0.0_dp
+        real(dp) :: rot(3, 3), xy(2, nn), area
+        integer(i4) :: k, km, kp, corner(3), i, j
+        w = 0.0_dp
+        normal = 0.0_dp
         call plate_local_frame(coords, nn, rot, xy, st)
         if (st%failed()) return
-        call plate_rule(coords, nn, xg, wg, n, st)
-        if (st%failed()) return
-        npt = plate_load_point_count(nn)
-        do i = 1, nn
-            s = sum(n(i, 1:npt) * pres(1:npt) * wg(1:npt))
-            fe(3 * i - 2:3 * i) = -s * rot(3, :)
-        end do
-    end subroutine plate_pressure_forces
-
-    !> Nodal forces of a surface force (FORCE_COQUE FX, FY, FZ, global components).
-    !>  coords, nn : in, as plate_load_points
-    !>  fsurf      : in, fsurf(1:3, npt) force per unit area at the points
-    !>  fe         : out, fe(3nn); st : out, degenerate cell
-    subroutine plate_surface_forces(coords, nn, fsurf, fe, st)
-        integer(i4), intent(in) :: nn
-        real(dp), intent(in) :: coords(3, nn), fsurf(:, :)
-        real(dp), intent(out) :: fe(3 * nn)
-        type(status_t), intent(out) :: st
-        real(dp) :: xg(3, PLATE_LOAD_MAX_POINTS), wg(PLATE_LOAD_MAX_POINTS)
-        real(dp) :: n(4, PLATE_LOAD_MAX_POINTS)
-        integer(i4) :: i, g
-        fe = 0.0_dp
-        call plate_rule(coords, nn, xg, wg, n, st)
-        if (st%failed()) return
-        do i = 1, nn
-            do g = 1, plate_load_point_count(nn)
-                fe(3 * i - 2:3 * i) = fe(3 * i - 2:3 * i) + n(i, g) * wg(g) * fsurf(1:3, g)
+        normal = rot(3, :)
+        if (nn == 3) then
+            area = triangle_area(xy(:, 1), xy(:, 2), xy(:, 3))
+            do k = 1, 3
+                w(k, k) = area / 3.0_dp
+            end do
+            return
+        end if
+        do k = 1, 4
+            km = modulo(k - 2, 4) + 1
+            kp = modulo(k, 4) + 1
+            corner = [km, k, kp]
+            area = triangle_area(xy(:, km), xy(:, k), xy(:, kp))
+            do j = 1, 3
+                do i = 1, 3
+                    w(corner(i), corner(j)) = w(corner(i), corner(j)) + 0.5_dp * area * &
+                        merge(1.0_dp / 6.0_dp, 1.0_dp / 12.0_dp, i == j)
+                end do
             end do
         end do
-    end subroutine plate_surface_forces
+    end subroutine plate_load_weights
+
+    !> Nodal forces of a surface force known at the nodes (FORCE_COQUE FX, FY, FZ).
+    !>  coords, nn : in, as plate_load_weights
+    !>  q          : in, q(1:3, nn) force per unit area at each node, global components
+    !>  fe         : out, fe(3nn) forces on (DX, DY, DZ) node by node
+    !>  st         : out, degenerate cell
+    subroutine plate_nodal_forces(coords, nn, q, fe, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn), q(3, nn)
+        real(dp), intent(out) :: fe(3 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: w(nn, nn), normal(3)
+        integer(i4) :: i, j
+        fe = 0.0_dp
+        call plate_load_weights(coords, nn, w, normal, st)
+        if (st%failed()) return
+        do i = 1, nn
+            do j = 1, nn
+                fe(3 * i - 2:3 * i) = fe(3 * i - 2:3 * i) + w(i, j) * q(:, j)
+            end do
+        end do
+    end subroutine plate_nodal_forces
+
+    !> Nodal forces of a pressure known at the nodes (FORCE_COQUE / PRES_REP PRES):
+    !> q_j = -PRES_j n.
+    !>  pres : in, pres(nn) pressure at each node; other arguments as plate_nodal_forces
+    subroutine plate_nodal_pressure(coords, nn, pres, fe, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn), pres(nn)
+        real(dp), intent(out) :: fe(3 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: w(nn, nn), normal(3), s
+        integer(i4) :: i
+        fe = 0.0_dp
+        call plate_load_weights(coords, nn, w, normal, st)
+        if (st%failed()) return
+        do i = 1, nn
+            s = sum(w(i, :) * pres)
+            fe(3 * i - 2:3 * i) = -s * normal
+        end do
+    end subroutine plate_nodal_pressure
+
+    !> Signed area of the triangle (a, b, c) in the plane (positive counter-clockwise).
+    pure real(dp) function triangle_area(a, b, c)
+        real(dp), intent(in) :: a(2), b(2), c(2)
+        triangle_area = 0.5_dp * ((b(1) - a(1)) * (c(2) - a(2)) - (b(2) - a(2)) * (c(1) - a(1)))
+    end function triangle_area
 
     !> Load points of a 2D edge (SEG2), 2-point Gauss.
     !>  coords : in, coords(1:2, 2); xg : out, xg(1:2, 2); wg : out, wg(2) = weight * L/2
@@ -125,45 +147,6 @@ contains
             fe(2 * i) = sum(n(i, :) * wg * fline(2, :))
         end do
     end subroutine edge_line_forces
-
-    !> Points, weights (times |J|) and shape-function values n(i, g) of a plate cell.
-    subroutine plate_rule(coords, nn, xg, wg, n, st)
-        integer(i4), intent(in) :: nn
-        real(dp), intent(in) :: coords(3, nn)
-        real(dp), intent(out) :: xg(:, :), wg(:), n(4, PLATE_LOAD_MAX_POINTS)
-        type(status_t), intent(out) :: st
-        real(dp) :: xi(2, PLATE_LOAD_MAX_POINTS), w(PLATE_LOAD_MAX_POINTS), dn(2, 4), t(3, 2)
-        real(dp) :: area
-        integer(i4) :: g, npt
-        n = 0.0_dp
-        npt = plate_load_point_count(nn)
-        if (nn == 4) then
-            call gauss_quad(3_i4, xi, w)
-        else
-            call dunavant_tria6(xi, w)
-        end if
-        do g = 1, npt
-            if (nn == 4) then
-                call quad4_shape(xi(1, g), xi(2, g), n(1:4, g), dn)
-            else
-                n(1:3, g) = [1.0_dp - xi(1, g) - xi(2, g), xi(1, g), xi(2, g)]
-                dn(:, 1) = [-1.0_dp, -1.0_dp]
-                dn(:, 2) = [1.0_dp, 0.0_dp]
-                dn(:, 3) = [0.0_dp, 1.0_dp]
-            end if
-            xg(1:3, g) = matmul(coords, n(1:nn, g))
-            t = matmul(coords, transpose(dn(:, 1:nn)))
-            area = norm2([t(2, 1) * t(3, 2) - t(3, 1) * t(2, 2), &
-                          t(3, 1) * t(1, 2) - t(1, 1) * t(3, 2), &
-                          t(1, 1) * t(2, 2) - t(2, 1) * t(1, 2)])
-            if (.not. area > 0.0_dp) then
-                call set_error(st, STATUS_MODEL_ERROR, 'plate cell with a zero-area ' // &
-                    'point: cannot integrate the load (degenerate cell)')
-                return
-            end if
-            wg(g) = w(g) * area
-        end do
-    end subroutine plate_rule
 
     !> Points, weights (times L/2) and shape-function values of a 2D edge.
     subroutine edge_rule(coords, xg, wg, n, st)

@@ -2,9 +2,14 @@
 !>
 !> 2 DOF per node (DX, DY), element vector ordered node by node: (DX1, DY1, DX2, DY2, ...).
 !> Isoparametric bilinear interpolation, full 2x2 Gauss integration, unit depth (the
-!> stiffness is per unit length in z). Node order counter-clockwise, reference corners
-!> (-1,-1), (1,-1), (1,1), (-1,1). Reference: Zienkiewicz & Taylor, The Finite Element
-!> Method vol. 1, ch. 6 (isoparametric Q4). The membrane routine is shared with the plates.
+!> stiffness is per unit length in z). Reference corners (-1,-1), (1,-1), (1,1), (-1,1).
+!> Reference: Zienkiewicz & Taylor, The Finite Element Method vol. 1, ch. 6 (isoparametric
+!> Q4). The membrane routine is shared with the plates.
+!> Node order: counter-clockwise or clockwise. As Code_Aster (dfdm2d: derivatives with the
+!> signed Jacobian determinant, weight |det J| w), a clockwise cell gives the same matrix as
+!> its counter-clockwise renumbering (SSNL130 B's MED mesh has clockwise QUAD4). A cell
+!> whose Jacobian vanishes or changes sign between Gauss points (coincident or aligned
+!> nodes, a folded or non-convex cell) is refused.
 module element_plane_quad4
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -14,6 +19,11 @@ module element_plane_quad4
 
     public :: plane_elasticity_matrix, quad4_shape, membrane_quad4_stiffness
     public :: plane_quad4_stiffness, plane_quad4_internal_forces
+
+    !> A Jacobian determinant below this fraction of the cell's squared size (its longer
+    !> diagonal squared) is zero: the cell has collapsed (~1e3 machine epsilons, the
+    !> threshold element_plate uses for a plate cell's area).
+    real(dp), parameter :: JACOBIAN_ZERO = 1.0e3_dp * epsilon(1.0_dp)
 
 contains
 
@@ -67,29 +77,35 @@ contains
 
     !> Stiffness of a bilinear quadrilateral in its plane for a given D (2x2 Gauss):
     !> K = sum_g B^T D B detJ w_g. The caller scales D (depth 1, or the plate thickness).
-    !>  xy   : in, xy(1:2, 4) node coordinates in the plane (counter-clockwise)
+    !>  xy   : in, xy(1:2, 4) node coordinates in the plane (either orientation)
     !>  dmat : in, 3x3 constitutive matrix (per unit depth)
     !>  km   : out, 8x8 stiffness, DOF order (u1, v1, u2, v2, ...)
-    !>  st   : out, STATUS_MODEL_ERROR if detJ <= 0 at a Gauss point (bad node order or
-    !>         a degenerate / non-convex cell)
+    !>  st   : out, STATUS_MODEL_ERROR if det J is zero (below JACOBIAN_ZERO of the cell's
+    !>         squared size) or changes sign at the Gauss points (a degenerate cell)
     subroutine membrane_quad4_stiffness(xy, dmat, km, st)
         real(dp), intent(in) :: xy(2, 4), dmat(3, 3)
         real(dp), intent(out) :: km(8, 8)
         type(status_t), intent(out) :: st
-        real(dp) :: xg(2, 4), wg(4), n(4), dn(2, 4), jac(2, 2), det, dxy(2, 4), b(3, 8)
+        real(dp) :: xg(2, 4), wg(4), n(4), dn(2, 4), jac(2, 2), det(4), dxy(2, 4, 4), b(3, 8)
+        real(dp) :: size2
         integer(i4) :: g
         km = 0.0_dp
         call gauss_quad(2_i4, xg, wg)
         do g = 1, 4
             call quad4_shape(xg(1, g), xg(2, g), n, dn)
-            call physical_derivatives(xy, dn, jac, det, dxy)
-            if (.not. det > 0.0_dp) then
-                call set_error(st, STATUS_MODEL_ERROR, 'QUAD4 cell has a non-positive ' // &
-                    'Jacobian (nodes must be counter-clockwise and the cell convex)')
-                return
-            end if
-            call membrane_b(dxy, b)
-            km = km + matmul(transpose(b), matmul(dmat, b)) * (det * wg(g))
+            call physical_derivatives(xy, dn, jac, det(g), dxy(:, :, g))
+        end do
+        size2 = max(sum((xy(:, 3) - xy(:, 1))**2), sum((xy(:, 4) - xy(:, 2))**2))
+        if (.not. minval(abs(det)) > JACOBIAN_ZERO * size2 .or. &
+            (any(det > 0.0_dp) .and. any(det < 0.0_dp))) then
+            call set_error(st, STATUS_MODEL_ERROR, 'QUAD4 cell is degenerate: its ' // &
+                'Jacobian is zero or changes sign inside it (coincident or aligned nodes, ' // &
+                'or a folded or non-convex cell)')
+            return
+        end if
+        do g = 1, 4
+            call membrane_b(dxy(:, :, g), b)
+            km = km + matmul(transpose(b), matmul(dmat, b)) * (abs(det(g)) * wg(g))
         end do
     end subroutine membrane_quad4_stiffness
 
@@ -126,15 +142,15 @@ contains
         fe = matmul(ke, ue)
     end subroutine plane_quad4_internal_forces
 
-    !> Jacobian J(i,j) = d x_j / d xi_i, its determinant and the x/y derivatives of the
-    !> shape functions (dxy = J^-1 dn).
+    !> Jacobian J(i,j) = d x_j / d xi_i, its (signed) determinant and the x/y derivatives of
+    !> the shape functions (dxy = J^-1 dn; 0 when det = 0).
     pure subroutine physical_derivatives(xy, dn, jac, det, dxy)
         real(dp), intent(in) :: xy(2, 4), dn(2, 4)
         real(dp), intent(out) :: jac(2, 2), det, dxy(2, 4)
         jac = matmul(dn, transpose(xy))
         det = jac(1, 1) * jac(2, 2) - jac(1, 2) * jac(2, 1)
         dxy = 0.0_dp
-        if (.not. det > 0.0_dp) return
+        if (.not. abs(det) > 0.0_dp) return
         dxy(1, :) = (jac(2, 2) * dn(1, :) - jac(1, 2) * dn(2, :)) / det
         dxy(2, :) = (-jac(2, 1) * dn(1, :) + jac(1, 1) * dn(2, :)) / det
     end subroutine physical_derivatives

@@ -8,7 +8,7 @@ module element_quadrature
     implicit none
     private
 
-    public :: gauss_line, gauss_quad, hammer_tria3, dunavant_tria6
+    public :: gauss_line, gauss_quad, hammer_tria3
 
 contains
 
@@ -58,29 +58,5 @@ contains
         xi(:, 3) = [1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp]
         w(1:3) = 1.0_dp / 6.0_dp
     end subroutine hammer_tria3
-
-    !> 6-point symmetric rule on the reference triangle, exact to degree 4 (Dunavant 1985,
-    !> "High degree efficient symmetrical Gaussian quadrature rules for the triangle", p = 4).
-    !> Used for loads: N_i (degree 1) times a pressure of degree <= 2 has degree 3.
-    !>  xi : out, xi(1:2, 6); w : out, w(6) (sum 1/2)
-    pure subroutine dunavant_tria6(xi, w)
-        real(dp), intent(out) :: xi(:, :), w(:)
-        ! Closed forms of Dunavant's degree-4 points and weights (a1 = 0.44594849...,
-        ! a2 = 0.09157621..., w1 = 0.22338158..., w2 = 0.10995174...).
-        real(dp), parameter :: s = sqrt(38.0_dp - 44.0_dp * sqrt(0.4_dp))
-        real(dp), parameter :: t = sqrt(213125.0_dp - 53320.0_dp * sqrt(10.0_dp))
-        real(dp), parameter :: a1 = (8.0_dp - sqrt(10.0_dp) + s) / 18.0_dp
-        real(dp), parameter :: a2 = (8.0_dp - sqrt(10.0_dp) - s) / 18.0_dp
-        real(dp), parameter :: w1 = (620.0_dp + t) / 3720.0_dp
-        real(dp), parameter :: w2 = (620.0_dp - t) / 3720.0_dp
-        xi(:, 1) = [a1, a1]
-        xi(:, 2) = [1.0_dp - 2.0_dp * a1, a1]
-        xi(:, 3) = [a1, 1.0_dp - 2.0_dp * a1]
-        xi(:, 4) = [a2, a2]
-        xi(:, 5) = [1.0_dp - 2.0_dp * a2, a2]
-        xi(:, 6) = [a2, 1.0_dp - 2.0_dp * a2]
-        w(1:3) = 0.5_dp * w1
-        w(4:6) = 0.5_dp * w2
-    end subroutine dunavant_tria6
 
 end module element_quadrature

@@ -6,6 +6,7 @@
 !> the format allows it. Lines may have any length.
 module mesh_text_lexer
     use kinds, only: dp, i4, i8
+    use system_error, only: readable_errno, errno_text
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_MESH_ERROR
     implicit none
     private
@@ -28,15 +29,21 @@ contains
         type(text_lexer_t), intent(out) :: lex
         character(len=*), intent(in) :: path
         type(status_t), intent(inout) :: st
-        integer :: unit, ios
+        integer :: unit, ios, code
         integer(i8) :: nbytes
         character(len=256) :: msg
         lex%file = path
-        open (newunit=unit, file=path, access='stream', form='unformatted', status='old', &
-              action='read', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
+        ! the system's reason, once (the Fortran message would repeat the path)
+        code = readable_errno(path)
+        if (code /= 0) then
             call set_error(st, STATUS_IO_ERROR, 'cannot open mesh file ' // path // ': ' // &
-                           trim(msg))
+                           errno_text(code))
+            return
+        end if
+        open (newunit=unit, file=path, access='stream', form='unformatted', status='old', &
+              action='read', iostat=ios)
+        if (ios /= 0) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot open mesh file ' // path)
             return
         end if
         inquire (unit=unit, size=nbytes)

@@ -1,5 +1,7 @@
 !> Command handlers AFFE_CHAR_MECA (real values) and AFFE_CHAR_MECA_F (function values):
-!> a char_meca concept holding a load_set_t (model_loads) and the model it was made on.
+!> a char_meca concept holding a load_set_t (model_loads) and the model it was made on;
+!> AFFE_CHAR_CINE / AFFE_CHAR_CINE_F (MECA_IMPO): the same concept typed char_cine_meca,
+!> whose load set is kinematic (imposed values eliminated, Code_Aster U4.44.03).
 !> Function values point at function concepts owned by the run context (model_loads).
 module load_commands
     use kinds, only: dp, i4
@@ -25,12 +27,13 @@ module load_commands
     type, extends(concept_t), public :: char_meca_concept_t
         type(load_set_t) :: loads
         class(concept_t), pointer :: model => null()   !< MODELE (owned by the run context)
+        logical :: kinematic = .false.                 !< AFFE_CHAR_CINE(_F): char_cine_meca
     contains
         procedure :: type_name => char_meca_type_name
         procedure :: summary => char_meca_summary
     end type char_meca_concept_t
 
-    public :: run_affe_char_meca, run_affe_char_meca_f
+    public :: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, run_affe_char_cine_f
 
 contains
 
@@ -38,13 +41,13 @@ contains
         class(char_meca_concept_t), intent(in) :: self
         character(len=:), allocatable :: name
         name = 'char_meca'
-        if (.false.) name = self%name
+        if (self%kinematic) name = 'char_cine_meca'
     end function char_meca_type_name
 
     function char_meca_summary(self) result(text)
         class(char_meca_concept_t), intent(in) :: self
         character(len=:), allocatable :: text
-        text = 'char_meca with ' // to_text(self%loads%n_items) // ' load item(s)'
+        text = self%type_name() // ' with ' // to_text(self%loads%n_items) // ' load item(s)'
     end function char_meca_summary
 
     !> AFFE_CHAR_MECA: DDL_IMPO, FORCE_NODALE, FORCE_COQUE, PRES_REP, FORCE_CONTOUR with reals.
@@ -66,6 +69,56 @@ contains
         type(status_t), intent(out) :: st
         call build_char_meca(ctx, cmd, .true., result, st)
     end subroutine run_affe_char_meca_f
+
+    !> AFFE_CHAR_CINE: MECA_IMPO = _F(TOUT | GROUP_MA | GROUP_NO | NOEUD, DX..DRZ) with reals,
+    !> imposed by elimination (the reactions are f_int - f_ext there, as for DDL_IMPO).
+    !>  st : out, located at the keyword: unknown group/node, a component a node lacks
+    subroutine run_affe_char_cine(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        call build_char_cine(ctx, cmd, .false., result, st)
+    end subroutine run_affe_char_cine
+
+    !> AFFE_CHAR_CINE_F: the same with functions of (INST, X, Y, Z).
+    subroutine run_affe_char_cine_f(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        call build_char_cine(ctx, cmd, .true., result, st)
+    end subroutine run_affe_char_cine_f
+
+    subroutine build_char_cine(ctx, cmd, functions, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        logical, intent(in) :: functions
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        type(char_meca_concept_t), allocatable :: cm
+        class(concept_t), pointer :: p
+        integer(i4) :: i
+        call cmd%get_concept('MODELE', p, st)
+        if (st%failed()) return
+        allocate (cm)
+        cm%model => p
+        cm%kinematic = .true.
+        cm%loads%kinematic = .true.
+        select type (p)
+        type is (model_concept_t)
+            do i = 1, cmd%count('MECA_IMPO')
+                call node_item(cmd%occurrence('MECA_IMPO', i), p, LOAD_DDL_IMPO, &
+                    ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+        class default
+            call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
+            return
+        end select
+        call ctx%write_mess('    ' // cm%summary())
+        call move_alloc(cm, result)
+    end subroutine build_char_cine
 
     subroutine build_char_meca(ctx, cmd, functions, result, st)
         type(run_context_t), intent(inout) :: ctx
@@ -165,17 +218,64 @@ contains
                 label = names(1)%s
             end if
         end if
-        call load_add_item(loads, kind, nodes, index, label)
-        call locate_item(occ, loads, index)
-        do k = 1, size(keys)
-            call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
-            if (st%failed()) return
-            if (occ%has(trim(keys(k)))) then
-                call check_component(occ, mc, nodes, trim(keys(k)), k, st)
+        if (any([(occ%has(trim(keys(k))), k = 1, size(keys))])) then
+            call load_add_item(loads, kind, nodes, index, label)
+            call locate_item(occ, loads, index)
+            do k = 1, size(keys)
+                call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
                 if (st%failed()) return
+                if (occ%has(trim(keys(k)))) then
+                    call check_component(occ, mc, nodes, trim(keys(k)), k, st)
+                    if (st%failed()) return
+                end if
+            end do
+        end if
+        if (occ%has('BLOCAGE')) call blocage_item(occ, mc, nodes, label, keys, loads, st)
+    end subroutine node_item
+
+    !> DDL_IMPO/BLOCAGE = 'DEPLACEMENT' (DX DY DZ) and/or 'ROTATION' (DRX DRY DRZ): 0 on the
+    !> components each node has, skipping the others (Code_Aster caddli). A component also
+    !> given by value in the occurrence, or a BLOCAGE that blocks nothing on any node, is an
+    !> error at BLOCAGE.
+    subroutine blocage_item(occ, mc, nodes, label, keys, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), intent(in) :: nodes(:)
+        character(len=*), intent(in) :: label, keys(:)
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: kinds(:)
+        logical :: blocked(6)
+        integer(i4) :: k, comp, index
+        call occ%get_texts('BLOCAGE', kinds, st)
+        if (st%failed()) return
+        blocked = .false.
+        do k = 1, size(kinds)
+            if (kinds(k)%s == 'DEPLACEMENT') blocked(1:3) = .true.
+            if (kinds(k)%s == 'ROTATION') blocked(4:6) = .true.
+        end do
+        do comp = 1, 6
+            if (blocked(comp) .and. occ%has(trim(keys(comp)))) then
+                call occ%error_at('BLOCAGE', trim(keys(comp)) // ' is given a value and ' // &
+                    'blocked by BLOCAGE as well: give it one or the other', st, &
+                    code=STATUS_MODEL_ERROR)
+                return
             end if
         end do
-    end subroutine node_item
+        if (.not. any(spread(blocked, 2, size(nodes)) .and. &
+                      mc%dofs%equation(:, nodes) /= 0)) then
+            call occ%error_at('BLOCAGE', 'blocks nothing: none of the ' // &
+                to_text(size(nodes, kind=i4)) // ' node(s) has such a component in the ' // &
+                'model', st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        call load_add_item(loads, LOAD_DDL_IMPO, nodes, index, label)
+        call locate_item(occ, loads, index)
+        loads%items(index)%blocage = .true.
+        do comp = 1, 6
+            if (blocked(comp)) call load_set_constant(loads, index, comp, 0.0_dp)
+        end do
+    end subroutine blocage_item
 
     !> A DDL_IMPO or FORCE_NODALE value on a component a node does not have (its elements do
     !> not use it) is an error at the keyword: it would silently do nothing.

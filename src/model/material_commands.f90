@@ -24,7 +24,7 @@ contains
     !> JEU, COULOMB, AMOR_NOR, AMOR_TAN)).
     !>  result : out, a material_concept_t
     !>  st     : out, located at the keyword: E <= 0, NU outside (-1, 0.5), COULOMB /= 0
-    !>           (friction is not built yet: frictionless DIS_CHOC only)
+    !>           (friction is not built yet: frictionless DIS_CHOC and DIS_CONTACT only)
     subroutine run_defi_materiau(ctx, cmd, result, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
@@ -81,7 +81,7 @@ contains
             if (st%failed()) return
             if (abs(dc%coulomb) > 0.0_dp) then
                 call occ%error_at('COULOMB', 'friction is not built yet: parasol has ' // &
-                    'frictionless DIS_CHOC only (COULOMB must be 0, got ' // &
+                    'frictionless DIS_CHOC and DIS_CONTACT only (COULOMB must be 0, got ' // &
                     to_text(dc%coulomb) // ')', st, code=STATUS_NOT_IMPLEMENTED)
                 return
             end if

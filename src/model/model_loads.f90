@@ -11,8 +11,12 @@
 !> function concept owned by the run context (the deck's symbol table): the load set never
 !> owns or frees it, and it must not outlive the run context. Functions are bound to the
 !> parameter names LOAD_PARAMETERS once, when the slot is set.
-!> Distributed loads are evaluated at the element's integration points (assembly layer),
-!> nodal ones at the node, always with INST = the end of the step.
+!> Plate loads are evaluated at the cell's nodes, edge loads at the edge's Gauss points
+!> (assembly layer, as Code_Aster), nodal ones at the node, always with INST = the end of the
+!> step. A kinematic set (AFFE_CHAR_CINE / AFFE_CHAR_CINE_F) holds DDL_IMPO items only: its
+!> values are eliminated like DDL_IMPO's (parasol eliminates both), and it may not impose an
+!> equation another load imposes too. A BLOCAGE item (DDL_IMPO/BLOCAGE) imposes 0 on the
+!> components each of its nodes has, skipping the others (Code_Aster caddli).
 module model_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, add_context, STATUS_MODEL_ERROR
@@ -56,12 +60,14 @@ module model_loads
         !> located there): file, line, column, command (AFFE_CHAR_MECA_F) and keyword
         character(len=:), allocatable :: file, command, keyword
         integer(i4) :: line = 0, col = 0
+        logical :: blocage = .false.                 !< DDL_IMPO/BLOCAGE: skip absent components
     end type load_item_t
 
     !> A char_meca concept's content.
     type, public :: load_set_t
         integer(i4) :: n_items = 0
         type(load_item_t), allocatable :: items(:)
+        logical :: kinematic = .false.               !< AFFE_CHAR_CINE(_F)
     end type load_set_t
 
     public :: load_add_item, load_set_constant, load_set_function, load_value_at, &
@@ -110,6 +116,7 @@ contains
         type(load_item_t), intent(inout) :: to
         integer(i4) :: k
         to%kind = from%kind
+        to%blocage = from%blocage
         call move_alloc(from%nodes, to%nodes)
         call move_alloc(from%cells, to%cells)
         call move_alloc(from%group, to%group)

@@ -121,11 +121,12 @@ contains
     !>                 at its centre distance
     !>  spring_cells : in, cells of GROUP_MA_SEG2 / GROUP_MA_POI1
     !>  cara_name    : in, K_T_D_L (SEG2 springs) or K_T_D_N (POI1 springs)
-    !>  vale         : in, 3 values (x, y, z stiffness); 2D springs use the first two
+    !>  vale         : in, KX, KY, KZ for DIS_T springs, KX, KY for 2D_DIS_T springs
     !>  table        : out, one row per raft node, in increasing node number
     !>  st           : out, STATUS_MODEL_ERROR for: unknown or misfitting CARA (K_TR_*: no
-    !>                 DIS_TR), wrong VALE count, zero total measure, a spring with no node on
-    !>                 the raft, a raft node without or with two springs, count mismatch
+    !>                 DIS_TR), a VALE count other than 3 (3D) / 2 (2D), zero total measure,
+    !>                 a spring with no node on the raft, a raft node without or with two
+    !>                 springs, count mismatch
     subroutine compute_rigi_parasol(model, mesh, raft_cells, coefficients, spring_cells, &
                                     cara_name, vale, table, st, spring_group)
         type(model_t), intent(in) :: model
@@ -145,12 +146,6 @@ contains
         if (code == CARA_NONE) then
             call set_error(st, STATUS_MODEL_ERROR, 'CARA ' // cara_name // ' is not ' // &
                 'supported (K_T_D_N, K_T_D_L, K_TR_D_N, K_TR_D_L)', keyword='RIGI_PARASOL/CARA')
-            return
-        end if
-        if (size(vale) /= 3) then
-            call set_error(st, STATUS_MODEL_ERROR, trim(CARA_NAMES(code)) // ' needs 3 ' // &
-                'values in VALE, got ' // to_text(size(vale, kind=i4)), &
-                keyword='RIGI_PARASOL/VALE')
             return
         end if
         call node_shares(mesh, raft_cells, coefficients, share, st)
@@ -173,6 +168,17 @@ contains
                     keyword='RIGI_PARASOL')
                 return
             end if
+        end if
+        ! Code_Aster (acearp): a translational CARA takes KX KY KZ in 3D and KX KY in 2D.
+        ! Code_Aster ignores values beyond those; parasol refuses them, so that a third
+        ! value written for a 2D model (older SSNL130 B decks) is not silently dropped.
+        if (size(vale) /= table%n_values) then
+            call set_error(st, STATUS_MODEL_ERROR, trim(CARA_NAMES(code)) // ' on ' // &
+                trim(merge('2D_DIS_T', 'DIS_T   ', table%n_values == 2)) // ' springs takes ' &
+                // to_text(table%n_values) // ' values in VALE (' // &
+                trim(merge('KX, KY    ', 'KX, KY, KZ', table%n_values == 2)) // '), got ' // &
+                to_text(size(vale, kind=i4)), keyword='RIGI_PARASOL/VALE')
+            return
         end if
         n = count(on_raft, kind=i4)
         table%n = n

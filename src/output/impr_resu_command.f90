@@ -18,7 +18,11 @@
 !> Node fields are built from the equation vectors of the result and its DOF numbering: a
 !> node carries a component when it has an equation for it (node_fields_from_result). A
 !> non-finite value is never written: the command stops with an error naming node and
-!> component instead.
+!> component instead. The element fields of the DIS_CHOC springs (SIEF_ELGA, VARI_ELGA) are
+!> tables per cell and point in the .resu, and cell data for viewers (result_cell_arrays:
+!> one array per component, SPRING_STATUS); VTK and Gmsh files also carry GROUP_<name> for
+!> every cell group. Without NOM_CHAM, viewers get DEPL and, when the result has DIS_CHOC
+!> springs, SIEF_ELGA and VARI_ELGA; the .resu gets DEPL.
 module impr_resu_command
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, i4
@@ -29,9 +33,14 @@ module impr_resu_command
     use run_context, only: run_context_t
     use mesh_types, only: mesh_t, find_node_group, nodes_of_group, node_name, CELL_TYPE_NAMES
     use model_dof_numbering, only: component_index, COMPONENT_NAMES, N_COMPONENTS
-    use analysis_result, only: result_concept_t, result_find
+    use analysis_result, only: result_concept_t, result_find, is_cell_field
+    use element_spring_fields, only: SPRING_POINTS
     use result_data, only: node_field_t, cell_type_from_name
-    use result_table, only: resultat_table_lines
+    use result_table, only: resultat_table_lines, cell_table_lines
+    use result_cell_arrays, only: spring_cell_arrays, group_cell_arrays, split_components, &
+        field_components
+    use result_data, only: cell_array_t
+    use mesh_types, only: cell_name
     use result_vtk, only: write_vtk_series
     use result_gmsh, only: write_gmsh_file
     use result_med, only: med_output_t, med_output_open, med_output_commit, &
@@ -112,7 +121,8 @@ contains
         type(keyword_set_t), intent(in) :: occ
         type(status_t), intent(out) :: st
         type(result_concept_t), pointer :: res
-        type(string_t), allocatable :: fields(:), components(:)
+        type(string_t), allocatable :: fields(:), given(:), components(:), sief_cmps(:), &
+            vari_cmps(:)
         integer(i4), allocatable :: indices(:)
         call result_of_keyword(occ, 'RESULTAT', res, st)
         if (st%failed()) return
@@ -122,22 +132,28 @@ contains
         else
             allocate (fields(1))
             fields(1)%s = DEFAULT_FIELD
+            ! viewers also get the springs' fields: colour by SPRING_STATUS in one click
+            if (format /= 'RESULTAT' .and. size(res%spring_cell) > 0) &
+                fields = [fields, string_t('SIEF_ELGA'), string_t('VARI_ELGA')]
         end if
         call occurrence_instants(occ, res, indices, st)
         if (st%failed()) return
-        allocate (components(0))
-        if (occ%has('NOM_CMP')) call occ%get_texts('NOM_CMP', components, st)
+        allocate (given(0))
+        if (occ%has('NOM_CMP')) call occ%get_texts('NOM_CMP', given, st)
         if (st%failed()) return
-        call impr_resu_components(res, components, st)
+        call split_components(res, fields, given, components, sief_cmps, vari_cmps, st)
+        if (st%ok()) call impr_resu_components(res, components, st)
         if (st%failed()) then
-            call relocate(occ, 'NOM_CMP', st)
+            call relocate(occ, trim(merge('NOM_CMP ', 'NOM_CHAM', occ%has('NOM_CMP'))), st)
             return
         end if
         select case (format)
         case ('VTK', 'GMSH')
-            call write_viewer_file(ctx, format, bound_path, res, fields, components, indices, st)
+            call write_viewer_file(ctx, format, bound_path, res, fields, components, indices, &
+                st, sief_cmps, vari_cmps)
         case default
-            call write_tables(ctx, occ, res, fields, components, indices, st)
+            call write_tables(ctx, occ, res, fields, components, indices, st, sief_cmps, &
+                vari_cmps)
         end select
     end subroutine print_occurrence
 
@@ -164,13 +180,16 @@ contains
     end subroutine occurrence_instants
 
     !> FORMAT='RESULTAT': one table per field and instant in the .resu.
-    subroutine write_tables(ctx, occ, res, fields, components, indices, st)
+    !>  sief_cmps, vari_cmps : in, the components of the element fields (empty: all)
+    subroutine write_tables(ctx, occ, res, fields, components, indices, st, sief_cmps, &
+                            vari_cmps)
         type(run_context_t), intent(inout) :: ctx
         type(keyword_set_t), intent(in) :: occ
         type(result_concept_t), intent(in) :: res
         type(string_t), intent(in) :: fields(:), components(:)
         integer(i4), intent(in) :: indices(:)
         type(status_t), intent(out) :: st
+        type(string_t), intent(in) :: sief_cmps(:), vari_cmps(:)
         type(string_t), allocatable :: groups(:), names(:), lines(:)
         integer(i4), allocatable :: nodes(:)
         type(node_field_t) :: field
@@ -190,6 +209,17 @@ contains
         end if
         do f = 1, size(fields)
             do k = 1, size(indices)
+                if (is_cell_field(fields(f)%s)) then
+                    if (fields(f)%s == 'SIEF_ELGA') then
+                        call spring_table(res, fields(f)%s, sief_cmps, indices(k), lines)
+                    else
+                        call spring_table(res, fields(f)%s, vari_cmps, indices(k), lines)
+                    end if
+                    do i = 1, size(lines)
+                        call ctx%write_resu(lines(i)%s)
+                    end do
+                    cycle
+                end if
                 call node_fields_from_result(res, fields(f)%s, components, indices(k), field, st)
                 if (st%failed()) return
                 call resultat_table_lines(res%name, int(res%nume_ordre(indices(k))), &
@@ -203,44 +233,116 @@ contains
             size(indices, kind=i4)) // ' table(s) of ' // res%name // ' written to the .resu')
     end subroutine write_tables
 
-    !> FORMAT='VTK' or 'GMSH': the mesh of the result with every field of every instant.
-    subroutine write_viewer_file(ctx, format, bound_path, res, fields, components, indices, st)
+    !> A RESULTAT table of an element field at stored instant `stored`: a row per spring
+    !> and point (result_table cell_table_lines).
+    subroutine spring_table(res, field, components, stored, lines)
+        type(result_concept_t), intent(in) :: res
+        character(len=*), intent(in) :: field
+        type(string_t), intent(in) :: components(:)
+        integer(i4), intent(in) :: stored
+        type(string_t), allocatable, intent(out) :: lines(:)
+        type(cell_array_t), allocatable :: arrays(:)
+        type(string_t), allocatable :: names(:), cells(:)
+        real(dp), allocatable :: values(:, :)
+        integer(i4) :: a, k
+        call spring_cell_arrays(res, stored, field, components, arrays)
+        names = components
+        if (size(names) == 0) names = field_components(res, field)
+        allocate (cells(size(res%spring_cell)), values(size(names), size(res%spring_cell)))
+        do k = 1, size(res%spring_cell)
+            cells(k)%s = cell_name(res%mesh, res%spring_cell(k))
+            do a = 1, size(names)
+                values(a, k) = arrays(a)%values(res%spring_cell(k))
+            end do
+        end do
+        call cell_table_lines(res%name, int(res%nume_ordre(stored)), res%inst(stored), field, &
+            names, cells, SPRING_POINTS, values, lines)
+    end subroutine spring_table
+
+    !> FORMAT='VTK' or 'GMSH': the mesh of the result with every field of every instant:
+    !> node fields as point data, element fields and the cell groups as cell data.
+    !>  sief_cmps, vari_cmps : in, the components of the element fields (empty: all)
+    subroutine write_viewer_file(ctx, format, bound_path, res, fields, components, indices, &
+                                 st, sief_cmps, vari_cmps)
         type(run_context_t), intent(inout) :: ctx
         character(len=*), intent(in) :: format, bound_path
         type(result_concept_t), intent(in) :: res
         type(string_t), intent(in) :: fields(:), components(:)
         integer(i4), intent(in) :: indices(:)
         type(status_t), intent(out) :: st
+        type(string_t), intent(in) :: sief_cmps(:), vari_cmps(:)
         type(node_field_t), allocatable :: node_fields(:, :)
+        type(cell_array_t), allocatable :: cells(:, :)
+        type(string_t), allocatable :: node_names(:)
         integer, allocatable :: cell_types(:), cell_ptr(:), cell_nodes(:)
         character(len=:), allocatable :: path
         integer :: f, k
         call result_mesh_arrays(res%mesh, cell_types, cell_ptr, cell_nodes, st)
         if (st%failed()) return
-        allocate (node_fields(size(fields), size(indices)))
+        allocate (node_names(0))
+        do f = 1, size(fields)
+            if (.not. is_cell_field(fields(f)%s)) node_names = [node_names, fields(f)]
+        end do
+        allocate (node_fields(size(node_names), size(indices)))
         do k = 1, size(indices)
-            do f = 1, size(fields)
-                call node_fields_from_result(res, fields(f)%s, components, indices(k), &
+            do f = 1, size(node_names)
+                call node_fields_from_result(res, node_names(f)%s, components, indices(k), &
                                              node_fields(f, k), st)
                 if (st%failed()) return
             end do
         end do
+        call viewer_cell_arrays(res, fields, indices, sief_cmps, vari_cmps, cells)
         if (format == 'VTK') then
             path = bound_path
             if (len(path) == 0) path = ctx%output_path('_' // res%name // '.pvd')
             if (.not. ends_with(path, '.pvd')) path = path // '.pvd'
             call write_vtk_series(path(1:len(path) - 4), res%mesh%coords, cell_types, &
-                cell_ptr, cell_nodes, res%inst(indices), node_fields, st)
+                cell_ptr, cell_nodes, res%inst(indices), node_fields, st, cells)
             if (st%ok()) call ctx%write_mess('    IMPR_RESU: wrote ' // path // ' and ' // &
                 to_text(size(indices, kind=i4)) // ' .vtu file(s) next to it')
         else
             path = bound_path
             if (len(path) == 0) path = ctx%output_path('_' // res%name // '.msh')
             call write_gmsh_file(path, res%mesh%coords, cell_types, cell_ptr, cell_nodes, &
-                res%inst(indices), int(res%nume_ordre(indices)), node_fields, st)
+                res%inst(indices), int(res%nume_ordre(indices)), node_fields, st, cells)
             if (st%ok()) call ctx%write_mess('    IMPR_RESU: wrote ' // path)
         end if
     end subroutine write_viewer_file
+
+    !> The cell data of each instant: the cell groups, then the element fields asked for
+    !> (SPRING_STATUS once, after them).
+    !>  cells : out, (n_arrays, size(indices))
+    subroutine viewer_cell_arrays(res, fields, indices, sief_cmps, vari_cmps, cells)
+        type(result_concept_t), intent(in) :: res
+        type(string_t), intent(in) :: fields(:), sief_cmps(:), vari_cmps(:)
+        integer(i4), intent(in) :: indices(:)
+        type(cell_array_t), allocatable, intent(out) :: cells(:, :)
+        type(cell_array_t), allocatable :: groups(:), one(:), all(:)
+        integer :: f, k
+        logical :: status_written
+        call group_cell_arrays(res%mesh, groups)
+        do k = 1, size(indices)
+            all = groups
+            status_written = .false.
+            do f = 1, size(fields)
+                if (.not. is_cell_field(fields(f)%s)) cycle
+                if (fields(f)%s == 'SIEF_ELGA') then
+                    call spring_cell_arrays(res, indices(k), fields(f)%s, sief_cmps, one)
+                else
+                    call spring_cell_arrays(res, indices(k), fields(f)%s, vari_cmps, one)
+                end if
+                ! the last array is SPRING_STATUS: keep it once
+                if (status_written) then
+                    all = [all, one(1:size(one) - 1)]
+                else
+                    all = [all, one]
+                end if
+                status_written = .true.
+            end do
+            if (k == 1) allocate (cells(size(all), size(indices)))
+            cells(:, k) = all
+        end do
+    end subroutine viewer_cell_arrays
 
     !> FORMAT='MED': every RESU occurrence into the file of UNITE (default 80) when it is
     !> bound, else into one <stem>_<RESULT>.rmed per occurrence.
@@ -293,6 +395,14 @@ contains
                 fields(f)%s = trim(MED_DEFAULT_FIELDS(f))
             end do
         end if
+        do f = 1, size(fields)
+            if (.not. is_cell_field(fields(f)%s)) cycle
+            ! an ELGA field in MED needs a Gauss-point localisation the MED plug-in does not
+            ! write yet
+            call occ%error_at('NOM_CHAM', fields(f)%s // ' is not written to MED yet (the ' // &
+                'springs'' element fields go to FORMAT=''VTK'', ''GMSH'' and ''RESULTAT'')', st)
+            return
+        end do
         call occurrence_instants(occ, res, indices, st)
         if (st%failed()) return
         allocate (components(0))

@@ -8,6 +8,8 @@
 !> Also the expansion of a node field into the arrays viewers want: DX/DY/DZ as one
 !> 3-component vector named after the field (zeros where absent), DRX/DRY/DRZ as a vector
 !> `<field>_DR`, any other component as a scalar `<field>_<component>`.
+!>  - cell arrays (cell_array_t): one scalar per cell (an element field's component, the
+!>    group a cell belongs to, the spring status), with the cells that carry it.
 module result_data
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_INTERNAL
@@ -33,8 +35,20 @@ module result_data
         real(dp), allocatable :: values(:, :)          !< (1 or 3, n_nodes)
     end type point_array_t
 
+    !> One scalar per cell at one instant. `defined` says which cells carry it: the writers
+    !> (VTK, Gmsh) put 0 on the others. `whole`: the values
+    !> are integers (a group membership, a status), written as such. `constant`: the array
+    !> does not change with the instant (Gmsh writes it once, as a view without time).
+    type, public :: cell_array_t
+        character(len=:), allocatable :: name
+        real(dp), allocatable :: values(:)           !< (n_cells)
+        logical, allocatable :: defined(:)           !< (n_cells)
+        logical :: whole = .false.
+        logical :: constant = .false.                !< the same at every instant (a group)
+    end type cell_array_t
+
     public :: cell_type_from_name, cell_type_name, cell_node_count
-    public :: check_result_mesh, check_node_field, expand_node_field
+    public :: check_result_mesh, check_node_field, expand_node_field, check_cell_array
 
 contains
 
@@ -157,6 +171,31 @@ contains
                            ': values and mask must be (n_components, n_nodes)')
         end if
     end subroutine check_node_field
+
+    !> Checks that a cell array has a name and values and `defined` of size n_cells, with
+    !> finite values on the cells that carry it.
+    !>  st : out, STATUS_INTERNAL naming the array (a caller's bug: the fields are checked
+    !>       finite when they are built)
+    subroutine check_cell_array(array, n_cells, st)
+        use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+        type(cell_array_t), intent(in) :: array
+        integer, intent(in) :: n_cells
+        type(status_t), intent(out) :: st
+        if (.not. (allocated(array%name) .and. allocated(array%values) .and. &
+                   allocated(array%defined))) then
+            call set_error(st, STATUS_INTERNAL, 'cell array: name, values and defined ' // &
+                           'must all be set')
+            return
+        end if
+        if (size(array%values) /= n_cells .or. size(array%defined) /= n_cells) then
+            call set_error(st, STATUS_INTERNAL, 'cell array ' // array%name // &
+                           ': values and defined must have one entry per cell')
+            return
+        end if
+        if (.not. all(ieee_is_finite(array%values) .or. .not. array%defined)) &
+            call set_error(st, STATUS_INTERNAL, 'cell array ' // array%name // &
+                           ': a value is not a finite number')
+    end subroutine check_cell_array
 
     !> Expands a node field into viewer arrays (see the module header): a vector named after
     !> the field from DX/DY/DZ, `<field>_DR` from DRX/DRY/DRZ, scalars `<field>_<cmp>` for the

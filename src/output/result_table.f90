@@ -21,7 +21,7 @@ module result_table
     !> Printed for a component the node does not carry.
     character(len=*), parameter, public :: RESULT_TABLE_ABSENT = '-'
 
-    public :: resultat_table_lines
+    public :: resultat_table_lines, cell_table_lines
 
 contains
 
@@ -83,6 +83,53 @@ contains
         lines(n)%s = ''
         lines = lines(1:n)
     end subroutine resultat_table_lines
+
+    !> The lines of one RESULTAT table of an element field (ending with an empty line): the
+    !> header as resultat_table_lines, then `MAILLE POINT` and the components, and one line
+    !> per cell and point.
+    !>  field      : in, the field name (SIEF_ELGA, VARI_ELGA)
+    !>  components : in, the component names, in the order printed
+    !>  cell_names : in, (n_cells) the cells, in the order printed
+    !>  n_points   : in, points per cell (each point prints the cell's values)
+    !>  values     : in, (n_components, n_cells)
+    pure subroutine cell_table_lines(result_name, nume_ordre, inst, field, components, &
+                                     cell_names, n_points, values, lines)
+        character(len=*), intent(in) :: result_name, field
+        integer, intent(in) :: nume_ordre, n_points
+        real(dp), intent(in) :: inst, values(:, :)
+        type(string_t), intent(in) :: components(:), cell_names(:)
+        type(string_t), allocatable, intent(out) :: lines(:)
+        integer :: k, i, p, n, width
+        character(len=12) :: buf
+        character(len=:), allocatable :: row
+        width = NAME_WIDTH
+        do k = 1, size(cell_names)
+            width = max(width, len(cell_names(k)%s))
+        end do
+        allocate (lines(size(cell_names) * n_points + 3))
+        write (buf, '(i0)') nume_ordre
+        lines(1)%s = ' ---- RESULTAT ' // trim(result_name) // '  NOM_CHAM ' // field // &
+                     '  NUME_ORDRE ' // trim(buf) // '  INST ' // real_e13(inst)
+        row = ' ' // pad('MAILLE', width + 1) // pad('POINT', NAME_WIDTH)
+        do i = 1, size(components)
+            row = row // pad(components(i)%s, VALUE_WIDTH)
+        end do
+        lines(2)%s = trim(row)
+        n = 2
+        do k = 1, size(cell_names)
+            do p = 1, n_points
+                write (buf, '(i0)') p
+                row = ' ' // pad(cell_names(k)%s, width + 1) // pad(trim(buf), NAME_WIDTH)
+                do i = 1, size(components)
+                    row = row // pad(real_e13(values(i, k)), VALUE_WIDTH)
+                end do
+                n = n + 1
+                lines(n)%s = trim(row)
+            end do
+        end do
+        n = n + 1
+        lines(n)%s = ''
+    end subroutine cell_table_lines
 
     !> `text` left-aligned in `width` columns, or followed by one blank when longer.
     pure function pad(text, width) result(out)

@@ -1,6 +1,8 @@
 !> IMPR_RESU(FORMAT='VTK'): ParaView/VTK XML files from plain arrays (result_data).
 !> One `.vtu` (UnstructuredGrid, ASCII, Float64) per instant with the node fields as point
-!> data (expand_node_field: DEPL as a 3-component vector padded with zeros, ...), and a `.pvd`
+!> data (expand_node_field: DEPL as a 3-component vector padded with zeros, ...), the cell
+!> arrays as cell data (Float64, or Int32 for whole values; 0 on cells that do not carry
+!> them), and a `.pvd`
 !> collection listing the instants with their times. Every file is written atomically.
 !> Format: "VTK File Formats", Kitware (XML UnstructuredGrid; cell types VTK_VERTEX = 1,
 !> VTK_LINE = 3, VTK_TRIANGLE = 5, VTK_QUAD = 9; connectivity 0-based, offsets = end of each
@@ -12,7 +14,8 @@ module result_vtk
     use atomic_file, only: atomic_file_t, open_atomic
     use result_data, only: node_field_t, point_array_t, check_result_mesh, check_node_field, &
                            expand_node_field, RESULT_CELL_POI1, RESULT_CELL_SEG2, &
-                           RESULT_CELL_TRIA3, RESULT_CELL_QUAD4
+                           RESULT_CELL_TRIA3, RESULT_CELL_QUAD4, cell_array_t, &
+                           check_cell_array
     implicit none
     private
 
@@ -46,12 +49,15 @@ contains
     !>  fields     : in, the node fields of the instant (may be empty)
     !>  st         : out, STATUS_INTERNAL for inconsistent arrays, STATUS_IO_ERROR when the
     !>               file cannot be written (then no file is left behind)
-    subroutine write_vtu_file(path, coords, cell_types, cell_ptr, cell_nodes, fields, st)
+    !>  cell_arrays : in, optional, the cell arrays of the instant (<CellData>)
+    subroutine write_vtu_file(path, coords, cell_types, cell_ptr, cell_nodes, fields, st, &
+                              cell_arrays)
         character(len=*), intent(in) :: path
         real(dp), intent(in) :: coords(:, :)
         integer, intent(in) :: cell_types(:), cell_ptr(:), cell_nodes(:)
         type(node_field_t), intent(in) :: fields(:)
         type(status_t), intent(out) :: st
+        type(cell_array_t), intent(in), optional :: cell_arrays(:)
         type(atomic_file_t) :: file
         integer :: f
         call check_result_mesh(coords, cell_types, cell_ptr, cell_nodes, st)
@@ -60,6 +66,12 @@ contains
             call check_node_field(fields(f), size(coords, 2), st)
             if (st%failed()) return
         end do
+        if (present(cell_arrays)) then
+            do f = 1, size(cell_arrays)
+                call check_cell_array(cell_arrays(f), size(cell_types), st)
+                if (st%failed()) return
+            end do
+        end if
         call open_atomic(file, path, st)
         if (st%failed()) return
         call file%write_line('<?xml version="1.0"?>')
@@ -69,6 +81,7 @@ contains
         call file%write_line('    <Piece NumberOfPoints="' // to_text(size(coords, 2)) // &
                              '" NumberOfCells="' // to_text(size(cell_types)) // '">')
         call write_point_data(file, fields)
+        if (present(cell_arrays)) call write_cell_data(file, cell_arrays)
         call file%write_line('      <Points>')
         call file%write_line('        <DataArray type="Float64" NumberOfComponents="3" ' // &
                              'format="ascii">')
@@ -102,6 +115,36 @@ contains
         end do
         call file%write_line('      </PointData>')
     end subroutine write_point_data
+
+    !> <CellData> with one scalar DataArray per cell array.
+    subroutine write_cell_data(file, arrays)
+        type(atomic_file_t), intent(in) :: file
+        type(cell_array_t), intent(in) :: arrays(:)
+        character(len=32) :: buf
+        integer :: a, c
+        if (size(arrays) == 0) return
+        call file%write_line('      <CellData>')
+        do a = 1, size(arrays)
+            if (arrays(a)%whole) then
+                call file%write_line('        <DataArray type="Int32" Name="' // &
+                                     arrays(a)%name // '" format="ascii">')
+                do c = 1, size(arrays(a)%values)
+                    call file%write_line('          ' // to_text(nint(merge(arrays(a)%values(c), &
+                        0.0_dp, arrays(a)%defined(c)))))
+                end do
+            else
+                call file%write_line('        <DataArray type="Float64" Name="' // &
+                                     arrays(a)%name // '" format="ascii">')
+                do c = 1, size(arrays(a)%values)
+                    write (buf, '(' // REAL_FORMAT // ')') merge(arrays(a)%values(c), 0.0_dp, &
+                        arrays(a)%defined(c))
+                    call file%write_line('          ' // trim(adjustl(buf)))
+                end do
+            end if
+            call file%write_line('        </DataArray>')
+        end do
+        call file%write_line('      </CellData>')
+    end subroutine write_cell_data
 
     !> <Cells>: connectivity (0-based), offsets (end of each cell), types.
     subroutine write_cells(file, cell_types, cell_ptr, cell_nodes)
@@ -179,14 +222,16 @@ contains
     !>  times     : in, (n_instants) INST of each instant
     !>  fields    : in, (n_fields, n_instants) the node fields of each instant
     !>  st        : out, as write_vtu_file; stops at the first failure
+    !>  cell_arrays : in, optional, (n_arrays, n_instants) the cell arrays of each instant
     subroutine write_vtk_series(stem, coords, cell_types, cell_ptr, cell_nodes, times, &
-                                fields, st)
+                                fields, st, cell_arrays)
         character(len=*), intent(in) :: stem
         real(dp), intent(in) :: coords(:, :)
         integer, intent(in) :: cell_types(:), cell_ptr(:), cell_nodes(:)
         real(dp), intent(in) :: times(:)
         type(node_field_t), intent(in) :: fields(:, :)
         type(status_t), intent(out) :: st
+        type(cell_array_t), intent(in), optional :: cell_arrays(:, :)
         type(string_t) :: names(size(times))
         character(len=16) :: buf
         integer :: k
@@ -195,10 +240,22 @@ contains
                            '(n_fields, n_instants) with one instant per time')
             return
         end if
+        if (present(cell_arrays)) then
+            if (size(cell_arrays, 2) /= size(times)) then
+                call set_error(st, STATUS_INTERNAL, 'VTK series: cell arrays must be ' // &
+                               '(n_arrays, n_instants) with one instant per time')
+                return
+            end if
+        end if
         do k = 1, size(times)
             write (buf, '(i0.4)') k
-            call write_vtu_file(stem // '_' // trim(buf) // '.vtu', coords, cell_types, &
-                                cell_ptr, cell_nodes, fields(:, k), st)
+            if (present(cell_arrays)) then
+                call write_vtu_file(stem // '_' // trim(buf) // '.vtu', coords, cell_types, &
+                                    cell_ptr, cell_nodes, fields(:, k), st, cell_arrays(:, k))
+            else
+                call write_vtu_file(stem // '_' // trim(buf) // '.vtu', coords, cell_types, &
+                                    cell_ptr, cell_nodes, fields(:, k), st)
+            end if
             if (st%failed()) return
             names(k)%s = base_name(stem) // '_' // trim(buf) // '.vtu'
         end do

@@ -5,8 +5,10 @@
 !> the `.mess` and counts it in the run context (NOOK makes the run exit with status 2).
 !>
 !> The tested instant is found by NUME_ORDRE, or by INST within RESULT_INST_PRECISION
-!> (relative, absolute below |INST| = 1: analysis_result%result_find). The tested node is
-!> NOEUD, or GROUP_NO when that group holds exactly one node.
+!> (relative, absolute below |INST| = 1: analysis_result%result_find). A nodal field (DEPL,
+!> FORC_NODA, REAC_NODA) is read at NOEUD, or GROUP_NO when that group holds exactly one
+!> node; an element field (SIEF_ELGA, VARI_ELGA of the DIS_CHOC springs) at POINT of MAILLE,
+!> or of GROUP_MA when that group holds exactly one cell.
 !>
 !> A listing never contains NaN or Inf: the spellings of non-finite numbers produced by the
 !> formatting layer (`NaN`, `+Inf`, `-Inf`) are replaced by the words NON_FINI, +INFINI and
@@ -18,8 +20,11 @@ module test_resu_command
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name
-    use analysis_result, only: result_concept_t, result_find, result_node_value
+    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name, &
+        find_cell, find_cell_group, cells_of_group
+    use analysis_result, only: result_concept_t, result_find, result_node_value, &
+        result_cell_value, is_cell_field
+    use element_spring_fields, only: SPRING_POINTS
     use test_resu_format, only: test_resu_block_lines
     implicit none
     private
@@ -30,7 +35,7 @@ module test_resu_command
     character(len=*), parameter, public :: LISTING_MINUS_INFINITE = '-INFINI'
 
     public :: run_test_resu, test_resu_value, test_resu_single_node, listing_safe_text, &
-        compact_text, result_of_keyword, result_index_of, relocate
+        compact_text, result_of_keyword, result_index_of, relocate, test_resu_single_cell
 
 contains
 
@@ -71,8 +76,25 @@ contains
         if (st%failed()) return
         location_kind = 'NOEUD'
         if (occ%has('GROUP_NO')) location_kind = 'GROUP_NO'
+        if (occ%has('GROUP_MA')) location_kind = 'GROUP_MA'
+        if (occ%has('MAILLE')) location_kind = 'MAILLE'
         call occ%get_text(location_kind, location_name, st)
         if (st%failed()) return
+        if (is_cell_field(field)) then
+            call test_cell_occurrence(ctx, occ, res, index, field, component, location_kind, &
+                                      location_name, st)
+            return
+        end if
+        if (location_kind == 'GROUP_MA' .or. location_kind == 'MAILLE') then
+            call occ%error_at(location_kind, field // ' is a nodal field: give GROUP_NO ' // &
+                'or NOEUD (GROUP_MA and MAILLE go with SIEF_ELGA and VARI_ELGA)', st)
+            return
+        end if
+        if (occ%has('POINT')) then
+            call occ%error_at('POINT', 'POINT goes with the element fields SIEF_ELGA and ' // &
+                'VARI_ELGA; ' // field // ' is read at a node', st)
+            return
+        end if
         if (location_kind == 'GROUP_NO') then
             call test_resu_single_node(res%mesh, location_name, node, st)
         else
@@ -93,9 +115,87 @@ contains
         call write_block(ctx, lines)
     end subroutine test_one_occurrence
 
+    !> An element field (SIEF_ELGA, VARI_ELGA) at POINT of a cell (MAILLE, or GROUP_MA of one
+    !> cell).
+    subroutine test_cell_occurrence(ctx, occ, res, stored, field, component, location_kind, &
+                                    location_name, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: stored
+        character(len=*), intent(in) :: field, component, location_kind, location_name
+        type(status_t), intent(out) :: st
+        integer(i4) :: cell, point
+        real(dp) :: computed
+        type(string_t), allocatable :: lines(:)
+        if (location_kind == 'GROUP_NO' .or. location_kind == 'NOEUD') then
+            call occ%error_at(location_kind, field // ' is an element field: give ' // &
+                'GROUP_MA (a group of one cell) or MAILLE, and POINT', st)
+            return
+        end if
+        if (.not. occ%has('POINT')) then
+            call occ%error_at('NOM_CHAM', field // ' is read at a point: give POINT (1 or ' // &
+                '2, the nodes of a SEG2 spring)', st)
+            return
+        end if
+        call occ%get_int('POINT', point, st)
+        if (st%failed()) return
+        if (point < 1 .or. point > SPRING_POINTS) then
+            call occ%error_at('POINT', 'a SEG2 spring has points 1 and 2 (its Gauss points ' // &
+                'sit at its nodes), not ' // to_text(point), st)
+            return
+        end if
+        if (location_kind == 'GROUP_MA') then
+            call test_resu_single_cell(res%mesh, location_name, cell, st)
+        else
+            cell = find_cell(res%mesh, location_name, st)
+        end if
+        if (st%failed()) then
+            call relocate(occ, location_kind, st)
+            return
+        end if
+        call result_cell_value(res, field, stored, cell, point, component, computed, st)
+        if (st%failed()) then
+            if (any(res%spring_cell == cell)) then
+                call relocate(occ, 'NOM_CMP', st)      ! a component the field lacks
+            else
+                call relocate(occ, location_kind, st)  ! no spring there
+            end if
+            return
+        end if
+        call block_lines(occ, res, stored, field, component, location_kind, location_name, &
+                         computed, lines, st, point)
+        if (st%failed()) return
+        call write_block(ctx, lines)
+    end subroutine test_cell_occurrence
+
+    !> The one cell of GROUP_MA `group`.
+    !>  st : STATUS_MODEL_ERROR when the group does not exist (with a did-you-mean) or does
+    !>       not hold exactly one cell (naming the group and its size)
+    subroutine test_resu_single_cell(mesh, group, cell, st)
+        type(mesh_t), intent(in) :: mesh
+        character(len=*), intent(in) :: group
+        integer(i4), intent(out) :: cell
+        type(status_t), intent(out) :: st
+        integer(i4) :: g
+        integer(i4), allocatable :: members(:)
+        cell = 0
+        g = find_cell_group(mesh, group, st)
+        if (st%failed()) return
+        members = cells_of_group(mesh, g)
+        if (size(members) /= 1) then
+            call set_error(st, STATUS_MODEL_ERROR, 'GROUP_MA ' // group // ' holds ' // &
+                           to_text(size(members, kind=i4)) // &
+                           ' cells; TEST_RESU needs a group of exactly one cell (or MAILLE)')
+            return
+        end if
+        cell = members(1)
+    end subroutine test_resu_single_cell
+
     !> The TEST_RESU block of one occurrence, checks counted by the caller from the lines.
+    !>  point : in, optional, POINT of an element field (a column of the block)
     subroutine block_lines(occ, res, index, field, component, location_kind, location_name, &
-                           computed, lines, st)
+                           computed, lines, st, point)
         type(keyword_set_t), intent(in) :: occ
         type(result_concept_t), intent(in) :: res
         integer(i4), intent(in) :: index
@@ -103,6 +203,7 @@ contains
         real(dp), intent(in) :: computed
         type(string_t), allocatable, intent(out) :: lines(:)
         type(status_t), intent(out) :: st
+        integer(i4), intent(in), optional :: point
         real(dp) :: vale_calc, tole_machine, vale_refe, precision, inst
         character(len=:), allocatable :: criterion, reference, legend, result_name
         integer :: n_ok, n_nook
@@ -137,21 +238,21 @@ contains
                     location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
                     n_nook, nume_ordre=int(res%nume_ordre(index)), inst=inst, &
                     reference_kind=reference, vale_refe=vale_refe, precision=precision, &
-                    legend=legend)
+                    legend=legend, point=point)
             else
                 call test_resu_block_lines(result_name, field, component, location_kind, &
                     location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
                     n_nook, nume_ordre=int(res%nume_ordre(index)), reference_kind=reference, &
-                    vale_refe=vale_refe, precision=precision, legend=legend)
+                    vale_refe=vale_refe, precision=precision, legend=legend, point=point)
             end if
         else if (occ%has('INST')) then
             call test_resu_block_lines(result_name, field, component, location_kind, &
                 location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
-                n_nook, nume_ordre=int(res%nume_ordre(index)), inst=inst)
+                n_nook, nume_ordre=int(res%nume_ordre(index)), inst=inst, point=point)
         else
             call test_resu_block_lines(result_name, field, component, location_kind, &
                 location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
-                n_nook, nume_ordre=int(res%nume_ordre(index)))
+                n_nook, nume_ordre=int(res%nume_ordre(index)), point=point)
         end if
     end subroutine block_lines
 

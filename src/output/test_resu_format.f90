@@ -4,6 +4,7 @@
 !> Layout (fixed-width fields, left-aligned, a field longer than its width is followed by one
 !> blank so tokens never merge):
 !>  ` ---- ` + 17-wide titles          RESULTAT NUME_ORDRE|INST NOM_CHAM NOM_CMP GROUP_NO|NOEUD
+!>                                     (element fields: GROUP_MA|MAILLE, then POINT)
 !>  6 blanks + 17-wide values
 !>  6 blanks + REFERENCE(17) LEGENDE(17) VALE_REFE(24) VALE_CALC(24) ERREUR(16) TOLE
 !>  ` OK   ` or `NOOK  ` + the same columns
@@ -44,12 +45,13 @@ contains
     !>  nume_ordre     : in, optional, the NUME_ORDRE column when present
     !>  inst           : in, optional, the INST column when present (after NUME_ORDRE)
     !>  lines          : out, the two lines
+    !>  point          : in, optional, the POINT column (element fields) after the location
     pure subroutine test_resu_id_lines(result_name, field_name, component, location_kind, &
-                                       location_name, lines, nume_ordre, inst)
+                                       location_name, lines, nume_ordre, inst, point)
         character(len=*), intent(in) :: result_name, field_name, component, location_kind, &
                                         location_name
         type(string_t), intent(out) :: lines(2)
-        integer, intent(in), optional :: nume_ordre
+        integer, intent(in), optional :: nume_ordre, point
         real(dp), intent(in), optional :: inst
         character(len=12) :: buf
         lines(1)%s = ' ---- ' // field(ID_WIDTH, 'RESULTAT')
@@ -63,10 +65,16 @@ contains
             lines(1)%s = lines(1)%s // field(ID_WIDTH + 4, 'INST')
             lines(2)%s = lines(2)%s // field(ID_WIDTH + 4, real_e13(inst))
         end if
-        lines(1)%s = lines(1)%s // field(ID_WIDTH, 'NOM_CHAM') // field(ID_WIDTH, 'NOM_CMP') &
-                     // trim(location_kind)
-        lines(2)%s = lines(2)%s // field(ID_WIDTH, field_name) // field(ID_WIDTH, component) &
-                     // trim(location_name)
+        lines(1)%s = lines(1)%s // field(ID_WIDTH, 'NOM_CHAM') // field(ID_WIDTH, 'NOM_CMP')
+        lines(2)%s = lines(2)%s // field(ID_WIDTH, field_name) // field(ID_WIDTH, component)
+        if (present(point)) then
+            write (buf, '(i0)') point
+            lines(1)%s = lines(1)%s // field(ID_WIDTH, trim(location_kind)) // 'POINT'
+            lines(2)%s = lines(2)%s // field(ID_WIDTH, trim(location_name)) // trim(buf)
+        else
+            lines(1)%s = lines(1)%s // trim(location_kind)
+            lines(2)%s = lines(2)%s // trim(location_name)
+        end if
     end subroutine test_resu_id_lines
 
     !> The header of the check table:
@@ -182,13 +190,13 @@ contains
     pure subroutine test_resu_block_lines(result_name, field_name, component, location_kind, &
                                           location_name, vale_calc, computed, tole_machine, &
                                           criterion, lines, n_ok, n_nook, nume_ordre, inst, &
-                                          reference_kind, vale_refe, precision, legend)
+                                          reference_kind, vale_refe, precision, legend, point)
         character(len=*), intent(in) :: result_name, field_name, component, location_kind, &
                                         location_name, criterion
         real(dp), intent(in) :: vale_calc, computed, tole_machine
         type(string_t), allocatable, intent(out) :: lines(:)
         integer, intent(inout) :: n_ok, n_nook
-        integer, intent(in), optional :: nume_ordre
+        integer, intent(in), optional :: nume_ordre, point
         real(dp), intent(in), optional :: inst, vale_refe, precision
         character(len=*), intent(in), optional :: reference_kind, legend
         type(string_t) :: id_lines(2)
@@ -197,7 +205,7 @@ contains
         with_reference = present(reference_kind) .and. present(vale_refe)
         allocate (lines(merge(5, 4, with_reference)))
         call test_resu_id_lines(result_name, field_name, component, location_kind, &
-                                location_name, id_lines, nume_ordre, inst)
+                                location_name, id_lines, nume_ordre, inst, point)
         lines(1:2) = id_lines
         lines(3)%s = test_resu_header_line()
         call test_resu_check_line('NON_REGRESSION', '', vale_calc, computed, tole_machine, &

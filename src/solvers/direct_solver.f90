@@ -25,6 +25,7 @@ module direct_solver
     use status, only: status_t, set_error, STATUS_SINGULAR
     use strings, only: to_text
     use sparse_matrix, only: sym_matrix_t
+    use progress, only: progress_t
     implicit none
     private
 
@@ -81,6 +82,9 @@ module direct_solver
         type(solver_options_t) :: options
         logical :: analysed = .false.
         logical :: factored = .false.
+        !> Where a back-end that can tell how far its factorization is reports it (the
+        !> run's reporter, set by the analysis; null: nobody listens)
+        class(progress_t), pointer :: progress => null()
     contains
         procedure(analyse_interface), deferred :: analyse
         procedure(factor_interface), deferred :: factor

@@ -87,6 +87,7 @@ contains
         fo%method = self%options%kernel
         fo%hold_digits = self%options%hold_digits
         fo%hold_ratio = self%options%hold_ratio
+        fo%progress => self%progress
         call skyline_factor(self%sky, report, st, fo)
         self%factored = self%sky%factored
         call system_clock(t1)

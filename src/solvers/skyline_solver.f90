@@ -27,6 +27,7 @@ module skyline_solver
         digits_lost, record_flag, record_hold, singular_message, start_report
     use skyline_matrix, only: skyline_t, skyline_bandwidth, skyline_profile_size
     use blas_library, only: blas_kernels_t, load_blas
+    use progress, only: progress_t
     implicit none
     private
 
@@ -35,6 +36,9 @@ module skyline_solver
     !> Panel width (columns) and row block of the blocked kernel; below this bandwidth the
     !> reference kernel is as fast (measured, doc/performance.md).
     integer(i4), parameter :: PANEL_WIDTH = 64, ROW_BLOCK = 64, BLOCKED_MIN_BANDWIDTH = 64
+    !> Columns between two progress reports (a multiple of PANEL_WIDTH; a report costs a
+    !> clock reading, next to ~64 x bandwidth^2 operations).
+    integer(i4), parameter :: PROGRESS_COLUMNS = 4 * PANEL_WIDTH
 
     !> How to factor and what counts as singular.
     type, public :: factor_options_t
@@ -44,6 +48,8 @@ module skyline_solver
         integer(i4) :: method = FACTOR_AUTO       !< FACTOR_AUTO/REFERENCE/BLOCKED
         real(dp) :: hold_digits = 0.0_dp          !< hold pivots losing >= this (0: off)
         real(dp) :: hold_ratio = 0.0_dp           !< hold |pivot| <= this x max|a_jj|
+        !> told how far the factorization is, every PROGRESS_COLUMNS columns (null: nobody)
+        class(progress_t), pointer :: progress => null()
     end type factor_options_t
 
     !> Everything the pivot test needs (kept together so kernels stay short).
@@ -196,8 +202,22 @@ contains
             d = values(diag(j)) - s
             call accept_pivot(j, d, ctx, report)
             values(diag(j)) = d
+            if (mod(j, PROGRESS_COLUMNS) == 0) call report_progress(ctx, diag, j)
         end do
     end subroutine factor_reference_kernel
+
+    !> Tells the reporter (if any) how far the factorization is: the share of the profile
+    !> done after column j.
+    subroutine report_progress(ctx, diag, j)
+        type(pivot_context_t), intent(in) :: ctx
+        integer(i8), intent(in) :: diag(0:)
+        integer(i4), intent(in) :: j
+        integer(i4) :: n
+        if (.not. associated(ctx%options%progress)) return
+        n = ubound(diag, 1, kind=i4)
+        call ctx%options%progress%update('factorization (LDLT, ' // to_text(n) // &
+            ' equations)', real(diag(j), dp) / real(max(diag(n), 1_i8), dp))
+    end subroutine report_progress
 
     !> Blocked kernel: panels of up to PANEL_WIDTH columns j0..j1 are copied to a dense block
     !> P (rows T..j1, T = lowest top of the panel, zeros above each top). Rows T..j0-1 of P
@@ -233,6 +253,7 @@ contains
             call factor_panel_diagonal(n, diag, values, j0, j1, t, ldp, p, max(1, band), s, &
                                        dk, ctx, report, blas)
             call store_panel(n, diag, values, top, j0, j1, t, ldp, p)
+            if (mod(j1, PROGRESS_COLUMNS) == 0) call report_progress(ctx, diag, j1)
             j0 = j1 + 1
         end do
     end subroutine factor_blocked_kernel

@@ -202,8 +202,10 @@ def write(c):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--only", nargs="*", default=None)
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    ap.add_argument("--only", nargs="*", default=None,
+                    help="write only these cases (names as in the CASES table; None: all)")
     o = ap.parse_args(argv)
     os.makedirs(OUT, exist_ok=True)
     for c in cases():

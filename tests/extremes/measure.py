@@ -79,9 +79,11 @@ def digits(parasol, text, deck_dir, mesh, stem, work):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("parasol")
-    ap.add_argument("--only", nargs="*")
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    ap.add_argument("parasol", help="the parasol executable")
+    ap.add_argument("--only", nargs="*", default=None,
+                    help="measure only these cases (None: all)")
     ap.add_argument("--markdown", action="store_true", help="rows as a markdown table")
     o = ap.parse_args(argv)
     parasol = os.path.abspath(o.parasol)

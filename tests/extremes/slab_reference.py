@@ -87,15 +87,17 @@ def solve(ny, E, K, p, h=0.3, nu=0.3, b=2.0, delta=0.0):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ny", type=int, default=16)
-    ap.add_argument("--E", type=float, default=2.0e11)
-    ap.add_argument("--K", type=float, default=1.0e4)
-    ap.add_argument("--p", type=float, default=5.0)
-    ap.add_argument("--h", type=float, default=0.3)
-    ap.add_argument("--nu", type=float, default=0.3)
-    ap.add_argument("--b", type=float, default=2.0)
-    ap.add_argument("--delta", type=float, default=0.0)
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    ap.add_argument("--ny", type=int, default=16, help="cells along the slab")
+    ap.add_argument("--E", type=float, default=2.0e11, help="Young's modulus, Pa")
+    ap.add_argument("--K", type=float, default=1.0e4, help="global bed stiffness, N/m")
+    ap.add_argument("--p", type=float, default=5.0, help="load scale of P(y) = p (b - y)^2")
+    ap.add_argument("--h", type=float, default=0.3, help="slab height, m")
+    ap.add_argument("--nu", type=float, default=0.3, help="Poisson's ratio")
+    ap.add_argument("--b", type=float, default=2.0, help="slab length, m")
+    ap.add_argument("--delta", type=float, default=0.0,
+                    help="initial gap of the springs (DIST_1 - L), m")
     o = ap.parse_args(argv)
     v0, vb, nc = solve(o.ny, o.E, o.K, o.p, o.h, o.nu, o.b, o.delta)
     print(f"PT01 {v0!r}\nPT02 {vb!r}\nclosed {nc} of {o.ny + 1}")

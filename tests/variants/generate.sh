@@ -43,6 +43,14 @@ gen a_p_5           --model a --tolerance $TOL_A
 gen a_p_5e-8        --model a --p 5e-8 --tolerance $TOL_A
 gen a_p_5e8         --model a --p 5e8 --tolerance $TOL_A
 gen a_lifting_load  --model a --p -5 --expect-no-equilibrium
+# RELATION='DIS_CONTACT' (SSNL130 C/D): the springs carry a force only if they start pressed,
+# so DIST_1 = L + 1e-9 as in Code_Aster's decks, and the answer moves by that 1e-9.
+# ELASTIQUE is true modified Newton there (DIS_CHOC forces tangent corrections).
+gen a_dis_contact   --model a --relation DIS_CONTACT --dist1-offset 1e-9 --shift-by-gap \
+                    --lift 5e-3 --tolerance $TOL_A
+gen a_dis_contact_elastique --model a --relation DIS_CONTACT --dist1-offset 1e-9 \
+                    --shift-by-gap --lift 5e-3 --newton elastique --iter-max 60 \
+                    --tolerance $TOL_A
 # Model B (2D plane-strain slice + 2D_DIS_T springs).
 gen b_base          --model b --lift 5e-3 --tolerance $TOL_B
 gen b_length_3_K_1e3 --model b --b 3 --K 1e3 --nprec 11 --tolerance $TOL_B
@@ -59,3 +67,8 @@ gen b_p_5           --model b --tolerance $TOL_B
 gen b_p_5e-8        --model b --p 5e-8 --tolerance $TOL_B
 gen b_p_5e8         --model b --p 5e8 --tolerance $TOL_B
 gen b_lifting_load  --model b --p -5 --expect-no-equilibrium
+gen b_dis_contact   --model b --relation DIS_CONTACT --dist1-offset 1e-9 --shift-by-gap \
+                    --lift 5e-3 --tolerance $TOL_B
+gen b_dis_contact_elastique --model b --relation DIS_CONTACT --dist1-offset 1e-9 \
+                    --shift-by-gap --lift 5e-3 --newton elastique --iter-max 60 \
+                    --tolerance $TOL_B

@@ -9,6 +9,7 @@ For each mesh given (default 4x16 and 3x5) the deck must have:
     through y = 0 is a p b^4 / 12, the exact values of P = p (y - b)^2 (relative 1e-12).
 Exit 0 when every check passes, 1 otherwise (each failure printed).
 """
+import argparse
 import io
 import sys
 import os
@@ -94,9 +95,12 @@ def check_mesh(nx, ny):
 
 
 def main(argv):
-    meshes = [(4, 16), (3, 5)]
-    if argv:
-        meshes = [tuple(int(v) for v in m.split("x")) for m in argv]
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    ap.add_argument("meshes", nargs="*", default=["4x16", "3x5"],
+                    help="meshes NXxNY to write and check")
+    o = ap.parse_args(argv)
+    meshes = [tuple(int(v) for v in m.split("x")) for m in o.meshes]
     fails = []
     for nx, ny in meshes:
         fails += check_mesh(nx, ny)

@@ -45,6 +45,11 @@ NEVER_YIELD = 1.0e30
 # ccx reads reals with the Fortran format f20.0: longer fields are an input error.
 CCX_FIELD_WIDTH = 20
 
+class HelpFormatter(argparse.ArgumentDefaultsHelpFormatter,
+                    argparse.RawDescriptionHelpFormatter):
+    """--help shows each option's default, and the docstring as written."""
+
+
 DEFAULTS = dict(a="1", b="2", h="0.3", E="2e11", nu="0.3", K="1e4", p="5", L="0.1")
 
 
@@ -200,13 +205,12 @@ def parse_corner_dz(dat_path, nx, ny):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--nx", type=int, default=4)
-    ap.add_argument("--ny", type=int, default=16)
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=HelpFormatter)
+    ap.add_argument("--nx", type=int, default=4, help="cells across the width")
+    ap.add_argument("--ny", type=int, default=16, help="cells along the length")
     for key, val in DEFAULTS.items():
-        ap.add_argument(f"--{key}", default=val, help=f"default {val}")
-    ap.add_argument("-o", "--output", default="-", help="deck file (default: stdout)")
+        ap.add_argument(f"--{key}", default=val, help=f"{key} of the SSNL130 case")
+    ap.add_argument("-o", "--output", default="-", help="deck file ('-': stdout)")
     o = ap.parse_args(argv)
     if o.nx < 1 or o.ny < 1:
         ap.error("--nx and --ny must be >= 1")

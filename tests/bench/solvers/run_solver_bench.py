@@ -72,11 +72,12 @@ def parse_mess(path, resu):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--parasol", required=True)
-    ap.add_argument("--meshes", default="4x16,16x64")
-    ap.add_argument("--methods", default=",".join(METHODS))
-    ap.add_argument("--csv")
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    ap.add_argument("--parasol", required=True, help="the parasol executable")
+    ap.add_argument("--meshes", default="4x16,16x64", help="model A meshes, comma list NXxNY")
+    ap.add_argument("--methods", default=",".join(METHODS), help="SOLVEUR METHODEs to time")
+    ap.add_argument("--csv", default=None, help="also write the rows to this CSV (None: no)")
     ap.add_argument("--one-thread", action="store_true",
                     help="run parasol with OMP_NUM_THREADS=1 and OPENBLAS_NUM_THREADS=1 (the "
                          "CHOLMOD and MUMPS plug-ins otherwise start OpenMP and OpenBLAS "

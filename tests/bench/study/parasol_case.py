@@ -156,9 +156,11 @@ def parse_resu(path):
     return values
 
 
-def exact_corners(ny):
-    """Exact discrete corner displacements (y = 0, y = b) at INST 1 for ny cells along y."""
-    ref = rigid_bed_exact.solve_rigid_bed(ny)
+def exact_corners(ny, model="a"):
+    """Exact discrete corner displacements (y = 0, y = b) at INST 1 for ny cells along y,
+    for the load the model applies: model A's pressure is taken at the plate's nodes (as
+    Code_Aster does), model B's edge load is integrated exactly."""
+    ref = rigid_bed_exact.solve_rigid_bed(ny, load="nodes" if model == "a" else "exact")
     return ref["pt01"], ref["pt03"]
 
 
@@ -175,7 +177,7 @@ def corner_errors(model, ny, values, inst=1.0):
     |error| over every corner found); None where a corner is missing.
     """
     comp = COMPONENT[model]
-    exact = exact_corners(ny)
+    exact = exact_corners(ny, model)
     cont = (U_A_CONTINUOUS, U_B_CONTINUOUS)
     out = dict(dz_y0=None, dz_yb=None, err_disc_y0=None, err_disc_yb=None, err_cont_y0=None,
                err_cont_yb=None, err_disc_max=None, err_cont_max=None)

@@ -65,6 +65,11 @@ COLUMNS = ["study", "knob_mesh", "model", "nx", "ny", "newton", "resi", "renum",
            "message"]
 
 
+
+class HelpFormatter(argparse.ArgumentDefaultsHelpFormatter,
+                    argparse.RawDescriptionHelpFormatter):
+    """--help shows each option's default, and the docstring as written."""
+
 def mesh_label(p):
     """'A 4x16' / 'B 16'."""
     return f"A {p['nx']}x{p['ny']}" if p["model"] == "a" else f"B {p['ny']}"
@@ -485,38 +490,37 @@ def replot(o):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=HelpFormatter)
     ap.add_argument("--parasol", default=os.path.join(pc.ROOT, "build", "parasol"),
-                    help="parasol executable (default: the Release build, build/parasol)")
+                    help="parasol executable (the Release build)")
     ap.add_argument("--outdir", default=os.path.join(pc.ROOT, "doc", "study"),
-                    help="CSV, summary and plots (default doc/study)")
+                    help="CSV, summary and plots")
     ap.add_argument("--budget", type=float, default=900.0,
                     help="seconds of parasol runs for the whole study; the mesh ladder stops "
-                         "before a mesh estimated beyond what is left (default 900)")
+                         "before a mesh estimated beyond what is left")
     ap.add_argument("--max-run-seconds", type=float, default=300.0,
-                    help="skip a mesh whose single run is estimated longer (default 300)")
+                    help="skip a mesh whose single run is estimated longer")
     ap.add_argument("--ladder", default=",".join(str(v) for v in LADDER_NY),
                     help="ny values of the mesh study (nx = ny/4 for model A)")
     ap.add_argument("--knob-meshes", default="32x128",
                     help="model A meshes, besides the baseline 4x16, for the newton/resi/"
-                         "renum knobs (comma list, '' for none; default 32x128)")
+                         "renum knobs (comma list, '' for none)")
     ap.add_argument("--nprec", type=int, default=11,
-                    help="SOLVEUR NPREC (default 11: the pivots of the 128x512 plate lose "
-                         "~10.5 digits; Code_Aster's SSNL130 uses 9 at 4x16)")
+                    help="SOLVEUR NPREC (11: the pivots of the 128x512 plate lose ~10.5 digits; "
+                         "Code_Aster's SSNL130 uses 9 at 4x16)")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs shorter than --repeat-below are run this many times; the fastest "
-                         "is kept (default 3)")
+                         "is kept")
     ap.add_argument("--repeat-below", type=float, default=1.0,
-                    help="repeat runs shorter than this many seconds (default 1)")
+                    help="repeat runs shorter than this many seconds")
     ap.add_argument("--fit-min-time", type=float, default=0.1,
-                    help="fit the time exponent over runs of at least this (default 0.1 s)")
+                    help="fit the time exponent over runs of at least this many seconds")
     ap.add_argument("--small", action="store_true",
                     help="tiny subset: ny 16, 32; RESI 1e-3, 1e-6; RCMK, SANS; no knob meshes")
     ap.add_argument("--check", action="store_true", help="exit 1 if a check fails")
-    ap.add_argument("--no-plots", action="store_true")
+    ap.add_argument("--no-plots", action="store_true", help="write the CSV and summary only")
     ap.add_argument("--keep", action="store_true", help="keep the decks and listings")
-    ap.add_argument("--replot", metavar="CSV",
+    ap.add_argument("--replot", metavar="CSV", default=None,
                     help="run nothing: rewrite summary.md and the plots from a study.csv")
     o = ap.parse_args(argv)
     o.parasol = os.path.abspath(o.parasol)

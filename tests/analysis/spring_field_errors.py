@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""TEST_RESU on the springs' element fields (SIEF_ELGA, VARI_ELGA) that cannot be answered,
+and IMPR_RESU of them to MED (not written yet), stop with a located message at the keyword
+at fault (exit 1, no crash). Each case appends
+one TEST_RESU to decks/ssnl130b.comm (model B: 2D_DIS_T springs M49..M65, group RESSORTS).
+
+Usage: spring_field_errors.py PARASOL DECKS_DIR WORKDIR
+"""
+import os
+import subprocess
+import sys
+
+parasol, decks, work = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+with open(os.path.join(decks, "ssnl130b.comm")) as f:
+    base = f.read().split("\n")
+fin = base.index("FIN()")
+
+# (name, TEST_RESU occurrence text, keyword at fault, phrase)
+CASES = [
+    ("no_point", "NOM_CHAM='SIEF_ELGA', NOM_CMP='N', MAILLE='M49'", "NOM_CHAM",
+     "SIEF_ELGA is read at a point: give POINT (1 or 2"),
+    ("point_3", "NOM_CHAM='SIEF_ELGA', NOM_CMP='N', MAILLE='M49', POINT=3", "POINT",
+     "a SEG2 spring has points 1 and 2"),
+    ("group_of_17", "NOM_CHAM='VARI_ELGA', NOM_CMP='V4', GROUP_MA='RESSORTS', POINT=1",
+     "GROUP_MA", "GROUP_MA RESSORTS holds 17 cells; TEST_RESU needs a group of exactly one"),
+    ("slab_cell", "NOM_CHAM='SIEF_ELGA', NOM_CMP='N', MAILLE='M1', POINT=1", "MAILLE",
+     "SIEF_ELGA is not stored at cell M1: parasol stores it for the DIS_CHOC springs"),
+    ("vz_in_2d", "NOM_CHAM='SIEF_ELGA', NOM_CMP='VZ', MAILLE='M49', POINT=1", "NOM_CMP",
+     "SIEF_ELGA of a 2D_DIS_T spring has components N VY, not VZ"),
+    ("v11", "NOM_CHAM='VARI_ELGA', NOM_CMP='DX', MAILLE='M49', POINT=1", "NOM_CMP",
+     "VARI_ELGA of DIS_CHOC has components V1 to V10, not DX"),
+    ("depl_at_cell", "NOM_CHAM='DEPL', NOM_CMP='DY', MAILLE='M49'", "MAILLE",
+     "DEPL is a nodal field: give GROUP_NO or NOEUD"),
+    ("sief_at_node", "NOM_CHAM='SIEF_ELGA', NOM_CMP='N', NOEUD='N1', POINT=1", "NOEUD",
+     "SIEF_ELGA is an element field: give GROUP_MA"),
+    ("point_of_depl", "NOM_CHAM='DEPL', NOM_CMP='DY', NOEUD='N1', POINT=1", "POINT",
+     "POINT goes with the element fields"),
+    ("impr_resu_med", "IMPR_RESU(FORMAT='MED', RESU=_F(RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'))",
+     "NOM_CHAM", "SIEF_ELGA is not written to MED yet"),
+]
+problems = []
+for name, occurrence, key, phrase in CASES:
+    line = occurrence if occurrence.startswith("IMPR_RESU") else \
+        f"TEST_RESU(RESU=_F(RESULTAT=RESU, INST=1.0, {occurrence}, VALE_CALC=0.0))"
+    command = line.split("(")[0]
+    deck = os.path.join(work, f"spring_{name}.comm")
+    with open(deck, "w") as f:
+        f.write("\n".join(base[:fin] + [line] + base[fin:]))
+    run = subprocess.run([parasol, "--unit", "20=" + os.path.join(decks, "ssnl130b.mail"),
+                          "--outdir", work, deck], capture_output=True, text=True, timeout=60)
+    column = line.index(key + "=") + 1 if key + "=" in line else line.index("RESU=_F") + 1
+    where = f"spring_{name}.comm:{fin + 1}:{column}: error: {command}/RESU/{key}: "
+    if run.returncode != 1 or where not in run.stderr or phrase not in run.stderr \
+            or "Fortran runtime" in run.stderr:
+        problems.append(f"{name}: exit {run.returncode}, stderr {run.stderr.strip()!r}; "
+                        f"expected {where!r} and {phrase!r}")
+for p in problems:
+    print("FAIL:", p)
+print(f"spring_field_errors: {len(CASES) - len(problems)} passed, {len(problems)} failed")
+sys.exit(1 if problems else 0)
