@@ -20,6 +20,7 @@ module mesh_gmsh_reader
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MESH_ERROR
     use strings, only: to_text
+    use number_limits, only: MAX_LENGTH
     use mesh_name_index, only: name_index_t, name_add, name_find
     use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
         mesh_add_node_group, mesh_add_cell_group, mesh_finish, nodes_of_cells, &
@@ -210,8 +211,15 @@ contains
         end if
         call parse_real(lex%text(first:last), value, ok, huge_value)
         if (huge_value) then
-            call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
-                '" is beyond double precision', line=lex%line)
+            ! 1e308 or more: a coordinate's bound is MAX_LENGTH (mesh_add_node checks the
+            ! rest), that of a number read and not used (bounding box, parameter) 1e308
+            if (what == 'node coordinate') then
+                call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
+                    '" is out of range (|x| <= ' // to_text(MAX_LENGTH) // ')', line=lex%line)
+            else
+                call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
+                    '" is out of range (|x| < 1E+308)', line=lex%line)
+            end if
         else if (.not. ok) then
             call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
                 '" is not a real number', line=lex%line)

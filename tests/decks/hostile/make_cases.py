@@ -149,6 +149,27 @@ def mesh_cases(c):
                 "# phrase: the $Elements header says tags 1 to %d, its blocks hold tags 1 to %s\n"
                 % (els + 1, int(head[3]) + 5, head[3]))
 
+    msh = subprocess.run([sys.executable, os.path.join(TOP, "tools", "make_ssnl130_mesh.py"),
+                          "--model", "a", "--format", "gmsh22"], check=True,
+                         capture_output=True).stdout.decode()
+    lines = msh.split("\n")
+    nodes = lines.index("$Nodes") + 1
+    x = list(lines)
+    tag, xc, yc, zc = x[nodes + 2].split()
+    x[nodes + 2] = " ".join([tag, "1e308", yc, zc])
+    c.mesh_case("gmsh22_coordinate_1e308", "msh", "GMSH", "\n".join(x),
+                "# fuzz seed 1 case 882: a Gmsh 2.2 node coordinate 1e308 trapped in the\n"
+                "# degenerate-cell check. Coordinates are finite and within 1e30, in every format.\n"
+                "# expect: gmsh22_coordinate_1e308.msh:%d: error: LIRE_MAILLAGE: node coordinate:\n"
+                "# phrase: \"1e308\" is out of range (|x| <= 1.000000000000E+30)\n" % (nodes + 3))
+    x = list(lines)
+    x[nodes] = "2147483647"
+    c.mesh_case("gmsh22_nodes_count_2147483647", "msh", "GMSH", "\n".join(x),
+                "# fuzz seed 1 case 1135: a Gmsh 2.2 $Nodes count of 2**31 - 1 allocated 48 GB\n"
+                "# (\"Error allocating\"). Counts are checked against the bytes left in the file.\n"
+                "# expect: gmsh22_nodes_count_2147483647.msh:%d: error: LIRE_MAILLAGE:\n"
+                "# phrase: number of nodes = 2147483647 is more than the\n" % (nodes + 1))
+
 
 def deck_cases(c):
     deck_a = read("decks/ssnl130a.comm")
@@ -159,6 +180,13 @@ def deck_cases(c):
                 "# expect: @L:@C: error: DEFI_MATERIAU/ELAS/E:\n"
                 "# phrase: value 1.000000000000E+308 is out of range (0 <= E <= 1E+100)\n",
                 [("E=2.0E+11", "E=1.0E+308")], at=("E=1.0E+308", "1.0E+308"))
+    c.deck_case("material_e_denormal", deck_b,
+                "# fuzz seed 4 case 1694: E = 1e-320 (a denormal) overflowed in MUMPS's unscaling\n"
+                "# (its inverse is beyond the largest real). A modulus other than 0 is at least\n"
+                "# 1e-100; the handler then refuses E = 0.\n"
+                "# expect: @L:@C: error: DEFI_MATERIAU/ELAS/E:\n"
+                "# phrase: value 9.999888671827E-321 is too small: E is 0 or at least 1E-100 in magnitude\n",
+                [("E=2.0E+11", "E=1e-320")], at=("E=1e-320", "1e-320"))
     c.deck_case("coque_epais_1e150", deck_a,
                 "# issue 13: EPAIS = 1e150 overflowed in EPAIS**3 of the plate's bending stiffness.\n"
                 "# expect: @L:@C: error: AFFE_CARA_ELEM/COQUE/EPAIS:\n"
