@@ -8,7 +8,8 @@ set -euo pipefail
 packages=(gfortran cmake ninja-build liblapack-dev libblas-dev libopenblas-dev libmetis-dev
           python3 python3-numpy python3-meshio libsuitesparse-dev libmumps-seq-dev
           libmumps-dev libopenmpi-dev openmpi-bin python3-matplotlib
-          libmedc-dev libmed-tools python3-h5py)   # MED plug-in; mdump and h5py check MED files
+          libmedc-dev libmed-tools python3-h5py    # MED plug-in; mdump and h5py check MED files
+          valgrind)                                 # the valgrind.* tests (memcheck)
 missing=()
 for p in "${packages[@]}"; do
     status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)

@@ -112,6 +112,10 @@ contains
         inst%id%comm = MPI_COMM_WORLD
         inst%id%sym = 2
         inst%id%par = 1
+        ! MUMPS's JOB = -1 reads KEEP(40) to detect an instance initialised twice (its driver
+        ! says "non initialized value"): a fresh structure gets a value that means "never
+        ! initialised" (valgrind: a conditional jump on uninitialised memory otherwise).
+        inst%id%keep(40) = 0
         inst%id%job = -1
         call dmumps(inst%id)
         ! no output from MUMPS: parasol writes its own diagnostics

@@ -4,8 +4,8 @@
 !> INCREMENT, NEWTON, CONVERGENCE and SOLVEUR, run the core (linear_static,
 !> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
 module analysis_commands
-    use kinds, only: dp, i4
-    use status, only: status_t, STATUS_MODEL_ERROR
+    use kinds, only: dp, i4, i8
+    use status, only: status_t, clear_status, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
@@ -21,7 +21,9 @@ module analysis_commands
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
     use assembly_system, only: structure_t, structure_check
-    use assembly_loads, only: check_imposed_owners
+    use assembly_loads, only: check_imposed_owners, record_imposed
+    use model_loads, only: load_item_where
+    use function_concept, only: param_binding_t
     use direct_solver, only: solver_options_t
     use solver_factory, only: DEFAULT_METHOD, default_renum, renum_allowed
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
@@ -33,6 +35,13 @@ module analysis_commands
     private
 
     public :: run_stat_non_line, run_meca_statique
+
+    !> Most memory an analysis may set aside for what it records: the fields of every
+    !> instant (DEPL, FORC_NODA, REAC_NODA, spring states) and the spring statuses of every
+    !> Newton iteration of a step. Both are allocated before the first step from counts the
+    !> deck gives (instants, ITER_GLOB_MAXI): beyond this they are refused with a message at
+    !> the keyword instead of an allocation failure (issue 13).
+    integer(i8), parameter :: MAX_RECORD_BYTES = 2_i8**30
 
 contains
 
@@ -60,6 +69,9 @@ contains
         options%deadline = ctx%deadline            ! polled between Newton iterations
         options%progress => ctx%progress           ! a line per step, work under way
         call structure_check(s, st)
+        if (st%ok()) call check_records(cmd, 'INCREMENT', 'LIST_INST', size(times, kind=i8), &
+            s%dofs%n_equations, count(s%choc), options%iter_glob_maxi, st)
+        if (st%ok()) call check_imposed(s, excit, times(2:), st)
         if (st%failed()) return
         call ctx%write_mess('    ' // to_text(count(s%choc .and. .not. s%dis_contact)) // &
             ' DIS_CHOC cell(s), ' // to_text(count(s%dis_contact)) // ' DIS_CONTACT cell(s), ' &
@@ -112,6 +124,9 @@ contains
         end if
         if (st%failed()) return
         call structure_check(s, st)
+        if (st%ok()) call check_records(cmd, '', merge('LIST_INST', 'INST     ', &
+            cmd%has('LIST_INST')), size(times, kind=i8), s%dofs%n_equations, 0_i4, 0_i4, st)
+        if (st%ok()) call check_imposed(s, excit, times, st)
         if (st%failed()) return
         allocate (res)
         call log_stream(log, ctx%mess%unit, '    ')
@@ -120,6 +135,99 @@ contains
         if (st%failed()) return
         call move_alloc(res, result)
     end subroutine run_meca_statique
+
+    !> Refuses, before anything is allocated, an analysis whose records would take more
+    !> than MAX_RECORD_BYTES: n_inst instants of 3 fields of n_eq equations and n_springs
+    !> spring states (a logical and a force each), and n_springs statuses and a residual for
+    !> each of the iter_max + 1 Newton iterations of a step.
+    !>  factor, key : where the instants come from (factor '' = the command level)
+    !>  st : out, located at CONVERGENCE/ITER_GLOB_MAXI or at the instants' keyword
+    subroutine check_records(cmd, factor, key, n_inst, n_eq, n_springs, iter_max, st)
+        type(command_t), intent(in) :: cmd
+        character(len=*), intent(in) :: factor, key
+        integer(i8), intent(in) :: n_inst
+        integer(i4), intent(in) :: n_eq, n_springs, iter_max
+        type(status_t), intent(inout) :: st
+        type(keyword_set_t) :: occ
+        integer(i8) :: per_instant, per_iteration
+        real(dp) :: bytes
+        per_iteration = int(n_springs, i8) * storage_size(.true.) / 8 + &
+            storage_size(1.0_dp) / 8                    ! the statuses, the residual
+        bytes = real(per_iteration, dp) * (real(iter_max, dp) + 1.0_dp)
+        if (bytes > real(MAX_RECORD_BYTES, dp)) then
+            occ = cmd%occurrence('CONVERGENCE', 1)
+            call occ%error_at('ITER_GLOB_MAXI', 'ITER_GLOB_MAXI = ' // to_text(iter_max) // &
+                ': more iterations than can be recorded (the statuses of ' // &
+                to_text(n_springs) // ' springs at each iteration of a step would take ' // &
+                gib_text(bytes) // ', more than ' // gib_text(real(MAX_RECORD_BYTES, dp)) &
+                // ')', st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        per_instant = 3_i8 * n_eq * storage_size(1.0_dp) / 8 + &
+            int(n_springs, i8) * (storage_size(.true.) + storage_size(1.0_dp)) / 8
+        bytes = real(per_instant, dp) * real(n_inst, dp)
+        if (bytes > real(MAX_RECORD_BYTES, dp)) then
+            if (len(factor) > 0) then
+                occ = cmd%occurrence(factor, 1)
+            else
+                occ = cmd%keyword_set_t
+            end if
+            call occ%error_at(key, to_text(n_inst) // ' instants: more than can be ' // &
+                'recorded (the fields of ' // to_text(n_eq) // ' equations at every ' // &
+                'instant would take ' // gib_text(bytes) // ', more than ' // &
+                gib_text(real(MAX_RECORD_BYTES, dp)) // ')', st, code=STATUS_MODEL_ERROR)
+        end if
+    end subroutine check_records
+
+    !> A component imposed twice with different values (in one load or two loads of EXCIT,
+    !> FONC_MULT applied) at any instant of the analysis is an error at the occurrence found
+    !> second, naming the first: Code_Aster refuses conflicting DDL_IMPO, and imposing them
+    !> in turn would silently keep the last.
+    !>  times : in, the instants the loads are applied at
+    subroutine check_imposed(s, excit, times, st)
+        type(structure_t), intent(in) :: s
+        type(excitation_t), intent(in) :: excit(:)
+        real(dp), intent(in) :: times(:)
+        type(status_t), intent(inout) :: st
+        real(dp), allocatable :: value(:)
+        integer(i4), allocatable :: owner(:, :)
+        integer(i4) :: i, k, first(2)
+        real(dp) :: factor
+        type(param_binding_t) :: binding
+        allocate (value(s%dofs%n_equations), owner(2, s%dofs%n_equations))
+        do i = 1, size(times)
+            owner = 0
+            do k = 1, size(excit)
+                factor = 1.0_dp
+                if (associated(excit(k)%fonc_mult)) then
+                    call excit(k)%fonc_mult%bind(['INST'], binding)
+                    call excit(k)%fonc_mult%evaluate(binding, [times(i)], factor, st)
+                    if (st%failed()) then
+                        call clear_status(st)      ! the analysis reports it, located
+                        cycle
+                    end if
+                end if
+                call record_imposed(s, excit(k)%load, k, times(i), factor, value, owner, &
+                                    first, st)
+                if (st%failed()) then
+                    if (first(1) > 0) st%message = st%message // ' at ' // &
+                        load_item_where(excit(first(1))%load%items(first(2))) // &
+                        ' (Code_Aster refuses conflicting imposed values: impose each ' // &
+                        'component once)'
+                    return
+                end if
+            end do
+        end do
+    end subroutine check_imposed
+
+    ! Bytes as GiB with 3 significant digits ("68.0 GiB").
+    function gib_text(bytes) result(text)
+        real(dp), intent(in) :: bytes
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write (buf, '(f16.1)') bytes / 2.0_dp**30
+        text = trim(adjustl(buf)) // ' GiB'
+    end function gib_text
 
     !> MODELE, CHAM_MATER, CARA_ELEM -> the structure (copies).
     subroutine gather_structure(cmd, s, st)

@@ -50,7 +50,7 @@ module contact_newton
     use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec, sym_move, &
         sym_add_element
     use direct_solver, only: direct_solver_t, solver_options_t, factor_report_t, &
-        effective_nprec, check_disabled, DIGITS_ALL_LOST
+        effective_nprec, check_disabled, DIGITS_ALL_LOST, nprec_text
     use solver_factory, only: create_solver, assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         assemble_stiffness, internal_forces_incremental, renumbering_lines, &
@@ -66,6 +66,7 @@ module contact_newton
     use spring_results, only: store_spring_fields
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use run_deadline, only: deadline_t
+    use number_limits, only: is_finite, MAX_BINARY_EXPONENT
     use progress, only: progress_t, wall_seconds, progress_note, progress_update, &
         progress_done, progress_context
     implicit none
@@ -1436,7 +1437,7 @@ contains
         have_held = .false.
         if (allocated(held%equations)) have_held = size(held%equations) > 0
         if (have_held) rhs = r
-        call solver%solve(r, st)
+        call solve_in_range(s, map, matrix, solver, r, t, st)
         if (st%failed() .or. .not. have_held) return
         allocate (ax(size(r)))
         call sym_matvec(matrix, r, ax)
@@ -1474,6 +1475,48 @@ contains
             held%warned = .true.
         end if
     end subroutine solve_held
+
+    !> solver%solve without overflow (issue 13): the right-hand side is scaled by a power of
+    !> two to |r| <= 1 (exact: the solution is bit for bit the unscaled one's, scaled), and
+    !> the solution is scaled back only when it fits, with the products K u the analysis
+    !> forms from it (number_limits): otherwise STATUS_SINGULAR at the largest component,
+    !> a load out of all proportion to what holds the structure there.
+    subroutine solve_in_range(s, map, matrix, solver, r, t, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(sym_matrix_t), intent(in) :: matrix
+        class(direct_solver_t), intent(inout) :: solver
+        real(dp), intent(inout) :: r(:)
+        real(dp), intent(in) :: t
+        type(status_t), intent(out) :: st
+        integer :: shift
+        integer(i4) :: worst
+        real(dp) :: largest
+        shift = 0
+        if (size(r) > 0) then
+            if (maxval(abs(r)) > 0.0_dp) shift = exponent(maxval(abs(r)))
+        end if
+        r = scale(r, -shift)
+        call solver%solve(r, st)
+        if (st%failed() .or. size(r) == 0) return
+        worst = int(maxloc(abs(r), dim=1), i4)
+        largest = abs(r(worst))
+        if (.not. is_finite(largest)) then
+            worst = int(findloc(is_finite(r), .false., dim=1), i4)
+        else if (largest > 0.0_dp .and. exponent(largest) + shift + &
+                 max(0, exponent(maxval(abs(sym_diagonal(matrix))))) <= MAX_BINARY_EXPONENT) then
+            r = scale(r, shift)
+            return
+        else if (.not. largest > 0.0_dp) then
+            return
+        end if
+        call set_error(st, STATUS_SINGULAR, 'INST ' // real_e13(t) // ': the solution at ' // &
+            describe_equation(s%dofs, s%mesh, map%free_to_eq(worst)) // ' is beyond ' // &
+            'double precision (about 2**' // to_text(exponent(largest) + shift) // &
+            ' times the stiffness): the loads are out of all proportion to what holds the ' // &
+            'structure there (a support or a stiffness missing, or loads too large)')
+        r = 0.0_dp
+    end subroutine solve_in_range
 
     !> Node and component of the first held equations (cut after LIST_EQUATIONS).
     function held_names(s, map, equations) result(text)
@@ -1632,7 +1675,7 @@ contains
         end if
         diag%n_flagged = eq
         diag%where = ' (pivot lost ' // real_digits(max(report%max_digits_lost, 0.0_dp)) // &
-            ' digits, NPREC = ' // to_text(diag%nprec) // ')'
+            ' digits, NPREC = ' // nprec_text(options) // ')'
         if (check_disabled(options)) diag%where = ' (pivot held: NPREC < 0, check off)'
     end subroutine classify_pivots
 

@@ -8,19 +8,24 @@ module assembly_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: real_e13, to_text
-    use mesh_types, only: cell_label, node_name
+    use mesh_types, only: cell_label, node_name, cell_measure
     use model_types, only: is_plate, is_plane_edge
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS
     use model_loads, only: load_set_t, load_item_t, load_value_at, LOAD_DDL_IMPO, &
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
-        LOAD_KIND_NAMES
+        LOAD_KIND_NAMES, load_locate, load_slot_name
+    use number_limits, only: product_fits
     use element_loads, only: plate_nodal_pressure, plate_nodal_forces, edge_load_points, &
         edge_line_forces, EDGE_POINT_COUNT
     use assembly_system, only: structure_t
     implicit none
     private
 
-    public :: mark_imposed, impose_values, add_external_forces, check_imposed_owners
+    public :: mark_imposed, impose_values, add_external_forces, check_imposed_owners, &
+        record_imposed
+
+    !> Relative difference under which two values imposed on one component are the same.
+    real(dp), parameter :: SAME_IMPOSED_VALUE = 1.0e-12_dp
 
 contains
 
@@ -115,8 +120,10 @@ contains
                         if (.not. item%values(comp)%given) cycle
                         eq = s%dofs%equation(comp, node)
                         if (eq <= 0) cycle
-                        call load_value_at(item%values(comp), item%kind, t, &
+                        call load_value_at(item%values(comp), item%kind, comp, t, &
                             s%mesh%coords(:, node), v, st)
+                        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                        call load_locate(item, comp, st)
                         if (st%failed()) return
                         u(eq) = factor * v
                     end do
@@ -124,6 +131,61 @@ contains
             end associate
         end do
     end subroutine impose_values
+
+    !> Records the DDL_IMPO values of load set number `load_number` at time t (times
+    !> factor) and finds a component imposed twice with different values: Code_Aster refuses
+    !> conflicting imposed values, and applying them in turn would silently keep the last.
+    !>  value, owner : inout, (n_equations) and (2, n_equations): the value imposed so far
+    !>                 and (load number, item) that imposed it, owner(1, eq) = 0 for none
+    !>  first : out, on a conflict the owner of the other value (load number, item)
+    !>  st : out, the conflict, located at the occurrence found second (the caller names the
+    !>       first one); function errors and values out of range, located
+    subroutine record_imposed(s, load, load_number, t, factor, value, owner, first, st)
+        type(structure_t), intent(in) :: s
+        type(load_set_t), intent(in) :: load
+        integer(i4), intent(in) :: load_number
+        real(dp), intent(in) :: t, factor
+        real(dp), intent(inout) :: value(:)
+        integer(i4), intent(inout) :: owner(:, :)
+        integer(i4), intent(out) :: first(2)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, i, comp, eq, node
+        real(dp) :: v
+        first = 0
+        do k = 1, load%n_items
+            if (load%items(k)%kind /= LOAD_DDL_IMPO) cycle
+            associate (item => load%items(k))
+                do i = 1, size(item%nodes)
+                    node = item%nodes(i)
+                    do comp = 1, N_COMPONENTS
+                        if (.not. item%values(comp)%given) cycle
+                        eq = s%dofs%equation(comp, node)
+                        if (eq <= 0) cycle
+                        call load_value_at(item%values(comp), item%kind, comp, t, &
+                            s%mesh%coords(:, node), v, st)
+                        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                        call load_locate(item, comp, st)
+                        if (st%failed()) return
+                        v = factor * v
+                        if (owner(1, eq) == 0) then
+                            owner(:, eq) = [load_number, k]
+                            value(eq) = v
+                        else if (abs(v - value(eq)) > SAME_IMPOSED_VALUE * &
+                                 max(abs(v), abs(value(eq)))) then
+                            first = owner(:, eq)
+                            call set_error(st, STATUS_MODEL_ERROR, 'node ' // &
+                                node_name(s%mesh, node) // ' ' // trim(COMPONENT_NAMES(comp)) &
+                                // ' is imposed twice with different values at INST ' // &
+                                to_text(t) // ': ' // to_text(v) // ' here, ' // &
+                                to_text(value(eq)) // ' by the DDL_IMPO')
+                            call load_locate(item, comp, st)
+                            return
+                        end if
+                    end do
+                end do
+            end associate
+        end do
+    end subroutine record_imposed
 
     !> Adds the external forces of a load set at time t (times factor) to fext.
     !>  st : out, function evaluation errors; a load on a cell of the wrong kind; a nodal
@@ -174,8 +236,10 @@ contains
                         trim(COMPONENT_NAMES(comp)) // ' in the model')
                     return
                 end if
-                call load_value_at(item%values(comp), item%kind, t, &
+                call load_value_at(item%values(comp), item%kind, comp, t, &
                     s%mesh%coords(:, item%nodes(i)), v, st)
+                if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                call load_locate(item, comp, st)
                 if (st%failed()) return
                 fext(eq) = fext(eq) + factor * v
             end do
@@ -193,7 +257,7 @@ contains
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        real(dp) :: x(3, 4), q(3, 4), pres(4), fe(12)
+        real(dp) :: x(3, 4), q(3, 4), pres(4), fe(12), area
         integer(i4) :: nn, a, comp, p0, eq
         logical :: pressure
         if (.not. is_plate(s%model%element(c))) then
@@ -207,13 +271,25 @@ contains
         pressure = item%values(SLOT_PRES)%given
         q = 0.0_dp
         pres = 0.0_dp
+        area = cell_measure(s%mesh, c)      ! the nodal forces are values times parts of it
         do a = 1, nn
             if (pressure) then
-                call load_value_at(item%values(SLOT_PRES), item%kind, t, x(:, a), pres(a), st)
+                call load_value_at(item%values(SLOT_PRES), item%kind, SLOT_PRES, t, x(:, a), &
+                    pres(a), st)
+                if (st%ok()) call check_factor(area, pres(a), item%kind, SLOT_PRES, st)
+                if (st%ok()) call check_factor(factor, pres(a) * area, item%kind, SLOT_PRES, &
+                                               st)
+                call load_locate(item, SLOT_PRES, st)
             else
                 do comp = 1, 3
-                    if (item%values(comp)%given) call load_value_at(item%values(comp), &
-                        item%kind, t, x(:, a), q(comp, a), st)
+                    if (item%values(comp)%given) then
+                        call load_value_at(item%values(comp), item%kind, comp, t, x(:, a), &
+                            q(comp, a), st)
+                        if (st%ok()) call check_factor(area, q(comp, a), item%kind, comp, st)
+                        if (st%ok()) call check_factor(factor, q(comp, a) * area, item%kind, &
+                                                       comp, st)
+                        call load_locate(item, comp, st)
+                    end if
                     if (st%failed()) exit
                 end do
             end if
@@ -269,8 +345,12 @@ contains
         do g = 1, EDGE_POINT_COUNT
             do comp = 1, 2
                 if (.not. item%values(comp)%given) cycle
-                call load_value_at(item%values(comp), item%kind, t, &
+                call load_value_at(item%values(comp), item%kind, comp, t, &
                     [xg(1, g), xg(2, g), 0.0_dp], q(comp, g), st)
+                if (st%ok()) call check_factor(wg(g), q(comp, g), item%kind, comp, st)
+                if (st%ok()) call check_factor(factor, q(comp, g) * wg(g), item%kind, comp, &
+                                               st)
+                call load_locate(item, comp, st)
                 if (st%failed()) return
             end do
         end do
@@ -283,5 +363,18 @@ contains
             end do
         end do
     end subroutine edge_cell_forces
+
+    ! A load value times a factor (the FONC_MULT of its EXCIT, an integration weight) must
+    ! stay inside the magnitudes products may be formed from (number_limits): decided
+    ! before multiplying, so the check cannot overflow.
+    subroutine check_factor(factor, value, kind, slot, st)
+        real(dp), intent(in) :: factor, value
+        integer(i4), intent(in) :: kind, slot
+        type(status_t), intent(inout) :: st
+        if (product_fits(factor, value)) return
+        call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(kind)) // ' ' // &
+            load_slot_name(kind, slot) // ' = ' // to_text(value) // ' times ' // &
+            to_text(factor) // ' (FONC_MULT, or the area or length it acts on) overflows')
+    end subroutine check_factor
 
 end module assembly_loads

@@ -355,7 +355,7 @@ contains
         type(assembly_map_t), intent(in), optional :: map
         type(contact_history_t), intent(in), optional :: history
         integer(i4) :: kind, m, nn, p0
-        real(dp) :: x(3, 4), x2(2, 4), k8(8, 8)
+        real(dp) :: x(3, 4), x2(2, 4), k8(8, 8), d8(8)
         kind = s%model%element(c)
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
@@ -381,7 +381,12 @@ contains
                 x2 = x(1:2, 1:4)
                 call plane_quad4_stiffness(x2, e%e, e%nu, kind == ELEM_D_PLAN_QUAD4, k8, st)
                 ke = k8
-                if (.not. want_matrix) fe = matmul(k8, plane_deformation(x2, ue))
+                if (.not. want_matrix) then
+                    ! the deformation in a variable of its own: matmul of a function result,
+                    ! inlined by the front end, read an uninitialised temporary (valgrind)
+                    d8 = plane_deformation(x2, ue)
+                    fe = matmul(k8, d8)
+                end if
             end associate
         else if (is_dis_contact(s, c)) then
             call dis_contact_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st, map, &
@@ -1147,7 +1152,9 @@ contains
     pure subroutine plane_forces(k8, x2, ue, fe)
         real(dp), intent(in) :: k8(8, 8), x2(2, 4), ue(8)
         real(dp), intent(out) :: fe(8)
-        fe = matmul(k8, plane_deformation(x2, ue))
+        real(dp) :: d8(8)
+        d8 = plane_deformation(x2, ue)    ! not inline in matmul: see cell_response
+        fe = matmul(k8, d8)
     end subroutine plane_forces
 
     !> The response of one SEG2 spring (DIS_T, 2D_DIS_T; DIS_CHOC or linear) at u: its

@@ -9,7 +9,7 @@
 !> Every error is located `CASE.export:LINE: error: ...` and says what would be right.
 module export_file
     use kinds, only: dp
-    use strings, only: string_t, to_text, join_words
+    use strings, only: string_t, to_text, join_words, ends_with
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_DECK_ERROR
     use deck_interpreter, only: read_source_text
     implicit none
@@ -132,8 +132,10 @@ contains
             if (st%failed()) return
         end do
         if (size(exp%command_files()) == 0) then
+            ! located at the end of the file, where the missing line would be
             call set_error(st, STATUS_DECK_ERROR, 'no command file: an export file names ' // &
-                'its decks with lines "F comm NAME.comm D 1"', file=path)
+                'its decks with lines "F comm NAME.comm D 1"', file=path, &
+                line=max(1, line - merge(1, 0, len(text) > 0 .and. ends_with(text, achar(10)))))
         end if
     end subroutine parse_export
 

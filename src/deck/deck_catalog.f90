@@ -2,6 +2,7 @@
 !> place where the commands are described, as data, in Code_Aster's manner: keywords, types,
 !> cardinality, defaults, allowed values, mandatory keywords, rules).
 module deck_catalog
+    use kinds, only: dp
     use strings, only: string_t
     use deck_value, only: append_string
     implicit none
@@ -17,9 +18,15 @@ module deck_catalog
     !> evol_elas|evol_noli), ANY. Factor keywords have is_factor and own the keywords whose
     !> `parent` is their index. `default` is the text of the default ('' = none); several
     !> values are blank-separated. `noop`: accepted for Code_Aster compatibility, no effect.
+    !> vmin/vmax (when has_vmin/has_vmax): the inclusive range of a numeric value, as
+    !> Code_Aster's val_min/val_max, or parasol's own bound (number_limits) where products
+    !> formed from the value must stay finite; vtiny (has_vtiny): the smallest magnitude of a
+    !> value that is not 0 (a stiffness whose inverse must stay finite).
     type, public :: kw_def_t
         character(len=:), allocatable :: name
         character(len=:), allocatable :: types
+        logical :: has_vmin = .false., has_vmax = .false., has_vtiny = .false.
+        real(dp) :: vmin = 0.0_dp, vmax = 0.0_dp, vtiny = 0.0_dp
         integer :: min = 1, max = 1
         logical :: mandatory = .false.
         logical :: is_factor = .false.
@@ -119,13 +126,29 @@ contains
     !>  types : see kw_def_t;  min, max : cardinality (default 1..1; min 0 is allowed)
     !>  req : mandatory;  def : default as text;  into : blank-separated allowed values
     !>  noop : accepted, no effect in parasol
-    subroutine catalog_add_keyword(self, name, types, min, max, req, def, into, noop)
+    !>  vmin, vmax : inclusive range of each numeric value
+    !>  vtiny : smallest magnitude of a value that is not 0
+    subroutine catalog_add_keyword(self, name, types, min, max, req, def, into, noop, vmin, &
+                                   vmax, vtiny)
         class(catalog_t), intent(inout) :: self
         character(len=*), intent(in) :: name, types
         integer, intent(in), optional :: min, max
         logical, intent(in), optional :: req, noop
         character(len=*), intent(in), optional :: def, into
+        real(dp), intent(in), optional :: vmin, vmax, vtiny
         type(kw_def_t) :: kw
+        if (present(vtiny)) then
+            kw%has_vtiny = .true.
+            kw%vtiny = vtiny
+        end if
+        if (present(vmin)) then
+            kw%has_vmin = .true.
+            kw%vmin = vmin
+        end if
+        if (present(vmax)) then
+            kw%has_vmax = .true.
+            kw%vmax = vmax
+        end if
         kw%name = name
         kw%types = types
         kw%parent = self%factor

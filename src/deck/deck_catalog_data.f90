@@ -4,12 +4,20 @@
 !> (U4 documentation of each command); keywords marked noop are accepted so real decks run
 !> unchanged, and have no effect in parasol.
 module deck_catalog_data
+    use kinds, only: dp
     use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+    use number_limits, only: MAX_LENGTH, MIN_LENGTH, MAX_MODULUS, MIN_MODULUS, MAX_INSTANT
     implicit none
     private
     public :: build_catalog
 
     character(len=*), parameter :: OUI_NON = 'OUI NON'
+    !> Ranges (vmin, vmax) are Code_Aster's val_min/val_max where it has one (E >= 0,
+    !> -1 <= NU <= 0.5, REAC_ITER >= 0 ...) and parasol's bounds of number_limits where the
+    !> products formed from a value must stay finite (lengths, moduli, instants): issue 13.
+    real(dp), parameter :: ANGLE_MAX = 1.0e30_dp          !< degrees, or a direction vector
+    real(dp), parameter :: RATIO_MAX = 1.0e10_dp          !< COEF_RIGI_DRZ
+    real(dp), parameter :: WEIGHT_MAX = 1.0e30_dp         !< RIGI_PARASOL COEF_GROUP
     !> NOM_CMP of TEST_RESU and IMPR_RESU: DEPL, FORC_NODA, REAC_NODA components; SIEF_ELGA
     !> of the discrete springs (N VY VZ); VARI_ELGA of DIS_CHOC (V1 .. V10).
     character(len=*), parameter :: RESULT_COMPONENTS = 'DX DY DZ DRX DRY DRZ N VY VZ ' // &
@@ -90,22 +98,24 @@ contains
 
         call c%command('DEFI_MATERIAU', 'mater')
         call c%fact('ELAS')
-        call c%key('E', 'R', req=.true.)
-        call c%key('NU', 'R', req=.true.)
+        call c%key('E', 'R', req=.true., vmin=0.0_dp, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)                   ! val_min 0; E > 0: the handler
+        call c%key('NU', 'R', req=.true., vmin=-1.0_dp, vmax=0.5_dp)
         call c%key('RHO', 'R')
         call c%key('ALPHA', 'R', noop=.true.)
         call c%key('AMOR_ALPHA', 'R', noop=.true.)
         call c%key('AMOR_BETA', 'R', noop=.true.)
         call c%end_fact()
         call c%fact('DIS_CONTACT')
-        call c%key('RIGI_NOR', 'R')
-        call c%key('RIGI_TAN', 'R', def='0.0')
-        call c%key('DIST_1', 'R', def='0.0')
-        call c%key('DIST_2', 'R', def='0.0')
-        call c%key('JEU', 'R', def='0.0')
-        call c%key('COULOMB', 'R', def='0.0')
-        call c%key('AMOR_NOR', 'R', def='0.0')
-        call c%key('AMOR_TAN', 'R', def='0.0')
+        call c%key('RIGI_NOR', 'R', vmin=0.0_dp, vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+        call c%key('RIGI_TAN', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
+        call c%key('DIST_1', 'R', def='0.0', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('DIST_2', 'R', def='0.0', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('JEU', 'R', def='0.0', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('COULOMB', 'R', def='0.0', vmin=0.0_dp)
+        call c%key('AMOR_NOR', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_MODULUS)
+        call c%key('AMOR_TAN', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_MODULUS)
         call c%end_fact()
         call c%rule(RULE_AU_MOINS_UN, 'ELAS DIS_CONTACT')
         call c%key('INFO', 'I', def='1', into='1 2')
@@ -131,11 +141,12 @@ contains
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%fact('COQUE', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
-        call c%key('EPAIS', 'R', req=.true.)
+        call c%key('EPAIS', 'R', req=.true., vmax=MAX_LENGTH, vtiny=MIN_LENGTH)  ! > 0: handler
         call c%key('COQUE_NCOU', 'I', noop=.true.)
-        call c%key('COEF_RIGI_DRZ', 'R', def='1.0E-5')     ! Code_Aster default
-        call c%key('ANGL_REP', 'R', min=2, max=2)
-        call c%key('VECTEUR', 'R', min=3, max=3)
+        call c%key('COEF_RIGI_DRZ', 'R', def='1.0E-5', &  ! Code_Aster default
+                   vmin=-RATIO_MAX, vmax=RATIO_MAX)
+        call c%key('ANGL_REP', 'R', min=2, max=2, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('VECTEUR', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
         call c%key('EXCENTREMENT', 'R', noop=.true.)
         call c%key('INER_ROTA', 'TXM', into=OUI_NON, noop=.true.)
         call c%key('MODI_METRIQUE', 'TXM', into=OUI_NON, noop=.true.)
@@ -150,20 +161,22 @@ contains
         call c%fact('ORIENTATION', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('CARA', 'TXM', req=.true., into='ANGL_VRIL VECT_Y ANGL_NAUT')
-        call c%key('VALE', 'R', max=3, req=.true.)
+        call c%key('VALE', 'R', max=3, req=.true., vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
         call c%end_fact()
         call c%fact('RIGI_PARASOL', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('GROUP_MA_SEG2', 'TXM', max=MANY)
         call c%key('GROUP_MA_POI1', 'TXM', max=MANY)
-        call c%key('COEF_GROUP', 'R', max=MANY)
+        call c%key('COEF_GROUP', 'R', max=MANY, vmin=-WEIGHT_MAX, vmax=WEIGHT_MAX, &
+                   vtiny=1.0_dp / WEIGHT_MAX)
         call c%key('FONC_GROUP', 'FUNC', max=MANY)
         call c%key('CARA', 'TXM', max=2, req=.true., into=K_CARA)
-        call c%key('VALE', 'R', max=MANY, req=.true.)
+        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
         call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL')
         call c%key('GROUP_NO_CENTRE', 'TXM')
         call c%key('NOEUD_CENTRE', 'TXM')
-        call c%key('COOR_CENTRE', 'R', min=2, max=3)
+        call c%key('COOR_CENTRE', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
         call c%rule(RULE_UN_PARMI, 'GROUP_MA_SEG2 GROUP_MA_POI1')
         call c%rule(RULE_UN_PARMI, 'COEF_GROUP FONC_GROUP')
         call c%rule(RULE_EXCLUS, 'GROUP_NO_CENTRE NOEUD_CENTRE COOR_CENTRE')
@@ -176,7 +189,8 @@ contains
         character(len=*), intent(in) :: cara
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('CARA', 'TXM', req=.true., into=cara)
-        call c%key('VALE', 'R', max=MANY, req=.true.)
+        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
         call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL LOCAL')
         call c%key('SYME', 'TXM', def='OUI', into=OUI_NON)
     end subroutine describe_discrete
@@ -208,11 +222,11 @@ contains
         call c%key('VALE', 'TXM', req=.true.)
 
         call c%command('DEFI_LIST_REEL', 'listr8')
-        call c%key('VALE', 'R', max=MANY)
-        call c%key('DEBUT', 'R')
+        call c%key('VALE', 'R', max=MANY, vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('DEBUT', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%fact('INTERVALLE', max=MANY)
-        call c%key('JUSQU_A', 'R', req=.true.)
-        call c%key('PAS', 'R')
+        call c%key('JUSQU_A', 'R', req=.true., vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('PAS', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%key('NOMBRE', 'I')
         call c%rule(RULE_UN_PARMI, 'PAS NOMBRE')
         call c%end_fact()
@@ -268,7 +282,7 @@ contains
         call c%key('NOEUD', 'TXM', max=MANY)
         call c%rule(RULE_UN_PARMI, 'TOUT GROUP_NO GROUP_MA NOEUD')
         call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
-        call add_components(c, DOFS, vtype, also='BLOCAGE')
+        call add_components(c, DOFS, vtype, also='BLOCAGE', bound=MAX_LENGTH)  ! lengths, angles
         call c%end_fact()
         call c%fact('FORCE_NODALE', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
@@ -298,16 +312,22 @@ contains
     end subroutine describe_load_command
 
     !> Optional components (at least one of them, or of the keywords `also`) of a load
-    !> factor keyword.
-    subroutine add_components(c, names, vtype, also)
+    !> factor keyword; real values within +-bound when given (functions are checked where
+    !> they are evaluated, model_loads).
+    subroutine add_components(c, names, vtype, also, bound)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: names, vtype
         character(len=*), intent(in), optional :: also
+        real(dp), intent(in), optional :: bound
         integer :: i, j
         i = 1
         do while (i <= len_trim(names))
             j = index(names(i:) // ' ', ' ') + i - 1
-            call c%key(names(i:j - 1), vtype)
+            if (present(bound) .and. vtype == 'R') then
+                call c%key(names(i:j - 1), vtype, vmin=-bound, vmax=bound)
+            else
+                call c%key(names(i:j - 1), vtype)
+            end if
             i = j + 1
         end do
         if (present(also)) then
@@ -328,7 +348,7 @@ contains
         call c%key('FONC_MULT', 'FUNC')
         call c%end_fact()
         call c%key('LIST_INST', 'listr8')
-        call c%key('INST', 'R', max=MANY)
+        call c%key('INST', 'R', max=MANY, vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%rule(RULE_EXCLUS, 'LIST_INST INST')
         call describe_solver(c)
         call c%key('INFO', 'I', def='1', into='1 2')
@@ -353,23 +373,23 @@ contains
         call c%end_fact()
         call c%fact('INCREMENT', req=.true.)
         call c%key('LIST_INST', 'listr8', req=.true.)
-        call c%key('INST_INIT', 'R')
-        call c%key('INST_FIN', 'R')
-        call c%key('NUME_INST_INIT', 'I')
-        call c%key('NUME_INST_FIN', 'I')
+        call c%key('INST_INIT', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('INST_FIN', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('NUME_INST_INIT', 'I', vmin=0.0_dp)
+        call c%key('NUME_INST_FIN', 'I', vmin=0.0_dp)
         call c%rule(RULE_EXCLUS, 'INST_INIT NUME_INST_INIT')
         call c%rule(RULE_EXCLUS, 'INST_FIN NUME_INST_FIN')
         call c%end_fact()
         call c%fact('NEWTON')
         call c%key('PREDICTION', 'TXM', into='TANGENTE ELASTIQUE')
         call c%key('MATRICE', 'TXM', def='TANGENTE', into='TANGENTE ELASTIQUE')
-        call c%key('REAC_INCR', 'I', def='1')             ! Code_Aster default
-        call c%key('REAC_ITER', 'I', def='0')             ! Code_Aster default
+        call c%key('REAC_INCR', 'I', def='1', vmin=0.0_dp)     ! Code_Aster default, val_min
+        call c%key('REAC_ITER', 'I', def='0', vmin=0.0_dp)     ! Code_Aster default, val_min
         call c%end_fact()
         call c%fact('CONVERGENCE')
-        call c%key('RESI_GLOB_RELA', 'R')
-        call c%key('RESI_GLOB_MAXI', 'R')
-        call c%key('ITER_GLOB_MAXI', 'I', def='10')       ! Code_Aster default
+        call c%key('RESI_GLOB_RELA', 'R', vmin=0.0_dp)
+        call c%key('RESI_GLOB_MAXI', 'R', vmin=0.0_dp)
+        call c%key('ITER_GLOB_MAXI', 'I', def='10', vmin=0.0_dp)   ! Code_Aster default
         call c%key('ARRET', 'TXM', def='OUI', into=OUI_NON)
         call c%end_fact()
         call describe_solver(c)
@@ -425,11 +445,11 @@ contains
         call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD GROUP_MA MAILLE')
         call c%key('POINT', 'I')
         call c%key('VALE_CALC', 'R', req=.true.)
-        call c%key('TOLE_MACHINE', 'R', def='1.0E-6')     ! Code_Aster default
+        call c%key('TOLE_MACHINE', 'R', def='1.0E-6', vmin=0.0_dp)     ! Code_Aster default
         call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
         call c%key('REFERENCE', 'TXM', into='ANALYTIQUE SOURCE_EXTERNE AUTRE_ASTER NON_DEFINI')
         call c%key('VALE_REFE', 'R')
-        call c%key('PRECISION', 'R', def='1.0E-3')        ! Code_Aster default
+        call c%key('PRECISION', 'R', def='1.0E-3', vmin=0.0_dp)        ! Code_Aster default
         call c%key('LEGENDE', 'TXM')
         call c%key('VALE_ABS', 'TXM', into=OUI_NON, noop=.true.)
         call c%end_fact()

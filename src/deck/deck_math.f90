@@ -202,6 +202,7 @@ contains
         real(dp), intent(out) :: r
         integer, intent(out) :: code
         integer :: n
+        real(dp) :: la
         code = MATH_OK; r = 1.0_dp
         if (same_real(b, 0.0_dp)) return
         if (same_real(a, 0.0_dp)) then
@@ -215,8 +216,15 @@ contains
         if (a < 0.0_dp .and. .not. same_real(b, aint(b))) then
             code = MATH_DOMAIN; return
         end if
-        if (b * log(abs(a)) > log(huge(a))) then
-            code = MATH_OVERFLOW; return
+        ! |a|**b overflows when b * log|a| > log(huge) (EXP_LIMIT, with a margin for the
+        ! rounding of the power); the product itself overflows for b = 1e308 (10.0**1e308),
+        ! so the test divides instead: log|a| is 0 or at least ~1e-16 in magnitude, and
+        ! EXP_LIMIT / |log|a|| is finite
+        la = log(abs(a))
+        if ((la > 0.0_dp .and. b > 0.0_dp) .or. (la < 0.0_dp .and. b < 0.0_dp)) then
+            if (abs(b) > EXP_LIMIT / abs(la)) then
+                code = MATH_OVERFLOW; return
+            end if
         end if
         if (same_real(b, aint(b)) .and. abs(b) <= 64.0_dp) then
             n = int(b)

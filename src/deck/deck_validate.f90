@@ -10,6 +10,7 @@ module deck_validate
         RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
     use deck_command, only: command_t, keyword_set_t, kw_value_t, factor_value_t
     use deck_suggest, only: did_you_mean
+    use deck_math, only: same_real
     implicit none
     private
     public :: validate_command, type_accepts, default_value
@@ -267,6 +268,10 @@ contains
                         call fail(items(i), msg); return
                     end if
                 end if
+                msg = check_range(k, items(i))
+                if (len(msg) > 0) then
+                    call fail(items(i), msg); return
+                end if
             end do
             if (k%max == 1) then
                 item%value = items(1)
@@ -284,6 +289,76 @@ contains
                 command=def%name, keyword=path(def, parent, args%keys(j)%s))
         end subroutine fail
     end subroutine add_simple
+
+    !> '' when v is a number inside kw's range (or kw has none), else the message naming
+    !> the value and the range.
+    function check_range(kw, v) result(msg)
+        type(kw_def_t), intent(in) :: kw
+        type(value_t), intent(in) :: v
+        character(len=:), allocatable :: msg
+        real(dp) :: x
+        msg = ''
+        if (.not. (kw%has_vmin .or. kw%has_vmax .or. kw%has_vtiny) .or. &
+            .not. is_number(v)) return
+        x = as_real(v)
+        if (kw%has_vtiny .and. abs(x) > 0.0_dp .and. abs(x) < kw%vtiny) then
+            msg = 'value ' // value_text(v) // ' is too small: ' // kw%name // ' is 0 or at ' &
+                // 'least ' // range_bound(kw%vtiny) // ' in magnitude (its inverse must ' // &
+                'stay finite)'
+            return
+        end if
+        if (.not. (kw%has_vmin .or. kw%has_vmax)) return
+        if (kw%has_vmin .and. kw%has_vmax) then
+            if (x < kw%vmin .or. x > kw%vmax) msg = 'value ' // value_text(v) // &
+                ' is out of range (' // range_bound(kw%vmin) // ' <= ' // kw%name // ' <= ' &
+                // range_bound(kw%vmax) // ')'
+        else if (kw%has_vmin) then
+            if (x < kw%vmin) msg = 'value ' // value_text(v) // ' is out of range (' // &
+                kw%name // ' >= ' // range_bound(kw%vmin) // ')'
+        else
+            if (x > kw%vmax) msg = 'value ' // value_text(v) // ' is out of range (' // &
+                kw%name // ' <= ' // range_bound(kw%vmax) // ')'
+        end if
+    end function check_range
+
+    ! A bound as the deck would write it: 0, -1, 0.5, 1E+30, 2.5E-07, 1000000000.
+    function range_bound(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: text
+        character(len=40) :: buf
+        integer :: e, k
+        if (abs(x) < 1.0e10_dp .and. same_real(x, aint(x))) then
+            write (buf, '(i0)') int(x, i8)
+            text = trim(buf)
+        else if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e10_dp) then
+            write (buf, '(f25.12)') x
+            text = strip_zeros(trim(adjustl(buf)))
+        else
+            write (buf, '(es14.6e3)') x
+            buf = adjustl(buf)
+            e = index(buf, 'E')
+            read (buf(e + 1:), *) k
+            text = strip_zeros(buf(1:e - 1))
+            write (buf, '(i0)') abs(k)
+            if (abs(k) < 10) text = text // 'E' // merge('-', '+', k < 0) // '0' // trim(buf)
+            if (abs(k) >= 10) text = text // 'E' // merge('-', '+', k < 0) // trim(buf)
+        end if
+    end function range_bound
+
+    ! 1.500000 -> 1.5, 2.000 -> 2
+    pure function strip_zeros(number) result(text)
+        character(len=*), intent(in) :: number
+        character(len=:), allocatable :: text
+        integer :: k
+        k = len(number)
+        if (index(number, '.') > 0) then
+            do while (k > 1 .and. number(k:k) == '0')
+                k = k - 1
+            end do
+            if (number(k:k) == '.') k = k - 1
+        end if
+        text = number(1:k)
+    end function strip_zeros
 
     !> '' when v is one of kw%into, else the message.
     function check_into(kw, v) result(msg)

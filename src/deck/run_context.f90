@@ -10,6 +10,7 @@
 !> POURSUITE restores the previous file's database. Imported modules (from NAME import ...)
 !> each get a namespace of their own (scope = their source index), as Python modules do.
 module run_context
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use kinds, only: i4, i8
     use strings, only: string_t, to_text, ends_with
     use run_deadline, only: deadline_t
@@ -123,6 +124,7 @@ module run_context
         procedure :: unit_path => ctx_unit_path
         procedure :: output_path => ctx_output_path
         procedure :: write_mess => ctx_write_mess
+        procedure :: write_warning => ctx_write_warning
         procedure :: write_resu => ctx_write_resu
         procedure :: count_test => ctx_count_test
         procedure :: set_symbol => ctx_set_symbol
@@ -285,6 +287,16 @@ contains
         call self%mess%write_line(line)
         call self%mess%flush()
     end subroutine ctx_write_mess
+
+    !> A located warning ("mesh.mail:12: warning: ..."): a line of the .mess, and of stderr
+    !> so that it is seen beside the error it may explain (nothing during the check pass).
+    subroutine ctx_write_warning(self, line)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: line
+        if (self%checking) return
+        call self%mess%write_line(line)
+        write (error_unit, '(a)') line
+    end subroutine ctx_write_warning
 
     !> Writes one line to the .resu (nothing during the check pass or without a file).
     subroutine ctx_write_resu(self, line)

@@ -565,6 +565,9 @@ contains
         integer :: ios
         is_literal = .false.
         if (ctx%ast%nodes(id)%kind /= N_INT .and. ctx%ast%nodes(id)%kind /= N_REAL) return
+        ! a literal beyond the largest real (t**1e999) is reported where it is evaluated;
+        ! reading it here would raise the overflow the checked build traps
+        if (literal_out_of_range(ctx%ast%nodes(id)%text)) return
         read (ctx%ast%nodes(id)%text, *, iostat=ios) y
         if (ios == 0) is_literal = same_real(x, y)
     end function is_literal

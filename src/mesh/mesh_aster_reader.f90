@@ -13,7 +13,8 @@
 module mesh_aster_reader
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MESH_ERROR
-    use strings, only: to_upper
+    use strings, only: to_upper, to_text
+    use number_limits, only: MAX_LENGTH
     use mesh_name_index, only: name_find
     use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
         mesh_add_node_group, mesh_add_cell_group, mesh_finish, not_found_message, &
@@ -153,7 +154,7 @@ contains
         type(status_t), intent(inout) :: st
         integer(i4) :: first, last, f2, l2, k, name_first, name_last
         real(dp) :: xyz(3)
-        logical :: ok
+        logical :: ok, huge_value
         call next_line(lex)
         do while (.not. at_end(lex))
             if (at_finsf(lex, first, last)) return
@@ -175,8 +176,14 @@ contains
                         file=mesh%file, line=lex%line)
                     exit
                 end if
-                call parse_real(lex%text(f2:l2), xyz(k), ok)
-                if (.not. ok) then
+                call parse_real(lex%text(f2:l2), xyz(k), ok, huge_value)
+                if (huge_value) then
+                    call set_error(st, STATUS_MESH_ERROR, 'node ' // &
+                        lex%text(name_first:name_last) // ': coordinate "' // &
+                        lex%text(f2:l2) // '" is out of range (|x| <= ' // &
+                        to_text(MAX_LENGTH) // ')', file=mesh%file, line=lex%line)
+                    return
+                else if (.not. ok) then
                     call set_error(st, STATUS_MESH_ERROR, 'node ' // &
                         lex%text(name_first:name_last) // ': "' // lex%text(f2:l2) // &
                         '" is not a real number', file=mesh%file, line=lex%line)

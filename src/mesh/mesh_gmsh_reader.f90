@@ -9,30 +9,53 @@
 !> seen twice (2.2 writes an element once per physical group) adds the cell to the group
 !> only. The mesh dimension is 2 when every z is 0, else 3. Sections other than
 !> $MeshFormat, $PhysicalNames, $Entities, $Nodes, $Elements are skipped.
+!>
+!> Nothing read from the file is taken on trust (issue 13): every count is checked against
+!> the bytes left in the file before anything is allocated, the 4.1 header totals ($Nodes
+!> and $Elements: number of entities, tags, smallest and largest tag) against the blocks
+!> actually read, each section may appear once, and tags of any size are looked up through
+!> the names (a dense tag array caches the usual numbering 1..n, its size bounded by the
+!> entities read).
 module mesh_gmsh_reader
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MESH_ERROR
     use strings, only: to_text
+    use number_limits, only: MAX_LENGTH
+    use mesh_name_index, only: name_index_t, name_add, name_find
     use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
         mesh_add_node_group, mesh_add_cell_group, mesh_finish, nodes_of_cells, &
         CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_TYPE_NODES
     use mesh_text_lexer, only: text_lexer_t, open_lexer, next_token, next_line, at_end, &
-        parse_real, parse_integer
+        parse_real, parse_integer, bytes_left
     implicit none
     private
 
     public :: read_gmsh_mesh
 
+    !> Fewest bytes one item of a section takes in a valid file (tokens and separators): a
+    !> count that needs more bytes than are left in the file is refused before allocating.
+    integer(i8), parameter :: BYTES_PHYSICAL_NAME = 7   !< `0 1 ""` and a line end
+    integer(i8), parameter :: BYTES_ENTITY = 10         !< `1 0 0 0 0` (a point)
+    integer(i8), parameter :: BYTES_BLOCK = 8           !< `0 1 0 1` (4.1 block header)
+    integer(i8), parameter :: BYTES_NODE = 8            !< `1 0 0 0` / `1`, `0 0 0` (4.1)
+    integer(i8), parameter :: BYTES_ELEMENT = 4         !< `1 1` (4.1), `1 15 0 1` (2.2)
+    integer(i8), parameter :: BYTES_TAG = 2             !< one integer and a separator
+    !> Sections read (others are skipped), for the duplicate-section check.
+    character(len=*), parameter :: SECTIONS(5) = [character(len=16) :: '$MeshFormat', &
+        '$PhysicalNames', '$Entities', '$Nodes', '$Elements']
+
     !> What the reader collects besides the mesh itself.
     type :: gmsh_state_t
         integer(i4) :: version = 0                      !< 22 or 41
+        integer(i4) :: section_line(5) = 0              !< line of each section in SECTIONS
         integer(i4) :: n_phys = 0
         integer(i4), allocatable :: phys_dim(:), phys_tag(:)
         character(len=128), allocatable :: phys_name(:)
-        integer(i4), allocatable :: tag_to_node(:), tag_to_cell(:)
+        type(name_index_t) :: phys_keys                 !< 'dim:tag' -> index in phys_*
+        integer(i4), allocatable :: tag_to_node(:), tag_to_cell(:)   !< caches, 0 = unknown
         integer(i4) :: n_ent = 0                        !< 4.1 entities
-        integer(i4), allocatable :: ent_dim(:), ent_tag(:), ent_phys(:, :)  !< (4, n) tags
-        integer(i4), allocatable :: ent_lookup(:, :)    !< (0:3, tag) -> entity, 0 if none
+        integer(i8), allocatable :: ent_key(:)          !< dim * 2**32 + tag, sorted
+        integer(i4), allocatable :: ent_phys(:, :)      !< (4, n) physical tags, same order
         integer(i4) :: n_member = 0                     !< (physical index, cell) pairs
         integer(i4), allocatable :: member_phys(:), member_cell(:)
     end type gmsh_state_t
@@ -42,14 +65,16 @@ contains
     !> Reads the Gmsh ASCII file `path` (2.2 or 4.1) into `mesh`.
     !>  st : out, STATUS_IO_ERROR if unreadable; STATUS_MESH_ERROR with file and line for a
     !>       binary or unknown version, unsupported element type, unknown node tag, wrong
-    !>       node count, bad number, duplicate node, degenerate cell, empty mesh.
+    !>       node count, bad number, duplicate node, degenerate cell, empty mesh, a count
+    !>       that is negative or more than the file can hold, header totals that disagree
+    !>       with the data, a section given twice.
     subroutine read_gmsh_mesh(path, mesh, st)
         character(len=*), intent(in) :: path
         type(mesh_t), intent(out) :: mesh
         type(status_t), intent(out) :: st
         type(text_lexer_t) :: lex
         type(gmsh_state_t) :: gs
-        integer(i4) :: first, last
+        integer(i4) :: first, last, k
         call open_lexer(lex, path, st)
         if (st%failed()) return
         lex%percent_comments = .false.
@@ -57,12 +82,22 @@ contains
         allocate (gs%tag_to_node(1024), gs%tag_to_cell(1024), source=0_i4)
         allocate (gs%member_phys(1024), gs%member_cell(1024))
         allocate (gs%phys_dim(0), gs%phys_tag(0), gs%phys_name(0))
-        allocate (gs%ent_dim(0), gs%ent_tag(0), gs%ent_phys(4, 0))
+        allocate (gs%ent_key(0), gs%ent_phys(4, 0))
         do while (.not. at_end(lex))
             call next_token(lex, first, last)
             if (first == 0) then
                 call next_line(lex)
                 cycle
+            end if
+            k = section_index(lex%text(first:last))
+            if (k > 0) then
+                if (gs%section_line(k) > 0) then
+                    call set_error(st, STATUS_MESH_ERROR, 'a second ' // trim(SECTIONS(k)) // &
+                        ' section (the first is at line ' // to_text(gs%section_line(k)) // &
+                        '): a Gmsh file has one', file=path, line=lex%line)
+                    return
+                end if
+                gs%section_line(k) = lex%line
             end if
             select case (lex%text(first:last))
             case ('$MeshFormat')
@@ -89,11 +124,21 @@ contains
                            file=path, line=1)
             return
         end if
-        mesh%dim = merge(2_i4, 3_i4, maxval(abs(mesh%coords(3, 1:mesh%n_nodes))) <= 0.0_dp)
+        if (mesh%n_nodes > 0) mesh%dim = merge(2_i4, 3_i4, &
+            maxval(abs(mesh%coords(3, 1:mesh%n_nodes))) <= 0.0_dp)
         call make_groups(gs, mesh, lex%line, st)
         if (st%failed()) return
         call mesh_finish(mesh, lex%line, st)
     end subroutine read_gmsh_mesh
+
+    ! Index of a section header in SECTIONS, 0 for another token.
+    pure integer function section_index(word) result(k)
+        character(len=*), intent(in) :: word
+        do k = 1, size(SECTIONS)
+            if (trim(SECTIONS(k)) == word) return
+        end do
+        k = 0
+    end function section_index
 
     ! Reads the next integer, across line ends unless same_line.
     subroutine get_int(lex, value, what, st, same_line)
@@ -115,22 +160,70 @@ contains
             lex%text(first:last) // '" is not an integer', line=lex%line)
     end subroutine get_int
 
+    ! Reads a count of items taking at least `item_bytes` bytes each: an error when it is
+    ! negative or more than the bytes left in the file can hold.
+    subroutine get_count(lex, value, what, item_bytes, st, same_line)
+        type(text_lexer_t), intent(inout) :: lex
+        integer(i4), intent(out) :: value
+        character(len=*), intent(in) :: what
+        integer(i8), intent(in) :: item_bytes
+        type(status_t), intent(inout) :: st
+        logical, intent(in), optional :: same_line
+        if (present(same_line)) then
+            call get_int(lex, value, what, st, same_line)
+        else
+            call get_int(lex, value, what, st)
+        end if
+        if (st%failed()) return
+        call check_count(lex, value, what, item_bytes, st)
+        if (st%failed()) value = 0
+    end subroutine get_count
+
+    subroutine check_count(lex, value, what, item_bytes, st)
+        type(text_lexer_t), intent(in) :: lex
+        integer(i4), intent(in) :: value
+        character(len=*), intent(in) :: what
+        integer(i8), intent(in) :: item_bytes
+        type(status_t), intent(inout) :: st
+        if (value < 0) then
+            call set_error(st, STATUS_MESH_ERROR, what // ' = ' // to_text(value) // &
+                ' is negative', line=lex%line)
+        else if (int(value, i8) > bytes_left(lex) / item_bytes) then
+            call set_error(st, STATUS_MESH_ERROR, what // ' = ' // to_text(value) // &
+                ' is more than the ' // to_text(bytes_left(lex)) // ' bytes left in the ' // &
+                'file can hold (at least ' // to_text(item_bytes) // ' bytes each)', &
+                line=lex%line)
+        end if
+    end subroutine check_count
+
     subroutine get_real(lex, value, what, st)
         type(text_lexer_t), intent(inout) :: lex
         real(dp), intent(out) :: value
         character(len=*), intent(in) :: what
         type(status_t), intent(inout) :: st
         integer(i4) :: first, last
-        logical :: ok
+        logical :: ok, huge_value
         value = 0.0_dp
         call next_any(lex, first, last, .false.)
         if (first == 0) then
             call set_error(st, STATUS_MESH_ERROR, 'missing ' // what, line=lex%line)
             return
         end if
-        call parse_real(lex%text(first:last), value, ok)
-        if (.not. ok) call set_error(st, STATUS_MESH_ERROR, what // ': "' // &
-            lex%text(first:last) // '" is not a real number', line=lex%line)
+        call parse_real(lex%text(first:last), value, ok, huge_value)
+        if (huge_value) then
+            ! 1e308 or more: a coordinate's bound is MAX_LENGTH (mesh_add_node checks the
+            ! rest), that of a number read and not used (bounding box, parameter) 1e308
+            if (what == 'node coordinate') then
+                call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
+                    '" is out of range (|x| <= ' // to_text(MAX_LENGTH) // ')', line=lex%line)
+            else
+                call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
+                    '" is out of range (|x| < 1E+308)', line=lex%line)
+            end if
+        else if (.not. ok) then
+            call set_error(st, STATUS_MESH_ERROR, what // ': "' // lex%text(first:last) // &
+                '" is not a real number', line=lex%line)
+        end if
     end subroutine get_real
 
     subroutine next_any(lex, first, last, same_line)
@@ -198,12 +291,11 @@ contains
         type(text_lexer_t), intent(inout) :: lex
         type(gmsh_state_t), intent(inout) :: gs
         type(status_t), intent(inout) :: st
-        integer(i4) :: n, k, q1, q2, line_end
-        call get_int(lex, n, 'number of physical names', st)
+        integer(i4) :: n, k, q1, q2, line_end, slot
+        call get_count(lex, n, 'number of physical names', BYTES_PHYSICAL_NAME, st)
         if (st%failed()) return
         deallocate (gs%phys_dim, gs%phys_tag, gs%phys_name)
         allocate (gs%phys_dim(n), gs%phys_tag(n), gs%phys_name(n))
-        gs%n_phys = n
         do k = 1, n
             call get_int(lex, gs%phys_dim(k), 'physical dimension', st)
             if (st%ok()) call get_int(lex, gs%phys_tag(k), 'physical tag', st, .true.)
@@ -218,76 +310,189 @@ contains
                 return
             end if
             gs%phys_name(k) = lex%text(q1 + 1:q2 - 1)
+            call name_add(gs%phys_keys, physical_key(gs%phys_dim(k), gs%phys_tag(k)), slot)
+            if (slot < 0) then
+                call set_error(st, STATUS_MESH_ERROR, 'physical group ' // &
+                    to_text(gs%phys_tag(k)) // ' of dimension ' // to_text(gs%phys_dim(k)) // &
+                    ' is named twice', line=lex%line)
+                return
+            end if
+            gs%n_phys = k
             call next_line(lex)
         end do
         call expect(lex, '$EndPhysicalNames', st)
     end subroutine read_physical_names
 
-    ! 4.1 $Entities: keeps, for each entity, its physical tags (up to 4).
+    ! 'dim:tag', the key of a physical group.
+    pure function physical_key(dim, tag) result(key)
+        integer(i4), intent(in) :: dim, tag
+        character(len=:), allocatable :: key
+        key = tag_name(' ', abs(dim)) // ':' // tag_name(merge('-', ' ', tag < 0), abs(tag))
+    end function physical_key
+
+    ! 4.1 $Entities: keeps, for each entity, its physical tags (up to 4), sorted by
+    ! (dimension, tag) for the element blocks' look-up.
     subroutine read_entities(lex, gs, st)
         type(text_lexer_t), intent(inout) :: lex
         type(gmsh_state_t), intent(inout) :: gs
         type(status_t), intent(inout) :: st
         integer(i4) :: counts(0:3), d, k, j, n_phys, n_bound, tag, e
+        integer(i4), allocatable :: order(:)
         real(dp) :: x
         do d = 0, 3
-            call get_int(lex, counts(d), 'entity count', st)
+            call get_count(lex, counts(d), 'number of entities of dimension ' // to_text(d), &
+                           BYTES_ENTITY, st)
             if (st%failed()) return
         end do
+        if (sum(int(counts, i8)) > bytes_left(lex) / BYTES_ENTITY) then
+            call set_error(st, STATUS_MESH_ERROR, to_text(sum(int(counts, i8))) // &
+                ' entities are more than the bytes left in the file can hold', line=lex%line)
+            return
+        end if
         gs%n_ent = sum(counts)
-        deallocate (gs%ent_dim, gs%ent_tag, gs%ent_phys)
-        allocate (gs%ent_dim(gs%n_ent), gs%ent_tag(gs%n_ent), gs%ent_phys(4, gs%n_ent))
+        deallocate (gs%ent_key, gs%ent_phys)
+        allocate (gs%ent_key(gs%n_ent), gs%ent_phys(4, gs%n_ent))
         gs%ent_phys = 0
         e = 0
         do d = 0, 3
             do k = 1, counts(d)
                 e = e + 1
-                gs%ent_dim(e) = d
-                call get_int(lex, gs%ent_tag(e), 'entity tag', st)
+                call get_int(lex, tag, 'entity tag', st)
+                gs%ent_key(e) = entity_key(d, tag)
                 do j = 1, merge(3, 6, d == 0)
                     if (st%ok()) call get_real(lex, x, 'entity bounding box', st)
                 end do
-                if (st%ok()) call get_int(lex, n_phys, 'number of physical tags', st)
+                if (st%ok()) call get_count(lex, n_phys, 'number of physical tags', &
+                                            BYTES_TAG, st)
                 do j = 1, n_phys
-                    if (st%ok()) call get_int(lex, tag, 'physical tag', st)
-                    if (j <= 4) gs%ent_phys(j, e) = abs(tag)
+                    if (st%failed()) exit
+                    call get_int(lex, tag, 'physical tag', st)
+                    if (j <= 4) gs%ent_phys(j, e) = tag
                 end do
                 if (d > 0) then
-                    if (st%ok()) call get_int(lex, n_bound, 'number of bounding entities', st)
+                    if (st%ok()) call get_count(lex, n_bound, 'number of bounding entities', &
+                                                BYTES_TAG, st)
                     do j = 1, n_bound
-                        if (st%ok()) call get_int(lex, tag, 'bounding entity', st)
+                        if (st%failed()) exit
+                        call get_int(lex, tag, 'bounding entity', st)
                     end do
                 end if
                 if (st%failed()) return
             end do
         end do
-        allocate (gs%ent_lookup(0:3, max(1_i4, maxval([1_i4, gs%ent_tag]))), source=0_i4)
-        do e = 1, gs%n_ent
-            if (gs%ent_tag(e) >= 1) gs%ent_lookup(gs%ent_dim(e), gs%ent_tag(e)) = e
+        order = sort_order(gs%ent_key)
+        gs%ent_key = gs%ent_key(order)
+        gs%ent_phys = gs%ent_phys(:, order)
+        do e = 2, gs%n_ent
+            if (gs%ent_key(e) == gs%ent_key(e - 1)) then
+                call set_error(st, STATUS_MESH_ERROR, 'entity ' // &
+                    to_text(int(iand(gs%ent_key(e), int(z'FFFFFFFF', i8)) - 2_i8**31, i4)) // &
+                    ' of dimension ' // to_text(gs%ent_key(e) / 2_i8**32) // &
+                    ' is defined twice', line=lex%line)
+                return
+            end if
         end do
         call expect(lex, '$EndEntities', st)
     end subroutine read_entities
+
+    ! (dimension, tag) as one sortable key.
+    pure integer(i8) function entity_key(dim, tag)
+        integer(i4), intent(in) :: dim, tag
+        entity_key = int(dim, i8) * 2_i8**32 + (int(tag, i8) + 2_i8**31)
+    end function entity_key
+
+    ! Index of entity (dim, tag) in gs%ent_key (binary search), 0 if none.
+    integer(i4) function find_entity(gs, dim, tag) result(e)
+        type(gmsh_state_t), intent(in) :: gs
+        integer(i4), intent(in) :: dim, tag
+        integer(i4) :: lo, hi, mid
+        integer(i8) :: key
+        e = 0
+        if (dim < 0 .or. dim > 3) return
+        key = entity_key(dim, tag)
+        lo = 1
+        hi = gs%n_ent
+        do while (lo <= hi)
+            mid = lo + (hi - lo) / 2
+            if (gs%ent_key(mid) == key) then
+                e = mid
+                return
+            else if (gs%ent_key(mid) < key) then
+                lo = mid + 1
+            else
+                hi = mid - 1
+            end if
+        end do
+    end function find_entity
+
+    ! Permutation sorting `keys` increasingly (merge sort, stable).
+    function sort_order(keys) result(order)
+        integer(i8), intent(in) :: keys(:)
+        integer(i4), allocatable :: order(:)
+        integer(i4), allocatable :: work(:)
+        integer(i4) :: n, width, lo, mid, hi, i, j, k
+        n = size(keys, kind=i4)
+        order = [(i, i = 1, n)]
+        allocate (work(n))
+        width = 1
+        do while (width < n)
+            lo = 1
+            do while (lo <= n)
+                mid = min(lo + width - 1, n)
+                hi = min(lo + 2 * width - 1, n)
+                i = lo
+                j = mid + 1
+                do k = lo, hi
+                    if (j > hi) then
+                        work(k) = order(i); i = i + 1
+                    else if (i > mid) then
+                        work(k) = order(j); j = j + 1
+                    else if (keys(order(j)) < keys(order(i))) then
+                        work(k) = order(j); j = j + 1
+                    else
+                        work(k) = order(i); i = i + 1
+                    end if
+                end do
+                lo = lo + 2 * width
+            end do
+            order = work
+            if (width > n / 2) exit
+            width = 2 * width
+        end do
+    end function sort_order
 
     subroutine read_nodes(lex, gs, mesh, st)
         type(text_lexer_t), intent(inout) :: lex
         type(gmsh_state_t), intent(inout) :: gs
         type(mesh_t), intent(inout) :: mesh
         type(status_t), intent(inout) :: st
-        integer(i4) :: n_blocks, n_total, b, k, dim, tag, parametric, n_in, i
+        integer(i4) :: n_blocks, n_total, b, k, dim, tag, parametric, n_in, i, min_tag, &
+            max_tag, lowest, highest, header_line
+        integer(i8) :: n_read
         integer(i4), allocatable :: tags(:)
         real(dp) :: xyz(3), u
         if (gs%version == 41) then
-            call get_int(lex, n_blocks, 'number of node blocks', st)
-            if (st%ok()) call get_int(lex, n_total, 'number of nodes', st)
-            if (st%ok()) call get_int(lex, tag, 'minimum node tag', st)
-            if (st%ok()) call get_int(lex, tag, 'maximum node tag', st)
+            call get_count(lex, n_blocks, 'number of node blocks', BYTES_BLOCK, st)
+            header_line = lex%line
+            if (st%ok()) call get_count(lex, n_total, 'number of nodes', BYTES_NODE, st)
+            if (st%ok()) call get_int(lex, min_tag, 'minimum node tag', st)
+            if (st%ok()) call get_int(lex, max_tag, 'maximum node tag', st)
             if (st%failed()) return
+            n_read = 0
+            lowest = huge(1_i4)
+            highest = -huge(1_i4)
             do b = 1, n_blocks
                 call get_int(lex, dim, 'entity dimension', st)
                 if (st%ok()) call get_int(lex, tag, 'entity tag', st)
                 if (st%ok()) call get_int(lex, parametric, 'parametric flag', st)
-                if (st%ok()) call get_int(lex, n_in, 'nodes in block', st)
+                if (st%ok()) call get_count(lex, n_in, 'nodes in block', BYTES_NODE, st)
                 if (st%failed()) return
+                if (dim < 0 .or. dim > 3 .or. parametric < 0 .or. parametric > 1) then
+                    call set_error(st, STATUS_MESH_ERROR, 'node block ' // to_text(b) // &
+                        ': entity dimension ' // to_text(dim) // ' and parametric flag ' // &
+                        to_text(parametric) // ' (expected 0 to 3, and 0 or 1)', line=lex%line)
+                    return
+                end if
                 allocate (tags(n_in))
                 do k = 1, n_in
                     call get_int(lex, tags(k), 'node tag', st)
@@ -303,11 +508,17 @@ contains
                     if (st%failed()) return
                     call add_node(gs, mesh, tags(k), xyz, lex%line, st)
                     if (st%failed()) return
+                    lowest = min(lowest, tags(k))
+                    highest = max(highest, tags(k))
                 end do
+                n_read = n_read + n_in
                 deallocate (tags)
             end do
+            call check_totals('$Nodes', 'nodes', header_line, n_total, n_read, min_tag, &
+                              max_tag, lowest, highest, st)
+            if (st%failed()) return
         else
-            call get_int(lex, n_total, 'number of nodes', st)
+            call get_count(lex, n_total, 'number of nodes', BYTES_NODE, st)
             do k = 1, n_total
                 if (st%ok()) call get_int(lex, tag, 'node tag', st)
                 do i = 1, 3
@@ -316,9 +527,29 @@ contains
                 if (st%ok()) call add_node(gs, mesh, tag, xyz, lex%line, st)
                 if (st%failed()) return
             end do
+            if (st%failed()) return
         end if
         call expect(lex, '$EndNodes', st)
     end subroutine read_nodes
+
+    ! A 4.1 section header (number of entities, smallest and largest tag) against what the
+    ! blocks held (Gmsh 2.2 counts are checked by the section end that follows them).
+    subroutine check_totals(section, what, line, n_total, n_read, min_tag, max_tag, lowest, &
+                            highest, st)
+        character(len=*), intent(in) :: section, what
+        integer(i4), intent(in) :: line, n_total, min_tag, max_tag, lowest, highest
+        integer(i8), intent(in) :: n_read
+        type(status_t), intent(inout) :: st
+        if (n_read /= int(n_total, i8)) then
+            call set_error(st, STATUS_MESH_ERROR, 'the ' // section // ' header says ' // &
+                to_text(n_total) // ' ' // what // ', its blocks hold ' // to_text(n_read), &
+                line=line)
+        else if (n_read > 0 .and. (min_tag /= lowest .or. max_tag /= highest)) then
+            call set_error(st, STATUS_MESH_ERROR, 'the ' // section // ' header says tags ' // &
+                to_text(min_tag) // ' to ' // to_text(max_tag) // ', its blocks hold tags ' // &
+                to_text(lowest) // ' to ' // to_text(highest), line=line)
+        end if
+    end subroutine check_totals
 
     subroutine add_node(gs, mesh, tag, xyz, line, st)
         type(gmsh_state_t), intent(inout) :: gs
@@ -333,11 +564,31 @@ contains
         end if
         call mesh_add_node(mesh, tag_name('N', tag), xyz, line, st)
         if (st%failed()) return
-        call grow_map(gs%tag_to_node, tag)
-        gs%tag_to_node(tag) = mesh%n_nodes
+        call cache_tag(gs%tag_to_node, tag, mesh%n_nodes)
     end subroutine add_node
 
-    ! prefix // decimal tag (tag >= 1), without an internal write (the reader names every
+    ! Node number of node tag `tag`, 0 if there is none.
+    integer(i4) function node_of_tag(gs, mesh, tag) result(node)
+        type(gmsh_state_t), intent(in) :: gs
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: tag
+        node = 0
+        if (tag < 1) return
+        if (tag <= size(gs%tag_to_node)) node = gs%tag_to_node(tag)
+        if (node == 0) node = name_find(mesh%node_names, tag_name('N', tag))
+    end function node_of_tag
+
+    ! Cell number of element tag `tag`, 0 if none.
+    integer(i4) function cell_of_tag(gs, mesh, tag) result(cell)
+        type(gmsh_state_t), intent(in) :: gs
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: tag
+        cell = 0
+        if (tag <= size(gs%tag_to_cell)) cell = gs%tag_to_cell(tag)
+        if (cell == 0) cell = name_find(mesh%cell_names, tag_name('M', tag))
+    end function cell_of_tag
+
+    ! prefix // decimal tag (tag >= 0), without an internal write (the reader names every
     ! node and cell: a formatted write per name would double the reading time).
     pure function tag_name(prefix, tag) result(name)
         character, intent(in) :: prefix
@@ -353,18 +604,26 @@ contains
             value = value / 10
             if (value == 0) exit
         end do
-        name = prefix // digits(k:)
+        name = trim(prefix) // digits(k:)
     end function tag_name
 
-    subroutine grow_map(map, tag)
+    ! Records tag -> number in a dense cache when the tag is small enough: at most twice the
+    ! number of entities read so far plus 1024, so a file with huge or sparse tags costs no
+    ! memory beyond its entities (those are then found through their names).
+    subroutine cache_tag(map, tag, number)
         integer(i4), allocatable, intent(inout) :: map(:)
-        integer(i4), intent(in) :: tag
+        integer(i4), intent(in) :: tag, number
         integer(i4), allocatable :: bigger(:)
-        if (tag <= size(map)) return
-        allocate (bigger(max(2 * size(map), tag)), source=0_i4)
-        bigger(1:size(map)) = map
-        call move_alloc(bigger, map)
-    end subroutine grow_map
+        if (tag < 1 .or. int(tag, i8) > 2_i8 * number + 1024_i8) return
+        if (tag > size(map)) then
+            allocate (bigger(int(min(2_i8 * size(map, kind=i8), 2_i8 * number + 1024_i8, &
+                                     int(huge(1_i4), i8)), i4)), source=0_i4)
+            bigger(1:size(map)) = map
+            call move_alloc(bigger, map)
+            if (tag > size(map)) return
+        end if
+        map(tag) = number
+    end subroutine cache_tag
 
     subroutine read_elements(lex, gs, mesh, st)
         type(text_lexer_t), intent(inout) :: lex
@@ -372,42 +631,53 @@ contains
         type(mesh_t), intent(inout) :: mesh
         type(status_t), intent(inout) :: st
         integer(i4) :: n_blocks, n_total, b, k, dim, ent, etype, n_in, tag, n_tags, j, phys, e
-        integer(i4) :: physicals(4)
+        integer(i4) :: physicals(4), min_tag, max_tag, lowest, highest, header_line
+        integer(i8) :: n_read
         if (gs%version == 41) then
-            call get_int(lex, n_blocks, 'number of element blocks', st)
-            if (st%ok()) call get_int(lex, n_total, 'number of elements', st)
-            if (st%ok()) call get_int(lex, tag, 'minimum element tag', st)
-            if (st%ok()) call get_int(lex, tag, 'maximum element tag', st)
+            call get_count(lex, n_blocks, 'number of element blocks', BYTES_BLOCK, st)
+            header_line = lex%line
+            if (st%ok()) call get_count(lex, n_total, 'number of elements', BYTES_ELEMENT, st)
+            if (st%ok()) call get_int(lex, min_tag, 'minimum element tag', st)
+            if (st%ok()) call get_int(lex, max_tag, 'maximum element tag', st)
             if (st%failed()) return
+            n_read = 0
+            lowest = huge(1_i4)
+            highest = -huge(1_i4)
             do b = 1, n_blocks
                 call get_int(lex, dim, 'entity dimension', st)
                 if (st%ok()) call get_int(lex, ent, 'entity tag', st)
                 if (st%ok()) call get_int(lex, etype, 'element type', st)
-                if (st%ok()) call get_int(lex, n_in, 'elements in block', st)
+                if (st%ok()) call get_count(lex, n_in, 'elements in block', BYTES_ELEMENT, st)
                 if (st%failed()) return
                 physicals = 0
-                e = 0
-                if (allocated(gs%ent_lookup) .and. dim >= 0 .and. dim <= 3 .and. ent >= 1) then
-                    if (ent <= size(gs%ent_lookup, 2)) e = gs%ent_lookup(dim, ent)
-                end if
+                e = find_entity(gs, dim, ent)
                 if (e > 0) physicals = gs%ent_phys(:, e)
                 call next_line(lex)
                 do k = 1, n_in
                     call get_int(lex, tag, 'element tag', st)
                     if (st%ok()) call add_element(lex, gs, mesh, tag, etype, physicals, st)
                     if (st%failed()) return
+                    lowest = min(lowest, tag)
+                    highest = max(highest, tag)
                 end do
+                n_read = n_read + n_in
             end do
+            call check_totals('$Elements', 'elements', header_line, n_total, n_read, min_tag, &
+                              max_tag, lowest, highest, st)
+            if (st%failed()) return
         else
-            call get_int(lex, n_total, 'number of elements', st)
+            call get_count(lex, n_total, 'number of elements', BYTES_ELEMENT, st)
+            if (st%failed()) return
             call next_line(lex)
             do k = 1, n_total
-                if (st%ok()) call get_int(lex, tag, 'element tag', st)
+                call get_int(lex, tag, 'element tag', st)
                 if (st%ok()) call get_int(lex, etype, 'element type', st, .true.)
-                if (st%ok()) call get_int(lex, n_tags, 'number of element tags', st, .true.)
+                if (st%ok()) call get_count(lex, n_tags, 'number of element tags', BYTES_TAG, &
+                                            st, .true.)
                 physicals = 0
                 do j = 1, n_tags
-                    if (st%ok()) call get_int(lex, phys, 'element tag list', st, .true.)
+                    if (st%failed()) exit
+                    call get_int(lex, phys, 'element tag list', st, .true.)
                     if (j == 1) physicals(1) = phys
                 end do
                 if (st%ok()) call add_element(lex, gs, mesh, tag, etype, physicals, st)
@@ -424,7 +694,7 @@ contains
         type(mesh_t), intent(inout) :: mesh
         integer(i4), intent(in) :: tag, etype, physicals(4)
         type(status_t), intent(inout) :: st
-        integer(i4) :: ctype, nodes(32), n, first, last, node_tag, j, line
+        integer(i4) :: ctype, nodes(32), n, first, last, node_tag, j, line, cell
         logical :: ok
         line = lex%line
         select case (etype)
@@ -438,6 +708,11 @@ contains
                 '1 line SEG2, 2 triangle TRIA3, 3 quadrangle QUAD4)', line=line)
             return
         end select
+        if (tag < 1) then
+            call set_error(st, STATUS_MESH_ERROR, 'element tag ' // to_text(tag) // &
+                ' must be positive', line=line)
+            return
+        end if
         n = 0
         do
             call next_token(lex, first, last)
@@ -445,8 +720,7 @@ contains
             call parse_integer(lex%text(first:last), node_tag, ok)
             n = n + 1
             nodes(n) = 0
-            if (ok .and. node_tag >= 1 .and. node_tag <= size(gs%tag_to_node)) &
-                nodes(n) = gs%tag_to_node(node_tag)
+            if (ok) nodes(n) = node_of_tag(gs, mesh, node_tag)
             if (nodes(n) == 0) then
                 call set_error(st, STATUS_MESH_ERROR, 'element ' // to_text(tag) // &
                     ': no node with tag ' // lex%text(first:last), line=line)
@@ -454,12 +728,8 @@ contains
             end if
         end do
         call next_line(lex)
-        if (tag < 1) then
-            call set_error(st, STATUS_MESH_ERROR, 'element tag must be positive', line=line)
-            return
-        end if
-        call grow_map(gs%tag_to_cell, tag)
-        if (gs%tag_to_cell(tag) == 0) then
+        cell = cell_of_tag(gs, mesh, tag)
+        if (cell == 0) then
             if (n /= CELL_TYPE_NODES(ctype)) then
                 call set_error(st, STATUS_MESH_ERROR, 'element ' // to_text(tag) // ' has ' &
                     // to_text(n) // ' nodes, Gmsh type ' // to_text(etype) // ' has ' // &
@@ -468,27 +738,35 @@ contains
             end if
             call mesh_add_cell(mesh, tag_name('M', tag), ctype, nodes(1:n), line, st)
             if (st%failed()) return
-            gs%tag_to_cell(tag) = mesh%n_cells
+            cell = mesh%n_cells
+            call cache_tag(gs%tag_to_cell, tag, cell)
+        else if (gs%version == 41) then
+            call set_error(st, STATUS_MESH_ERROR, 'element tag ' // to_text(tag) // &
+                ' is used twice', line=line)
+            return
         end if
         do j = 1, 4
             if (physicals(j) /= 0) call add_member(gs, physical_index(gs, physicals(j), &
-                ctype), gs%tag_to_cell(tag))
+                ctype), cell)
         end do
     end subroutine add_element
 
     ! Index of physical group (dimension of ctype, tag) in gs%phys_*; unnamed ones are added
-    ! as GM<tag>.
+    ! as GM<tag>. A physical tag is positive; Gmsh writes a negative one for an entity whose
+    ! orientation is reversed, which names the same group.
     integer(i4) function physical_index(gs, tag, ctype) result(k)
         type(gmsh_state_t), intent(inout) :: gs
         integer(i4), intent(in) :: tag, ctype
-        integer(i4) :: dim
+        integer(i4) :: dim, t
         dim = merge(0, merge(1, 2, ctype == CELL_SEG2), ctype == CELL_POI1)
-        do k = 1, gs%n_phys
-            if (gs%phys_tag(k) == tag .and. gs%phys_dim(k) == dim) return
-        end do
+        t = abs(tag)
+        if (t < 0) t = huge(1_i4)      ! abs(-2**31) stays negative
+        k = name_find(gs%phys_keys, physical_key(dim, t))
+        if (k > 0) return
+        call name_add(gs%phys_keys, physical_key(dim, t), k)
         gs%phys_dim = [gs%phys_dim(1:gs%n_phys), dim]
-        gs%phys_tag = [gs%phys_tag(1:gs%n_phys), tag]
-        gs%phys_name = [character(len=128) :: gs%phys_name(1:gs%n_phys), 'GM' // to_text(tag)]
+        gs%phys_tag = [gs%phys_tag(1:gs%n_phys), t]
+        gs%phys_name = [character(len=128) :: gs%phys_name(1:gs%n_phys), 'GM' // to_text(t)]
         gs%n_phys = gs%n_phys + 1
         k = gs%n_phys
     end function physical_index
@@ -506,20 +784,35 @@ contains
     end subroutine add_member
 
     ! One GROUP_MA and one GROUP_NO per physical group that has cells, in $PhysicalNames
-    ! order.
+    ! order; members bucketed by group first (one pass, whatever the number of groups).
     subroutine make_groups(gs, mesh, line, st)
         type(gmsh_state_t), intent(in) :: gs
         type(mesh_t), intent(inout) :: mesh
         integer(i4), intent(in) :: line
         type(status_t), intent(inout) :: st
-        integer(i4) :: k
-        integer(i4), allocatable :: cells(:)
+        integer(i4) :: k, m
+        integer(i4), allocatable :: ptr(:), fill(:), cells(:)
+        allocate (ptr(gs%n_phys + 1), source=0_i4)
+        do m = 1, gs%n_member
+            ptr(gs%member_phys(m) + 1) = ptr(gs%member_phys(m) + 1) + 1
+        end do
+        ptr(1) = 1
         do k = 1, gs%n_phys
-            cells = pack(gs%member_cell(1:gs%n_member), gs%member_phys(1:gs%n_member) == k)
-            if (size(cells) == 0) cycle
-            call mesh_add_cell_group(mesh, trim(gs%phys_name(k)), cells, line, st)
-            if (st%ok()) call mesh_add_node_group(mesh, trim(gs%phys_name(k)), &
-                                                  nodes_of_cells(mesh, cells), line, st)
+            ptr(k + 1) = ptr(k + 1) + ptr(k)
+        end do
+        allocate (cells(gs%n_member))
+        fill = ptr(1:gs%n_phys)
+        do m = 1, gs%n_member
+            cells(fill(gs%member_phys(m))) = gs%member_cell(m)
+            fill(gs%member_phys(m)) = fill(gs%member_phys(m)) + 1
+        end do
+        do k = 1, gs%n_phys
+            if (ptr(k + 1) == ptr(k)) cycle
+            associate (group => cells(ptr(k):ptr(k + 1) - 1))
+                call mesh_add_cell_group(mesh, trim(gs%phys_name(k)), group, line, st)
+                if (st%ok()) call mesh_add_node_group(mesh, trim(gs%phys_name(k)), &
+                                                      nodes_of_cells(mesh, group), line, st)
+            end associate
             if (st%failed()) return
         end do
     end subroutine make_groups

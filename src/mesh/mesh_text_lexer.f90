@@ -20,7 +20,7 @@ module mesh_text_lexer
         logical :: percent_comments = .true.     !< '%' starts a comment (.mail)
     end type text_lexer_t
 
-    public :: open_lexer, next_token, next_line, at_end, parse_real, parse_integer
+    public :: open_lexer, next_token, next_line, at_end, parse_real, parse_integer, bytes_left
 
 contains
 
@@ -47,12 +47,31 @@ contains
             return
         end if
         inquire (unit=unit, size=nbytes)
-        allocate (character(len=max(nbytes, 0_i8)) :: lex%text)
+        if (nbytes > int(huge(1_i4), i8)) then
+            close (unit)
+            call set_error(st, STATUS_MESH_ERROR, 'mesh file ' // path // ' has more than ' // &
+                '2**31 - 1 bytes: text meshes are read up to 2 GiB (write it as MED)')
+            return
+        end if
+        allocate (character(len=max(nbytes, 0_i8)) :: lex%text, stat=ios)
+        if (ios /= 0) then
+            close (unit)
+            call set_error(st, STATUS_IO_ERROR, 'mesh file ' // path // ': not enough ' // &
+                'memory to read its bytes')
+            return
+        end if
         if (nbytes > 0) read (unit, iostat=ios, iomsg=msg) lex%text
         close (unit)
         if (ios /= 0) call set_error(st, STATUS_IO_ERROR, 'cannot read mesh file ' // path &
                                      // ': ' // trim(msg))
     end subroutine open_lexer
+
+    !> Bytes not yet scanned: what a count read from the file can still describe (a count
+    !> of items of at least k bytes each is at most bytes_left / k).
+    integer(i8) function bytes_left(lex)
+        type(text_lexer_t), intent(in) :: lex
+        bytes_left = max(0_i8, int(len(lex%text), i8) - int(lex%pos, i8) + 1_i8)
+    end function bytes_left
 
     !> True when the whole text has been consumed.
     logical function at_end(lex)
@@ -120,18 +139,32 @@ contains
 
     !> Value of a Fortran or C real literal (`1`, `1.`, `.5`, `1.0D+0`, `-1.5E-3`, `2e4`).
     !> Fast path: up to 18 digits and |exponent| <= 22 use one exact division/multiply by
-    !> a power of ten (correctly rounded below 2**53); other forms fall back to a formatted
-    !> read. ok = .false. if `token` is not a number.
-    subroutine parse_real(token, value, ok)
+    !> a power of ten (correctly rounded below 2**53); other forms are read from a short
+    !> normalized text (18 significant digits and the decimal exponent) once the decimal
+    !> exponent is known to be inside the double range, so no read can overflow (a read of
+    !> 1e309 traps in the checked build and gives Infinity in the other).
+    !>  token : in, the text;  value : out, the number (0 when not ok)
+    !>  ok : out, .false. if `token` is not a number or is out of range
+    !>  out_of_range : out, optional, .true. when `token` is a number whose magnitude is
+    !>                 1e308 or more (beyond double precision, or at its very edge); numbers
+    !>                 below 1e-330 in magnitude read as a signed zero, as strtod gives
+    subroutine parse_real(token, value, ok, out_of_range)
         character(len=*), intent(in) :: token
         real(dp), intent(out) :: value
         logical, intent(out) :: ok
+        logical, intent(out), optional :: out_of_range
         integer(i8) :: mantissa
-        integer(i4) :: p, n, ndigits, scale, expo, esign, ios
+        integer(i4) :: p, n, ndigits, kept, scale, expo, esign, ios
         logical :: negative, any_digit
         character :: c
+        character(len=48) :: normalized
         real(dp), parameter :: POW10(0:22) = [(10.0_dp**p, p = 0, 22)]
+        !> Decimal exponents of the largest and smallest magnitudes read (double precision
+        !> holds 1.8e308 down to 4.9e-324; 1e308 and beyond is refused rather than rounded
+        !> near the overflow threshold, below 1e-330 is zero).
+        integer(i4), parameter :: MAX_DECIMAL_EXPONENT = 307, MIN_DECIMAL_EXPONENT = -330
         value = 0.0_dp
+        if (present(out_of_range)) out_of_range = .false.
         n = len(token)
         p = 1
         negative = .false.
@@ -187,17 +220,34 @@ contains
         end if
         scale = scale + expo
         ok = .true.
+        if (mantissa == 0) then
+            if (negative) value = -0.0_dp
+            return
+        end if
+        ! the value is mantissa * 10**scale, the mantissa has `kept` digits (the first 18):
+        ! 10**(scale + kept - 1) <= |value| < 10**(scale + kept)
+        kept = min(ndigits, 18_i4)
+        if (scale + kept - 1 > MAX_DECIMAL_EXPONENT) then
+            ok = .false.
+            if (present(out_of_range)) out_of_range = .true.
+            return
+        end if
+        if (scale + kept - 1 < MIN_DECIMAL_EXPONENT) then
+            if (negative) value = -0.0_dp
+            return
+        end if
         if (ndigits <= 18 .and. abs(scale) <= 22) then
             if (scale >= 0) then
                 value = real(mantissa, dp) * POW10(scale)
             else
                 value = real(mantissa, dp) / POW10(-scale)
             end if
-            if (negative) value = -value
         else
-            read (token, '(f80.0)', iostat=ios) value
+            write (normalized, '(i0, "e", i0)') mantissa, scale
+            read (normalized, '(f48.0)', iostat=ios) value
             ok = ios == 0
         end if
+        if (negative) value = -value
     contains
         subroutine add_digit()
             any_digit = .true.

@@ -8,6 +8,7 @@ module mesh_types
     use status, only: status_t, set_error, STATUS_MESH_ERROR
     use strings, only: to_text
     use mesh_name_index, only: name_index_t, name_add, name_find, name_of, closest_name
+    use number_limits, only: MAX_LENGTH, MIN_MESH_EXTENT, is_finite
     implicit none
     private
 
@@ -50,7 +51,7 @@ module mesh_types
     end type mesh_t
 
     public :: mesh_init, mesh_add_node, mesh_add_cell, mesh_add_node_group, &
-        mesh_add_cell_group, mesh_finish
+        mesh_add_cell_group, mesh_finish, mesh_release
     public :: find_node, find_cell, find_node_group, find_cell_group, node_name, cell_name, &
         node_group_name, cell_group_name, cells_of_group, nodes_of_group, nodes_of_cells, &
         cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message, &
@@ -76,14 +77,33 @@ contains
         mesh%cell_group_ptr(1) = 1
     end subroutine mesh_init
 
-    !> Adds a node. Errors (STATUS_MESH_ERROR, at `line`): duplicate name.
+    !> Frees everything `mesh` holds (an empty mesh remains). The deallocation of the dummy
+    !> argument's components is generated here, where gfortran generates it completely;
+    !> mesh_concept calls it from its final procedure (see there why).
+    subroutine mesh_release(mesh)
+        type(mesh_t), intent(out) :: mesh
+        mesh%n_nodes = 0
+    end subroutine mesh_release
+
+    !> Adds a node. Errors (STATUS_MESH_ERROR, at `line`): duplicate name; a coordinate that
+    !> is not finite or beyond MAX_LENGTH (number_limits: lengths, areas and element
+    !> matrices formed from coordinates must stay finite).
     subroutine mesh_add_node(mesh, name, xyz, line, st)
         type(mesh_t), intent(inout) :: mesh
         character(len=*), intent(in) :: name
         real(dp), intent(in) :: xyz(3)
         integer(i4), intent(in) :: line
         type(status_t), intent(inout) :: st
-        integer(i4) :: index
+        integer(i4) :: index, k
+        character(len=1), parameter :: AXES(3) = ['X', 'Y', 'Z']
+        do k = 1, 3
+            if (.not. (is_finite(xyz(k)) .and. abs(xyz(k)) <= MAX_LENGTH)) then
+                call set_error(st, STATUS_MESH_ERROR, 'node ' // name // ': coordinate ' // &
+                    AXES(k) // ' = ' // to_text(xyz(k)) // ' is out of range (|' // AXES(k) // &
+                    '| <= ' // to_text(MAX_LENGTH) // ')', file=mesh%file, line=line)
+                return
+            end if
+        end do
         call name_add(mesh%node_names, name, index)
         if (index < 0) then
             call set_error(st, STATUS_MESH_ERROR, 'duplicate node name ' // name, &
@@ -216,6 +236,15 @@ contains
         integer(i4) :: c
         size_scale = maxval(maxval(mesh%coords(:, 1:mesh%n_nodes), dim=2) &
                             - minval(mesh%coords(:, 1:mesh%n_nodes), dim=2))
+        if (size_scale < MIN_MESH_EXTENT .and. any(mesh%cell_type(1:mesh%n_cells) /= &
+                                                   CELL_POI1)) then
+            c = findloc(mesh%cell_type(1:mesh%n_cells) /= CELL_POI1, .true., dim=1)
+            call set_error(st, STATUS_MESH_ERROR, 'the mesh spans ' // to_text(size_scale) // &
+                ' (largest side of its bounding box), less than ' // to_text(MIN_MESH_EXTENT) &
+                // ': cell ' // cell_name(mesh, c) // ' and the others are too small to ' // &
+                'compute with (change the length unit)', file=mesh%file, line=mesh%cell_line(c))
+            return
+        end if
         do c = 1, mesh%n_cells
             select case (mesh%cell_type(c))
             case (CELL_SEG2)
@@ -225,6 +254,10 @@ contains
             case default
                 cycle
             end select
+            if (mesh%cell_type(c) == CELL_QUAD4) then
+                call check_corners(c, RELATIVE_TOLERANCE * size_scale)
+                if (st%failed()) return
+            end if
             if (cell_measure(mesh, c) <= threshold) then
                 call set_error(st, STATUS_MESH_ERROR, 'degenerate cell ' // cell_name(mesh, c) &
                     // ': its ' // trim(CELL_TYPE_NAMES(mesh%cell_type(c))) // ' has zero ' // &
@@ -233,6 +266,36 @@ contains
                 return
             end if
         end do
+    contains
+        ! Two corners of QUAD4 c closer than `tolerance` (or the same node twice): the cell
+        ! is a collapsed quadrangle, whose area test may still pass (a triangle's) while its
+        ! bilinear map is singular at the collapsed corner.
+        subroutine check_corners(c, tolerance)
+            integer(i4), intent(in) :: c
+            real(dp), intent(in) :: tolerance
+            integer(i4) :: i, j, p0
+            p0 = mesh%cell_ptr(c) - 1
+            do i = 1, 3
+                do j = i + 1, 4
+                    if (norm2(mesh%coords(:, mesh%cell_nodes(p0 + i)) - &
+                              mesh%coords(:, mesh%cell_nodes(p0 + j))) > tolerance) cycle
+                    if (mesh%cell_nodes(p0 + i) == mesh%cell_nodes(p0 + j)) then
+                        call set_error(st, STATUS_MESH_ERROR, 'cell ' // cell_name(mesh, c) // &
+                            ': node ' // node_name(mesh, mesh%cell_nodes(p0 + i)) // &
+                            ' is corner ' // to_text(i) // ' and corner ' // to_text(j) // &
+                            ' (a QUAD4 needs four distinct corners)', file=mesh%file, &
+                            line=mesh%cell_line(c))
+                    else
+                        call set_error(st, STATUS_MESH_ERROR, 'cell ' // cell_name(mesh, c) // &
+                            ': its corners ' // node_name(mesh, mesh%cell_nodes(p0 + i)) // &
+                            ' and ' // node_name(mesh, mesh%cell_nodes(p0 + j)) // &
+                            ' coincide (a QUAD4 needs four distinct corners)', &
+                            file=mesh%file, line=mesh%cell_line(c))
+                    end if
+                    return
+                end do
+            end do
+        end subroutine check_corners
     end subroutine check_degenerate_cells
 
     !> Number of GROUP_NO / GROUP_MA.

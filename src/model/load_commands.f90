@@ -18,7 +18,7 @@ module load_commands
     use model_concept, only: model_concept_t
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
         LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
-        LOAD_FORCE_CONTOUR, SLOT_PRES
+        LOAD_FORCE_CONTOUR, SLOT_PRES, load_set_location
     use function_concept, only: function_concept_t
     implicit none
     private
@@ -220,6 +220,7 @@ contains
         end if
         if (any([(occ%has(trim(keys(k))), k = 1, size(keys))])) then
             call load_add_item(loads, kind, nodes, index, label)
+            call locate_item(occ, loads, index)
             do k = 1, size(keys)
                 call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
                 if (st%failed()) return
@@ -269,6 +270,7 @@ contains
             return
         end if
         call load_add_item(loads, LOAD_DDL_IMPO, nodes, index, label)
+        call locate_item(occ, loads, index)
         loads%items(index)%blocage = .true.
         do comp = 1, 6
             if (blocked(comp)) call load_set_constant(loads, index, comp, 0.0_dp)
@@ -337,6 +339,7 @@ contains
             return
         end if
         call load_add_item(loads, kind, cells, index)
+        call locate_item(occ, loads, index)
         do k = 1, size(keys)
             slot = k
             if (trim(keys(k)) == 'PRES') slot = SLOT_PRES
@@ -372,6 +375,17 @@ contains
                 'FORMULE), got ' // f%type_name(), st)
         end select
     end subroutine set_slot
+
+    ! Records where the occurrence of item `index` is, for errors found when it is applied.
+    subroutine locate_item(occ, loads, index)
+        type(keyword_set_t), intent(in) :: occ
+        type(load_set_t), intent(inout) :: loads
+        integer(i4), intent(in) :: index
+        character(len=:), allocatable :: file
+        integer :: line, col
+        call occ%location('', file, line, col)
+        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
+    end subroutine locate_item
 
     subroutine append(list, more)
         integer(i4), allocatable, intent(inout) :: list(:)

@@ -19,7 +19,9 @@
 !> components each of its nodes has, skipping the others (Code_Aster caddli).
 module model_loads
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, add_context, STATUS_MODEL_ERROR
+    use strings, only: to_text
+    use number_limits, only: MAX_LENGTH, is_finite, magnitude_fits
     use function_concept, only: function_concept_t, param_binding_t
     implicit none
     private
@@ -30,6 +32,11 @@ module model_loads
         'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR']
     !> Slot of PRES in FORCE_COQUE / PRES_REP items (the FX FY FZ slots are 1..3).
     integer(i4), parameter, public :: SLOT_PRES = 4
+    !> Names of the six slots of each kind (messages).
+    character(len=4), parameter :: SLOT_NAMES(6, 5) = reshape([character(len=4) :: &
+        'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', 'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', &
+        'FX', 'FY', 'FZ', 'PRES', '', '', 'FX', 'FY', 'FZ', 'PRES', '', '', &
+        'FX', 'FY', '', '', '', ''], [6, 5])
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
@@ -49,6 +56,10 @@ module model_loads
         integer(i4), allocatable :: cells(:)         !< FORCE_COQUE, PRES_REP, FORCE_CONTOUR
         type(load_value_t) :: values(6)              !< DX..DRZ / FX..MZ / FX,FY,FZ,PRES
         character(len=:), allocatable :: group      !< group name, for messages
+        !> where the occurrence is in the deck (errors found while the load is applied are
+        !> located there): file, line, column, command (AFFE_CHAR_MECA_F) and keyword
+        character(len=:), allocatable :: file, command, keyword
+        integer(i4) :: line = 0, col = 0
         logical :: blocage = .false.                 !< DDL_IMPO/BLOCAGE: skip absent components
     end type load_item_t
 
@@ -60,7 +71,7 @@ module model_loads
     end type load_set_t
 
     public :: load_add_item, load_set_constant, load_set_function, load_value_at, &
-        load_has_kind
+        load_has_kind, load_set_location, load_locate, load_item_where, load_slot_name
 
 contains
 
@@ -109,6 +120,11 @@ contains
         call move_alloc(from%nodes, to%nodes)
         call move_alloc(from%cells, to%cells)
         call move_alloc(from%group, to%group)
+        if (allocated(from%file)) call move_alloc(from%file, to%file)
+        if (allocated(from%command)) call move_alloc(from%command, to%command)
+        if (allocated(from%keyword)) call move_alloc(from%keyword, to%keyword)
+        to%line = from%line
+        to%col = from%col
         do k = 1, 6
             to%values(k)%given = from%values(k)%given
             to%values(k)%constant = from%values(k)%constant
@@ -143,19 +159,81 @@ contains
         call func%bind(LOAD_PARAMETERS, set%items(index)%values(slot)%binding)
     end subroutine load_set_function
 
-    !> Value of a slot at time t and point x.
-    !>  st : out, the function's evaluation error, with the load kind added
-    subroutine load_value_at(value, kind, t, x, y, st)
+    !> Records where item `index` is in the deck (see load_item_t).
+    subroutine load_set_location(set, index, file, line, col, command, keyword)
+        type(load_set_t), intent(inout) :: set
+        integer(i4), intent(in) :: index, line, col
+        character(len=*), intent(in) :: file, command, keyword
+        set%items(index)%file = file
+        set%items(index)%line = line
+        set%items(index)%col = col
+        set%items(index)%command = command
+        set%items(index)%keyword = keyword
+    end subroutine load_set_location
+
+    !> Locates a failed status at item's occurrence and slot keyword, unless it already
+    !> has a location (a formula's error is located inside the formula).
+    subroutine load_locate(item, slot, st)
+        type(load_item_t), intent(in) :: item
+        integer(i4), intent(in) :: slot
+        type(status_t), intent(inout) :: st
+        if (st%ok() .or. .not. allocated(item%file)) return
+        if (allocated(st%file)) return
+        call add_context(st, file=item%file, line=item%line, column=item%col, &
+                         command=item%command, keyword=item%keyword // '/' // &
+                         load_slot_name(item%kind, slot))
+    end subroutine load_locate
+
+    !> "deck.comm:53:24" of an item ('' when unknown), for messages naming two occurrences.
+    function load_item_where(item) result(text)
+        type(load_item_t), intent(in) :: item
+        character(len=:), allocatable :: text
+        text = ''
+        if (.not. allocated(item%file)) return
+        text = item%file // ':' // to_text(item%line) // ':' // to_text(item%col)
+    end function load_item_where
+
+    !> Name of slot `slot` of a load kind (DX, FZ, PRES, ...).
+    pure function load_slot_name(kind, slot) result(name)
+        integer(i4), intent(in) :: kind, slot
+        character(len=:), allocatable :: name
+        name = trim(SLOT_NAMES(slot, kind))
+    end function load_slot_name
+
+    !> Value of slot `slot` of a load of `kind` at time t and point x, checked: finite, and
+    !> for DDL_IMPO at most MAX_LENGTH in magnitude (a displacement or rotation that the
+    !> products formed from it in the analysis cannot overflow), for the forces within the
+    !> magnitude products may still be formed from (number_limits).
+    !>  st : out, the function's evaluation error, with the load kind added; a value out of
+    !>       range (then located by the caller with load_locate)
+    subroutine load_value_at(value, kind, slot, t, x, y, st)
         type(load_value_t), intent(in) :: value
-        integer(i4), intent(in) :: kind
+        integer(i4), intent(in) :: kind, slot
         real(dp), intent(in) :: t, x(3)
         real(dp), intent(out) :: y
         type(status_t), intent(out) :: st
+        character(len=:), allocatable :: name
         y = value%constant
-        if (.not. associated(value%func)) return
-        call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
-        if (st%failed()) call set_error(st, STATUS_MODEL_ERROR, LOAD_KIND_NAMES(kind) // &
-            ': ' // st%message)
+        if (associated(value%func)) then
+            call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
+            if (st%failed()) then
+                call set_error(st, STATUS_MODEL_ERROR, LOAD_KIND_NAMES(kind) // ': ' // &
+                    st%message)
+                return
+            end if
+        end if
+        name = load_slot_name(kind, slot)
+        if (.not. is_finite(y)) then
+            call set_error(st, STATUS_MODEL_ERROR, name // ' is not a finite number at INST ' &
+                // to_text(t))
+        else if (kind == LOAD_DDL_IMPO .and. abs(y) > MAX_LENGTH) then
+            call set_error(st, STATUS_MODEL_ERROR, name // ' = ' // to_text(y) // ' at INST ' &
+                // to_text(t) // ' is out of range (|' // name // '| <= ' // &
+                to_text(MAX_LENGTH) // ')')
+        else if (.not. magnitude_fits(y)) then
+            call set_error(st, STATUS_MODEL_ERROR, name // ' = ' // to_text(y) // ' at INST ' &
+                // to_text(t) // ' is too large: the forces formed from it would overflow')
+        end if
     end subroutine load_value_at
 
     !> True when the set has an item of this kind.

@@ -143,11 +143,11 @@ contains
         do k = 1, size(components)
             name = to_upper(components(k)%s)
             if (component_index(name) > 0 .and. want_node) then
-                node_cmps = [node_cmps, string_t(name)]
+                call push(node_cmps, name)
             else if (sief_component_index(name, res%spring_dim) > 0 .and. want_sief) then
-                sief_cmps = [sief_cmps, string_t(name)]
+                call push(sief_cmps, name)
             else if (vari_component_index(name, DIS_CHOC_N_VARI) > 0 .and. want_vari) then
-                vari_cmps = [vari_cmps, string_t(name)]
+                call push(vari_cmps, name)
             else
                 call set_error(st, STATUS_MODEL_ERROR, components(k)%s // ' is no ' // &
                     'component of the fields asked for (NOM_CHAM ' // &
@@ -160,6 +160,20 @@ contains
         if (want_sief .and. size(sief_cmps) == 0) call none_of('SIEF_ELGA')
         if (want_vari .and. size(vari_cmps) == 0) call none_of('VARI_ELGA')
     contains
+        ! Appends one name (element by element: the array constructor
+        ! [list, string_t(name)] leaked its temporary's component, valgrind).
+        subroutine push(list, text)
+            type(string_t), allocatable, intent(inout) :: list(:)
+            character(len=*), intent(in) :: text
+            type(string_t), allocatable :: bigger(:)
+            integer :: m
+            allocate (bigger(size(list) + 1))
+            do m = 1, size(list)
+                call move_alloc(list(m)%s, bigger(m)%s)
+            end do
+            bigger(size(bigger))%s = text
+            call move_alloc(bigger, list)
+        end subroutine push
         subroutine none_of(what)
             character(len=*), intent(in) :: what
             if (st%ok()) call set_error(st, STATUS_MODEL_ERROR, 'NOM_CMP names no ' // &

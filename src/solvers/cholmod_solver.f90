@@ -205,6 +205,9 @@ contains
             return
         end if
         call system_clock(t0, rate)
+        ! allocated first: the reallocating assignment to an unallocated local read its
+        ! uninitialised bounds (valgrind, Debug build)
+        allocate (original(a%n))
         original = sym_diagonal(a)
         scale = 1.0_dp
         if (a%n > 0) scale = max(maxval(abs(original)), tiny(1.0_dp))

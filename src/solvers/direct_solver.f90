@@ -143,6 +143,7 @@ module direct_solver
     end interface
 
     public :: digits_lost, record_flag, record_hold, singular_message, effective_nprec, &
+        nprec_text, &
         check_disabled, start_report, limit_openmp_threads
 
     interface
@@ -182,6 +183,16 @@ contains
         effective_nprec = abs(options%nprec)
         if (effective_nprec == 0) effective_nprec = NPREC_DEFAULT
     end function effective_nprec
+
+    !> NPREC for messages: as the deck wrote it, and how the method reads it when that
+    !> differs ("-1, read as 1 by LDLT"): a message must not show a value nobody wrote.
+    function nprec_text(options) result(text)
+        type(solver_options_t), intent(in) :: options
+        character(len=:), allocatable :: text
+        text = to_text(options%nprec)
+        if (effective_nprec(options) /= options%nprec) text = text // ', read as ' // &
+            to_text(effective_nprec(options)) // ' by ' // trim(options%method)
+    end function nprec_text
 
     !> Code_Aster U4.50.01: with METHODE='MUMPS' a negative NPREC switches the singularity
     !> check off; LDLT and MULT_FRONT read |NPREC|.
@@ -287,7 +298,7 @@ contains
             write (buf, '(f0.1)') report%flagged_digits_lost(1)
             text = 'matrix is singular: the pivot of equation ' // to_text(j) // ' lost ' // &
                    trim(adjustl(buf)) // ' significant digits (more than NPREC = ' // &
-                   to_text(effective_nprec(options)) // ')'
+                   nprec_text(options) // ')'
         end select
         if (report%n_flagged > 1) then
             text = text // '; ' // to_text(report%n_flagged) // ' equations flagged in all'

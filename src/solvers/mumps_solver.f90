@@ -25,7 +25,8 @@ module mumps_solver
     use, intrinsic :: iso_c_binding, only: c_ptr, c_funptr, c_null_ptr, c_associated, &
         c_int32_t, c_int64_t, c_double, c_f_procpointer
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, STATUS_INTERNAL, STATUS_IO_ERROR
+    use status, only: status_t, set_error, STATUS_INTERNAL, STATUS_IO_ERROR, STATUS_SINGULAR
+    use number_limits, only: product_fits
     use strings, only: to_text
     use dynamic_library, only: dynamic_library_t, open_library, find_symbol
     use install_layout, only: plugin_file_path
@@ -418,6 +419,15 @@ contains
             return
         end if
         do k = 1, size(b, 2)
+            ! x = S y: S = |a_jj|^-1/2 is large for a small stiffness; a product beyond double
+            ! precision is a solution that cannot be represented, not a number to form
+            if (.not. all(product_fits(b(:, k), self%scale))) then
+                call set_error(st, STATUS_SINGULAR, 'MUMPS: the solution at equation ' // &
+                    to_text(int(findloc(product_fits(b(:, k), self%scale), .false., dim=1), &
+                    i4)) // ' is beyond double precision: the loads are out of all ' // &
+                    'proportion to the stiffness there')
+                return
+            end if
             b(:, k) = b(:, k) * self%scale
         end do
     end subroutine mumps_solve_many
