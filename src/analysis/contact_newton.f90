@@ -66,7 +66,7 @@ module contact_newton
     use spring_results, only: store_spring_fields
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use run_deadline, only: deadline_t
-    use number_limits, only: is_finite, MAX_BINARY_EXPONENT
+    use number_limits, only: is_finite, product_fits, MAX_BINARY_EXPONENT
     use progress, only: progress_t, wall_seconds, progress_note, progress_update, &
         progress_done, progress_context
     implicit none
@@ -780,7 +780,12 @@ contains
             tolerance = absolute_tol(options)
         else
             tolerance = huge(1.0_dp)
-            if (options%use_rela) tolerance = options%resi_glob_rela * denominator
+            ! RESI_GLOB_RELA may be as large as the deck likes (1e308: any state converges);
+            ! the product is formed only when it fits (number_limits), else no bound
+            if (options%use_rela) then
+                if (product_fits(options%resi_glob_rela, denominator)) &
+                    tolerance = options%resi_glob_rela * denominator
+            end if
             if (options%use_maxi) tolerance = min(tolerance, options%resi_glob_maxi)
         end if
     end function criterion_tolerance
@@ -1066,7 +1071,12 @@ contains
         limit = ZERO_GAP_FORCE_FRACTION * criterion_tolerance(options, map, state)
         do k = 1, size(lines, kind=i4)
             if (state%closed(k) .eqv. before(k)) cycle
-            if (lines(k)%force > limit / scale) return
+            ! force * scale > limit, formed on the side that cannot overflow
+            if (scale >= 1.0_dp) then
+                if (lines(k)%force > limit / scale) return
+            else
+                if (lines(k)%force * scale > limit) return
+            end if
         end do
         settled = .true.
         call log_add(log, '  ' // to_text(count(state%closed .neqv. before, kind=i4)) // &

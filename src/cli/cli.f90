@@ -436,8 +436,10 @@ contains
                     call ctx%write_mess('  P time_limit ' // p%value // ' (line ' // &
                         to_text(int(p%line, i4)) // '): wall-clock limit of the run, in s')
                 else
-                    call ctx%write_mess('  ' // p%kind // ' ' // p%name // ' ' // p%value // &
-                        ' (line ' // to_text(int(p%line, i4)) // '): recorded, no effect ' // &
+                    ! the value quoted as written: parasol does not read it (a "NaN" here
+                    ! is the file's text, not a number parasol computed)
+                    call ctx%write_mess('  ' // p%kind // ' ' // p%name // ' "' // p%value // &
+                        '" (line ' // to_text(int(p%line, i4)) // '): recorded, no effect ' // &
                         'in parasol')
                 end if
             end associate

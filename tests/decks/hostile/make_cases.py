@@ -222,6 +222,13 @@ def deck_cases(c):
                 "# expect-exit: 0\n"
                 "# seconds: 20\n",
                 [("TOLE_MACHINE=1.0E-8", "TOLE_MACHINE=1.0E+308")])
+    c.deck_case("resi_glob_rela_1e308", deck_a,
+                "# fuzz seed 101 case 4685: RESI_GLOB_RELA = 1e308 overflowed in the contact Newton's\n"
+                "# zero-gap test (the tolerance times its denominator). Any state converges: the run\n"
+                "# ends at its first iterate and the deck's TEST_RESU lines fail (exit 2).\n"
+                "# expect-exit: 2\n"
+                "# seconds: 20\n",
+                [("RESI_GLOB_RELA=1.0E-10", "RESI_GLOB_RELA=1e308")], mesh="a")
     c.deck_case("formula_pow_1e308", deck_b,
                 "# issue 13: 10.0**1e308 in a formula overflowed in the ** guard itself.\n"
                 "# expect: @L:@C: error: STAT_NON_LINE: FORCE_CONTOUR: FORMULE FORCE: numerical\n"
