@@ -117,15 +117,10 @@ contains
                 do i = 1, size(item%nodes)
                     node = item%nodes(i)
                     do comp = 1, N_COMPONENTS
-                        if (.not. item%values(comp)%given) cycle
-                        eq = s%dofs%equation(comp, node)
-                        if (eq <= 0) cycle
-                        call load_value_at(item%values(comp), item%kind, comp, t, &
-                            s%mesh%coords(:, node), v, st)
-                        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
-                        call load_locate(item, comp, st)
+                        call imposed_at(s, item, node, comp, t, factor, eq, v, st)
                         if (st%failed()) return
-                        u(eq) = factor * v
+                        if (eq <= 0) cycle
+                        u(eq) = v
                     end do
                 end do
             end associate
@@ -158,15 +153,9 @@ contains
                 do i = 1, size(item%nodes)
                     node = item%nodes(i)
                     do comp = 1, N_COMPONENTS
-                        if (.not. item%values(comp)%given) cycle
-                        eq = s%dofs%equation(comp, node)
-                        if (eq <= 0) cycle
-                        call load_value_at(item%values(comp), item%kind, comp, t, &
-                            s%mesh%coords(:, node), v, st)
-                        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
-                        call load_locate(item, comp, st)
+                        call imposed_at(s, item, node, comp, t, factor, eq, v, st)
                         if (st%failed()) return
-                        v = factor * v
+                        if (eq <= 0) cycle
                         if (owner(1, eq) == 0) then
                             owner(:, eq) = [load_number, k]
                             value(eq) = v
@@ -186,6 +175,28 @@ contains
             end associate
         end do
     end subroutine record_imposed
+
+    !> The value a DDL_IMPO item imposes on (node, comp) at time t, times factor, and its
+    !> equation (eq = 0: the component is not given, or not an unknown of the model).
+    !>  st : out, function errors and values out of range, located at the item
+    subroutine imposed_at(s, item, node, comp, t, factor, eq, v, st)
+        type(structure_t), intent(in) :: s
+        type(load_item_t), intent(in) :: item
+        integer(i4), intent(in) :: node, comp
+        real(dp), intent(in) :: t, factor
+        integer(i4), intent(out) :: eq
+        real(dp), intent(out) :: v
+        type(status_t), intent(out) :: st
+        eq = 0
+        v = 0.0_dp
+        if (.not. item%values(comp)%given) return
+        eq = s%dofs%equation(comp, node)
+        if (eq <= 0) return
+        call load_value_at(item%values(comp), item%kind, comp, t, s%mesh%coords(:, node), v, st)
+        if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+        call load_locate(item, comp, st)
+        if (st%ok()) v = factor * v
+    end subroutine imposed_at
 
     !> Adds the external forces of a load set at time t (times factor) to fext.
     !>  st : out, function evaluation errors; a load on a cell of the wrong kind; a nodal
