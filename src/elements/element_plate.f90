@@ -205,8 +205,20 @@ contains
         real(dp), intent(in) :: rot(3, 3), xy(2, nn), kl(6 * nn, 6 * nn), ue(6 * nn)
         real(dp), intent(out) :: fe(6 * nn)
         real(dp) :: ul(24), fl(24)     ! fixed size (DKQ): no heap temporaries per call
+        call vectors_to_local(rot, nn, ue, ul)
+        call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
+        call local_matvec(6 * nn, kl, ul, fl)
+        call vectors_to_global(rot, nn, fl, fe)
+    end subroutine plate_forces_from_local
+
+    !> ul = T ue: the 2nn 3-vectors (translations, rotations) of a plate cell's nodes in
+    !> its local frame, sums in ascending order as matmul's (bit for bit the same forces
+    !> whichever storage of the local stiffness is used).
+    pure subroutine vectors_to_local(rot, nn, ue, ul)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: rot(3, 3), ue(6 * nn)
+        real(dp), intent(out) :: ul(:)
         integer(i4) :: i, r, c
-        ! ul = T ue and fe = T^T fl by 3-vectors, sums in ascending order as matmul's
         do i = 1, 2 * nn
             do r = 1, 3
                 ul(3 * i - 3 + r) = 0.0_dp
@@ -215,8 +227,14 @@ contains
                 end do
             end do
         end do
-        call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
-        call local_matvec(6 * nn, kl, ul, fl)
+    end subroutine vectors_to_local
+
+    !> fe = T^T fl: local forces of a plate cell's nodes back to the global frame.
+    pure subroutine vectors_to_global(rot, nn, fl, fe)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: rot(3, 3), fl(:)
+        real(dp), intent(out) :: fe(6 * nn)
+        integer(i4) :: i, r, c
         do i = 1, 2 * nn
             do r = 1, 3
                 fe(3 * i - 3 + r) = 0.0_dp
@@ -225,7 +243,7 @@ contains
                 end do
             end do
         end do
-    end subroutine plate_forces_from_local
+    end subroutine vectors_to_global
 
     !> Terms of the local stiffness stored by blocks (plate_local_blocks): the membrane
     !> block (u, v of every node, (2nn)^2), the bending block (w, thx, thy, (3nn)^2) and the
@@ -302,15 +320,8 @@ contains
         real(dp), intent(in) :: rot(3, 3), xy(2, nn), kblk(:), ue(6 * nn)
         real(dp), intent(out) :: fe(6 * nn)
         real(dp) :: ul(24), fl(24)
-        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, r, c, k, m
-        do i = 1, 2 * nn
-            do r = 1, 3
-                ul(3 * i - 3 + r) = 0.0_dp
-                do c = 1, 3
-                    ul(3 * i - 3 + r) = ul(3 * i - 3 + r) + rot(r, c) * ue(3 * i - 3 + c)
-                end do
-            end do
-        end do
+        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, k, m
+        call vectors_to_local(rot, nn, ue, ul)
         call remove_zero_energy_mode(xy, nn, ul(1:6 * nn))
         call block_indices(nn, im, ib)
         fl(1:6 * nn) = 0.0_dp
@@ -331,14 +342,7 @@ contains
         do i = 1, nn
             fl(6 * i) = fl(6 * i) + kblk(k + i) * ul(6 * i)
         end do
-        do i = 1, 2 * nn
-            do r = 1, 3
-                fe(3 * i - 3 + r) = 0.0_dp
-                do c = 1, 3
-                    fe(3 * i - 3 + r) = fe(3 * i - 3 + r) + rot(c, r) * fl(3 * i - 3 + c)
-                end do
-            end do
-        end do
+        call vectors_to_global(rot, nn, fl, fe)
     end subroutine plate_forces_from_blocks
 
     !> Local DOF of the membrane (u, v) and bending (w, thx, thy) blocks, node by node.
