@@ -631,7 +631,8 @@ contains
     end function plane_deformation
 
     !> Plate (DX..DRZ per node) displacements minus a rigid motion: the mean translation
-    !> and the mean rotation about the in-plane axes (u = t + w x (x - xc), theta = w,
+    !> and the mean rotation about the in-plane axes (u = t + w x P(x - xc), P the
+    !> projection on the cell's mean plane, theta = w,
     !> w normal to the plate). That motion has zero energy in DKT/DKQ (a rotation about the
     !> normal would load the fictitious DRZ stiffness, so it is left in); removing it keeps
     !> the round-off of K u proportional to the deformation (see plane_deformation).
@@ -668,7 +669,12 @@ contains
         w = w / real(nn, dp)
         w = w - dot_product(w, n) * n
         do i = 1, nn
+            ! the arm in the cell's mean plane (plate_local_frame's normal): the element is
+            ! built on the nodes projected there, so only that motion has zero energy; a
+            ! warped cell's out-of-plane offsets would otherwise turn the rotation into a
+            ! membrane stretch K does not see as rigid (internal forces != K u)
             d = x(:, i) - xc
+            d = d - dot_product(d, n) * n
             ud(6 * i - 5:6 * i - 3) = ue(6 * i - 5:6 * i - 3) - t - cross(w, d)
             ud(6 * i - 2:6 * i) = ue(6 * i - 2:6 * i) - w
         end do
