@@ -5,6 +5,7 @@ module tabulated_function
     use kinds, only: dp
     use strings, only: string_t, to_text
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use number_limits, only: magnitude_fits, product_fits, MAX_BINARY_EXPONENT
     use deck_concept, only: concept_display_name
     use function_concept, only: function_concept_t, param_binding_t, missing_parameter
     implicit none
@@ -81,7 +82,7 @@ contains
             case (PROL_CONSTANT)
                 value = y(1)
             case default
-                value = y(1) + (t - x(1)) * (y(2) - y(1)) / (x(2) - x(1))
+                call linear_through(x(1), y(1), x(2), y(2), t, value, st)
             end select
             return
         end if
@@ -92,7 +93,7 @@ contains
             case (PROL_CONSTANT)
                 value = y(n)
             case default
-                value = y(n) + (t - x(n)) * (y(n) - y(n - 1)) / (x(n) - x(n - 1))
+                call linear_through(x(n), y(n), x(n - 1), y(n - 1), t, value, st)
             end select
             return
         end if
@@ -105,8 +106,46 @@ contains
                 hi = mid
             end if
         end do
-        value = y(lo) + (t - x(lo)) * (y(hi) - y(lo)) / (x(hi) - x(lo))
+        call linear_through(x(lo), y(lo), x(hi), y(hi), t, value, st)
     end subroutine interpolate_table
+
+    !> The line through (xa, ya) and (xb, yb) at t: ya + (t - xa) (yb - ya) / (xb - xa),
+    !> formed only when every term stays below 2**MAX_BINARY_EXPONENT (number_limits), so
+    !> that ordinates such as -1e308 cannot overflow in the interpolation itself (issue 13);
+    !> otherwise an error. When the product (t - xa)(yb - ya) would not fit but the quotient
+    !> first does, the quotient is taken first (the last bit may differ, the value not).
+    subroutine linear_through(xa, ya, xb, yb, t, value, st)
+        real(dp), intent(in) :: xa, ya, xb, yb, t
+        real(dp), intent(out) :: value
+        type(status_t), intent(inout) :: st
+        real(dp) :: dt, dy, dx, q
+        value = ya
+        if (all(magnitude_fits([xa, ya, xb, yb, t]))) then
+            dt = t - xa
+            dy = yb - ya
+            dx = xb - xa
+            if (.not. abs(dx) > 0.0_dp) return
+            if (product_fits(dt, dy)) then
+                q = dt * dy
+                if (exponent(q) - exponent(dx) + 1 <= MAX_BINARY_EXPONENT) then
+                    value = ya + q / dx
+                    return
+                end if
+            end if
+            if (exponent(dt) - exponent(dx) + 1 <= MAX_BINARY_EXPONENT) then
+                q = dt / dx
+                if (product_fits(q, dy)) then
+                    value = ya + q * dy
+                    return
+                end if
+            end if
+        end if
+        value = 0.0_dp
+        call set_error(st, STATUS_MODEL_ERROR, 'the value at ' // to_text(t) // &
+            ' is beyond 2**' // to_text(MAX_BINARY_EXPONENT) // ' (about 1.07E+301) in ' // &
+            'the linear interpolation between (' // to_text(xa) // ', ' // to_text(ya) // &
+            ') and (' // to_text(xb) // ', ' // to_text(yb) // '): values too large')
+    end subroutine linear_through
 
     subroutine outside(st, t, a, b)
         type(status_t), intent(inout) :: st

@@ -216,6 +216,16 @@ def deck_cases(c):
                 "# phrase: DX = -1.000000000000E+308 at INST 1.000000000000E+00 is out of range\n",
                 [("ZERO = DEFI_CONSTANTE(VALE=0.0)", "ZERO = DEFI_CONSTANTE(VALE=-1.0E+308)")],
                 at=("DDL_IMPO=_F(GROUP_NO='PTRESS'", "_F(GROUP_NO='PTRESS'"))
+    c.deck_case("defi_fonction_ordinate_1e308", deck_b,
+                "# fuzz seed 104 case 1072: a DEFI_FONCTION ordinate of -1e308 overflowed in the\n"
+                "# linear interpolation itself ((t - x) (y2 - y1) at INST 2 between -1e308 and 4;\n"
+                "# here y2 - y1 between -1e308 and 1e308 at INST 1).\n"
+                "# Interpolation terms are formed only when they stay below 2**1000.\n"
+                "# expect: @L:@C: error: AFFE_CHAR_MECA_F/DDL_IMPO/DX:\n"
+                "# phrase: is beyond 2**1000 (about 1.07E+301) in the linear interpolation\n",
+                [("ZERO = DEFI_CONSTANTE(VALE=0.0)",
+                  "ZERO = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, -1.0E+308, 2.0, 1.0E+308))")],
+                at=("DDL_IMPO=_F(GROUP_NO='PTRESS'", "_F(GROUP_NO='PTRESS'"))
     c.deck_case("test_resu_tole_machine_1e308", deck_b,
                 "# issue 13: TOLE_MACHINE = 1e308 overflowed in the TEST_RESU guard (tol * |ref|).\n"
                 "# The check divides instead: the deck runs, every TEST_RESU OK.\n"
