@@ -30,6 +30,9 @@ module element_dis_choc
 
     public :: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_poi1, dis_choc_2d_poi1, &
         dis_choc_line_seg2, dis_choc_seg2_gap
+    ! shared with DIS_CONTACT (element_dis_contact): the same stiffness across the axis and
+    ! the same two-node matrix
+    public :: choc_stiffness, pair_matrix
 
     !> The spring's energy along a straight path u + alpha du (a line search):
     !>   E(alpha) = 0 when open, gap(alpha) = gap + alpha slope > 0, else
@@ -150,11 +153,20 @@ contains
             kdisc, elastic, closed, gap, fn, f2(1:n), kc, rigi_nor, rigi_tan)
         fe(1:n) = -f2(1:n)
         fe(n + 1:2 * n) = f2(1:n)
-        ke(1:n, 1:n) = kc
-        ke(n + 1:2 * n, n + 1:2 * n) = kc
-        ke(1:n, n + 1:2 * n) = -kc
-        ke(n + 1:2 * n, 1:n) = -kc
+        call pair_matrix(n, kc, ke)
     end subroutine choc_segment
+
+    !> The matrix of a spring between two nodes whose relative displacement r = u2 - u1 has
+    !> the stiffness kc: [kc -kc; -kc kc].
+    pure subroutine pair_matrix(n, kc, ke)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: kc(:, :)
+        real(dp), intent(out) :: ke(2 * n, 2 * n)
+        ke(1:n, 1:n) = kc(1:n, 1:n)
+        ke(n + 1:2 * n, n + 1:2 * n) = kc(1:n, 1:n)
+        ke(1:n, n + 1:2 * n) = -kc(1:n, 1:n)
+        ke(n + 1:2 * n, 1:n) = -kc(1:n, 1:n)
+    end subroutine pair_matrix
 
     !> POI1 in n dimensions: node 1 of a virtual SEG2 whose node 2 is the fixed obstacle.
     subroutine choc_point(n, ue, ex, kdisc, jeu, dist1, elastic, closed, gap, fn, fe, ke, &

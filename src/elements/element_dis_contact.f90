@@ -28,6 +28,7 @@
 module element_dis_contact
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use element_dis_choc, only: choc_stiffness, pair_matrix
     implicit none
     private
 
@@ -53,12 +54,12 @@ contains
         real(dp), intent(out) :: fn0, un0
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: rigi_nor
-        real(dp) :: e(MAX_DIM), length, kn, jeu
+        real(dp) :: e(MAX_DIM), length, kn, jeu, kt(MAX_DIM, MAX_DIM)
         fn0 = 0.0_dp
         un0 = 0.0_dp
         call axis(n, coords, e, length, st)
         if (st%failed()) return
-        kn = normal_stiffness(n, e(1:n), kdisc, rigi_nor)
+        call choc_stiffness(n, e(1:n), kdisc, kn, kt, rigi_nor)
         jeu = length - (dist1 + dist2)
         if (jeu <= 0.0_dp) fn0 = kn * jeu
     end subroutine dis_contact_start
@@ -95,8 +96,8 @@ contains
         un = 0.0_dp
         call axis(n, coords, e, length, st)
         if (st%failed()) return
-        kn = normal_stiffness(n, e(1:n), kdisc, rigi_nor)
-        call tangential_stiffness(n, e(1:n), kdisc, kt)
+        ! k_n = RIGI_NOR, else e^T K e; K_t = P K P, P = I - e e^T (no RIGI_TAN here)
+        call choc_stiffness(n, e(1:n), kdisc, kn, kt, rigi_nor)
         r(1:n) = ue(n + 1:2 * n) - ue(1:n)
         un = dot_product(r(1:n), e(1:n))
         closed = un + (length - (dist1 + dist2)) <= 0.0_dp
@@ -124,10 +125,7 @@ contains
                 end do
             end do
         end if
-        ke(1:n, 1:n) = kc(1:n, 1:n)
-        ke(n + 1:2 * n, n + 1:2 * n) = kc(1:n, 1:n)
-        ke(1:n, n + 1:2 * n) = -kc(1:n, 1:n)
-        ke(n + 1:2 * n, 1:n) = -kc(1:n, 1:n)
+        call pair_matrix(n, kc, ke)
     end subroutine dis_contact_seg2
 
     !> Unit axis node 1 -> node 2 and the length of the segment.
@@ -146,34 +144,5 @@ contains
         end if
         e(1:n) = e(1:n) / length
     end subroutine axis
-
-    !> k_n: RIGI_NOR if given, else e^T K e.
-    pure real(dp) function normal_stiffness(n, e, kdisc, rigi_nor) result(kn)
-        integer(i4), intent(in) :: n
-        real(dp), intent(in) :: e(n), kdisc(n, n)
-        real(dp), intent(in), optional :: rigi_nor
-        if (present(rigi_nor)) then
-            kn = rigi_nor
-        else
-            kn = dot_product(e, matmul(kdisc, e))
-        end if
-    end function normal_stiffness
-
-    !> K_t = P K P with P = I - e e^T (the discrete's stiffness across e).
-    pure subroutine tangential_stiffness(n, e, kdisc, kt)
-        integer(i4), intent(in) :: n
-        real(dp), intent(in) :: e(n), kdisc(n, n)
-        real(dp), intent(out) :: kt(MAX_DIM, MAX_DIM)
-        real(dp) :: p(n, n)
-        integer(i4) :: i, j
-        do j = 1, n
-            do i = 1, n
-                p(i, j) = -e(i) * e(j)
-            end do
-            p(j, j) = p(j, j) + 1.0_dp
-        end do
-        kt = 0.0_dp
-        kt(1:n, 1:n) = matmul(p, matmul(kdisc, p))
-    end subroutine tangential_stiffness
 
 end module element_dis_contact
