@@ -28,8 +28,6 @@ The side-by-side table of doc/performance.md, from the repository root:
 """
 import argparse
 import csv
-import ctypes
-import ctypes.util
 import os
 import shutil
 import subprocess
@@ -213,21 +211,6 @@ def run_program(o, ccx, earlier, program, nx, ny, workdir):
                             methode=parasol_methode(o.parasol_methode, nx, ny))
 
 
-def openblas_core():
-    """The OpenBLAS kernel family the library picks on this CPU ('?' if none): what the
-    factorizations' dgemm runs (Debian's OpenBLAS 0.3.21 falls back to slower kernels on
-    CPUs it does not know)."""
-    for name in ("openblas", "openblas.so.0"):
-        path = ctypes.util.find_library(name) or "libopenblas.so.0"
-        try:
-            lib = ctypes.CDLL(path)
-            lib.openblas_get_corename.restype = ctypes.c_char_p
-            return lib.openblas_get_corename().decode()
-        except (OSError, AttributeError):
-            continue
-    return "?"
-
-
 def parse_meshes(text):
     """'4x16,16x64' -> [(4, 16), (16, 64)]."""
     out = []
@@ -344,7 +327,7 @@ def main(argv=None):
     status = 0
     last = None
     pairs = []
-    core = openblas_core()
+    core = parasol_case.openblas_core()
     print(f"OpenBLAS core: {core} (openblas_get_corename); load average {load_average()}",
           flush=True)
     load_before = load_average()

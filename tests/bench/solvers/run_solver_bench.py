@@ -15,8 +15,6 @@ Writes a CSV (--csv) and prints a Markdown table.
         --meshes 4x16,16x64,32x128,64x256 --csv doc/study/solvers.csv
 """
 import argparse
-import ctypes
-import ctypes.util
 import csv
 import os
 import re
@@ -28,19 +26,8 @@ import time
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 GEN = os.path.join(ROOT, "tools", "make_ssnl130_case.py")
 METHODS = ["LDLT", "MULT_FRONT", "MUMPS"]
-
-
-def openblas_core():
-    """The OpenBLAS kernel family the library picks on this CPU ('?' if none)."""
-    for name in ("openblas", "openblas.so.0"):
-        path = ctypes.util.find_library(name) or "libopenblas.so.0"
-        try:
-            lib = ctypes.CDLL(path)
-            lib.openblas_get_corename.restype = ctypes.c_char_p
-            return lib.openblas_get_corename().decode()
-        except (OSError, AttributeError):
-            continue
-    return "?"
+sys.path.insert(0, os.path.join(ROOT, "tests", "bench", "study"))
+from parasol_case import openblas_core  # noqa: E402
 
 
 def run(cmd, cwd):

@@ -20,6 +20,8 @@ The SSNL130 load (p = 5, K = 1e4, a = 1, b = 2, m = 2) is the generator's defaul
 continuous-bed answer is U_A = -8 p a b^3 / (9 K) = -4/1125 at y = 0 and U_B = -U_A/3 =
 4/3375 at y = b (ssnl130.md, "Reference solutions").
 """
+import ctypes
+import ctypes.util
 import os
 import re
 import subprocess
@@ -47,6 +49,21 @@ ONE_THREAD = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
 
 class CaseError(Exception):
     """A case that could not be generated or whose output could not be read."""
+
+
+def openblas_core():
+    """The OpenBLAS kernel family the library picks on this CPU ('?' if none): what the
+    factorizations' dgemm runs (Debian's OpenBLAS 0.3.21 falls back to slower kernels on
+    CPUs it does not know)."""
+    for name in ("openblas", "openblas.so.0"):
+        path = ctypes.util.find_library(name) or "libopenblas.so.0"
+        try:
+            lib = ctypes.CDLL(path)
+            lib.openblas_get_corename.restype = ctypes.c_char_p
+            return lib.openblas_get_corename().decode()
+        except (OSError, AttributeError):
+            continue
+    return "?"
 
 
 def case_args(model="a", nx=4, ny=16, newton="tangente", resi=1e-6, renum="RCMK", nprec=11,
