@@ -1,0 +1,103 @@
+!> The catalog of the analyses: MECA_STATIQUE, STAT_NON_LINE and their SOLVEUR.
+!> Part of THE command catalog (deck_catalog_data gathers the parts): keywords, types,
+!> cardinality, defaults mirroring Code_Aster's, allowed values and rules, as data.
+module catalog_analyses
+    use kinds, only: dp
+    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+    use number_limits, only: MAX_INSTANT
+    use catalog_common, only: OUI_NON
+    implicit none
+    private
+    public :: describe_analyses
+
+contains
+
+    subroutine describe_analyses(c)
+        type(catalog_t), intent(inout) :: c
+        call c%command('MECA_STATIQUE', 'evol_elas')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('CHAM_MATER', 'cham_mater')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%fact('EXCIT', max=MANY, req=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
+        call c%key('FONC_MULT', 'FUNC')
+        call c%end_fact()
+        call c%key('LIST_INST', 'listr8')
+        call c%key('INST', 'R', max=MANY, vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%rule(RULE_EXCLUS, 'LIST_INST INST')
+        call describe_solver(c)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('OPTION', 'TXM', noop=.true.)
+        call c%key('TITRE', 'TXM', max=MANY, noop=.true.)
+
+        call c%command('STAT_NON_LINE', 'evol_noli')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('CHAM_MATER', 'cham_mater', req=.true.)
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%fact('EXCIT', max=MANY, req=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
+        call c%key('FONC_MULT', 'FUNC')
+        call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
+        call c%end_fact()
+        call c%fact('COMPORTEMENT', max=MANY, req=.true.)
+        call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC DIS_CONTACT')
+        call c%key('DEFORMATION', 'TXM', def='PETIT', into='PETIT')
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
+        call c%end_fact()
+        call c%fact('INCREMENT', req=.true.)
+        call c%key('LIST_INST', 'listr8', req=.true.)
+        call c%key('INST_INIT', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('INST_FIN', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('NUME_INST_INIT', 'I', vmin=0.0_dp)
+        call c%key('NUME_INST_FIN', 'I', vmin=0.0_dp)
+        call c%rule(RULE_EXCLUS, 'INST_INIT NUME_INST_INIT')
+        call c%rule(RULE_EXCLUS, 'INST_FIN NUME_INST_FIN')
+        call c%end_fact()
+        call c%fact('NEWTON')
+        call c%key('PREDICTION', 'TXM', into='TANGENTE ELASTIQUE')
+        call c%key('MATRICE', 'TXM', def='TANGENTE', into='TANGENTE ELASTIQUE')
+        call c%key('REAC_INCR', 'I', def='1', vmin=0.0_dp)     ! Code_Aster default, val_min
+        call c%key('REAC_ITER', 'I', def='0', vmin=0.0_dp)     ! Code_Aster default, val_min
+        call c%end_fact()
+        call c%fact('CONVERGENCE')
+        call c%key('RESI_GLOB_RELA', 'R', vmin=0.0_dp)
+        call c%key('RESI_GLOB_MAXI', 'R', vmin=0.0_dp)
+        call c%key('ITER_GLOB_MAXI', 'I', def='10', vmin=0.0_dp)   ! Code_Aster default
+        call c%key('ARRET', 'TXM', def='OUI', into=OUI_NON)
+        call c%end_fact()
+        call describe_solver(c)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('TITRE', 'TXM', max=MANY, noop=.true.)
+        call c%fact('ARCHIVAGE', noop=.true.)
+        call c%key('LIST_INST', 'listr8', noop=.true.)
+        call c%key('PAS_ARCH', 'I', noop=.true.)
+        call c%end_fact()
+    end subroutine describe_analyses
+
+    !> SOLVEUR factor keyword of the analyses (defaults as Code_Aster's: METHODE='MUMPS',
+    !> NPREC=8, STOP_SINGULIER='OUI'; RENUM's default depends on the method).
+    subroutine describe_solver(c)
+        type(catalog_t), intent(inout) :: c
+        call c%fact('SOLVEUR')
+        call c%key('METHODE', 'TXM', def='MUMPS', into='LDLT MULT_FRONT MUMPS')
+        call c%key('RENUM', 'TXM', into='RCMK METIS SANS AMD MD AMF PORD SCOTCH QAMD AUTO')
+        call c%key('NPREC', 'I', def='8')
+        call c%key('STOP_SINGULIER', 'TXM', def='OUI', into=OUI_NON)
+        call c%key('ELIM_LAGR', 'TXM', noop=.true.)
+        call c%key('PCENT_PIVOT', 'I', noop=.true.)
+        call c%key('GESTION_MEMOIRE', 'TXM', noop=.true.)
+        call c%key('RESI_RELA', 'R', noop=.true.)
+        call c%key('POSTTRAITEMENTS', 'TXM', noop=.true.)
+        call c%key('TYPE_RESOL', 'TXM', noop=.true.)
+        call c%key('ACCELERATION', 'TXM', into='AUTO FR FR+ FR++ LR LR+ LR++')  ! MUMPS
+        call c%key('LOW_RANK_SEUIL', 'R', noop=.true.)
+        call c%key('MATR_DISTRIBUEE', 'TXM', noop=.true.)
+        call c%key('PRETRAITEMENTS', 'TXM', noop=.true.)
+        call c%key('FILTRAGE_MATRICE', 'R', noop=.true.)
+        call c%key('MIXER_PRECISION', 'TXM', noop=.true.)
+        call c%end_fact()
+    end subroutine describe_solver
+
+end module catalog_analyses

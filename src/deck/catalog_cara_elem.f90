@@ -1,0 +1,77 @@
+!> The catalog of AFFE_CARA_ELEM (U4.42.01).
+!> Part of THE command catalog (deck_catalog_data gathers the parts): keywords, types,
+!> cardinality, defaults mirroring Code_Aster's, allowed values and rules, as data.
+module catalog_cara_elem
+    use kinds, only: dp
+    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+    use number_limits, only: MAX_LENGTH, MIN_LENGTH, MAX_MODULUS, MIN_MODULUS
+    use catalog_common, only: OUI_NON, ANGLE_MAX, RATIO_MAX, WEIGHT_MAX
+    implicit none
+    private
+    public :: describe_cara_elem
+
+contains
+
+    subroutine describe_cara_elem(c)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), parameter :: K_CARA = 'K_T_D_N K_T_D_L K_TR_D_N K_TR_D_L'
+        call c%command('AFFE_CARA_ELEM', 'cara_elem')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%fact('COQUE', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('EPAIS', 'R', req=.true., vmax=MAX_LENGTH, vtiny=MIN_LENGTH)  ! > 0: handler
+        call c%key('COQUE_NCOU', 'I', noop=.true.)
+        call c%key('COEF_RIGI_DRZ', 'R', def='1.0E-5', &  ! Code_Aster default
+                   vmin=-RATIO_MAX, vmax=RATIO_MAX)
+        call c%key('ANGL_REP', 'R', min=2, max=2, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('VECTEUR', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('EXCENTREMENT', 'R', noop=.true.)
+        call c%key('INER_ROTA', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('MODI_METRIQUE', 'TXM', into=OUI_NON, noop=.true.)
+        call c%rule(RULE_EXCLUS, 'ANGL_REP VECTEUR')
+        call c%end_fact()
+        call c%fact('DISCRET', max=MANY)
+        call describe_discrete(c, K_CARA)
+        call c%end_fact()
+        call c%fact('DISCRET_2D', max=MANY)
+        call describe_discrete(c, K_CARA)
+        call c%end_fact()
+        call c%fact('ORIENTATION', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('CARA', 'TXM', req=.true., into='ANGL_VRIL VECT_Y ANGL_NAUT')
+        call c%key('VALE', 'R', max=3, req=.true., vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%end_fact()
+        call c%fact('RIGI_PARASOL', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('GROUP_MA_SEG2', 'TXM', max=MANY)
+        call c%key('GROUP_MA_POI1', 'TXM', max=MANY)
+        call c%key('COEF_GROUP', 'R', max=MANY, vmin=-WEIGHT_MAX, vmax=WEIGHT_MAX, &
+                   vtiny=1.0_dp / WEIGHT_MAX)
+        call c%key('FONC_GROUP', 'FUNC', max=MANY)
+        call c%key('CARA', 'TXM', max=2, req=.true., into=K_CARA)
+        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
+        call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL')
+        call c%key('GROUP_NO_CENTRE', 'TXM')
+        call c%key('NOEUD_CENTRE', 'TXM')
+        call c%key('COOR_CENTRE', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%rule(RULE_UN_PARMI, 'GROUP_MA_SEG2 GROUP_MA_POI1')
+        call c%rule(RULE_UN_PARMI, 'COEF_GROUP FONC_GROUP')
+        call c%rule(RULE_EXCLUS, 'GROUP_NO_CENTRE NOEUD_CENTRE COOR_CENTRE')
+        call c%end_fact()
+        call c%rule(RULE_AU_MOINS_UN, 'COQUE DISCRET DISCRET_2D ORIENTATION RIGI_PARASOL')
+    end subroutine describe_cara_elem
+
+    subroutine describe_discrete(c, cara)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: cara
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('CARA', 'TXM', req=.true., into=cara)
+        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                   vtiny=MIN_MODULUS)
+        call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL LOCAL')
+        call c%key('SYME', 'TXM', def='OUI', into=OUI_NON)
+    end subroutine describe_discrete
+
+end module catalog_cara_elem
