@@ -1470,6 +1470,18 @@ contains
         ctx%ncommand = ctx%ncommand + 1
         if (cmd%name == 'FIN') ctx%finished = .true.
         if (.not. allocated(result)) then
+            ! A handler that modified the concept of reuse= in place (DEFI_GROUP,
+            ! MODI_MAILLAGE: Code_Aster's reentrant commands) returns no new concept: the
+            ! command's value is that same concept, so every concept that refers to it
+            ! (a model built on the mesh) sees the change, as in Code_Aster.
+            if (run_it .and. cmd%given('reuse')) then
+                v = cmd%get_value('reuse')
+                if (v%kind == VK_CONCEPT .and. associated(v%obj)) then
+                    v%line = line; v%col = col
+                    call ctx%write_mess('    -> ' // v%obj%summary())
+                    return
+                end if
+            end if
             if (len(cmd%result_type) > 0) call set_error(st, STATUS_INTERNAL, cmd%name // &
                 ' produced no result', file=file, line=line, column=col)
             return
