@@ -469,7 +469,7 @@ contains
             case ('FUNC')
                 out = out // ' fonction formule'
             case ('RESU')
-                out = out // ' evol_elas evol_noli'
+                out = out // ' evol_elas evol_noli evol_ther'
             case default
                 out = out // ' ' // words(i)%s
             end select
