@@ -1435,6 +1435,9 @@ contains
         if (st%failed()) then
             call add_context(st, file=file, line=line, column=col); return
         end if
+        call ctx%check_listings(ctx%catalog%cmds(icmd)%name // ' at ' // &
+                                node_where(ctx, name_node), st)
+        if (st%failed()) return
         call validate_command(ctx%catalog, icmd, kwargs, file, line, col, cmd, st)
         if (st%failed()) return
         cmd%source = statement_source(ctx)
