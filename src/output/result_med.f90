@@ -25,8 +25,8 @@ module result_med
     use atomic_file, only: delete_file, temporary_path, track_temporary, untrack_temporary, &
         publish_file
     use mesh_types, only: mesh_t, node_name, cell_name, n_node_groups, n_cell_groups, &
-        nodes_of_group, cells_of_group, node_group_name, cell_group_name, CELL_POI1, &
-        CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_TYPE_NODES
+        nodes_of_group, cells_of_group, node_group_name, cell_group_name, N_CELL_TYPES, &
+        CELL_TYPE_ORDER, CELL_TYPE_NODES
     use mesh_name_index, only: name_index_t, name_add
     use med_file, only: med_file_t, med_open, med_close, med_mesh_count, med_mesh_info, &
         med_count, med_create_mesh, med_write_coordinates, med_write_connectivity, &
@@ -42,11 +42,11 @@ module result_med
     character(len=*), parameter :: MESH_DESCRIPTION = 'written by parasol'
     !> Name of the family of entities in no group (irmmfa).
     character(len=*), parameter :: NULL_FAMILY = 'FAMILLE_NULLE'
-    !> Cell types in the order they are written, with their MED type codes (med.h).
-    integer, parameter :: N_TYPES = 4
-    integer(i4), parameter :: WRITE_TYPES(N_TYPES) = [CELL_POI1, CELL_SEG2, CELL_TRIA3, &
-        CELL_QUAD4]
-    integer(i4), parameter :: MED_CODES(N_TYPES) = [1, 102, 203, 204]
+    !> Cell types in the order they are written (Code_Aster's catalogue order, in which
+    !> LIRE_MAILLAGE numbers them back), with their MED type codes (med.h).
+    integer, parameter :: N_TYPES = N_CELL_TYPES
+    integer(i4), parameter :: WRITE_TYPES(N_TYPES) = CELL_TYPE_ORDER
+    integer(i4), parameter :: MED_CODES(N_TYPES) = [1, 102, 103, 203, 206, 204, 208, 209]
 
     type :: int_list_t
         integer(i4), allocatable :: items(:)
