@@ -1509,6 +1509,9 @@ contains
         if (st%failed()) then
             call add_context(st, file=file, line=line, column=col); return
         end if
+        call ctx%check_listings(ctx%catalog%cmds(icmd)%name // ' at ' // &
+                                node_where(ctx, name_node), st)
+        if (st%failed()) return
         if (ctx%checking .and. holds_unknown(kwargs)) then
             ! A keyword takes a value known only when the deck runs (a table's cell): the
             ! command is validated then; here it stands in with a placeholder.

@@ -160,6 +160,7 @@ module run_context
         procedure :: write_mess => ctx_write_mess
         procedure :: write_warning => ctx_write_warning
         procedure :: write_resu => ctx_write_resu
+        procedure :: check_listings => ctx_check_listings
         procedure :: count_test => ctx_count_test
         procedure :: set_symbol => ctx_set_symbol
         procedure :: find_symbol => ctx_find_symbol
@@ -448,6 +449,26 @@ contains
         if (self%checking) return
         call self%resu%write_line(line)
     end subroutine ctx_write_resu
+
+    !> Hands both listings' lines to the system, then STATUS_IO_ERROR (unlocated) when a
+    !> write to the .mess or the .resu has failed, e.g. on a full disk: that listing cannot
+    !> be published whole, so the run cannot end well and the dispatcher, which calls this
+    !> before each command, stops it there (`before` names that command and where it is)
+    !> instead of computing on.
+    subroutine ctx_check_listings(self, before, st)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: before
+        type(status_t), intent(inout) :: st
+        call self%mess%flush()
+        call self%resu%flush()
+        if (self%mess%failed()) then
+            call set_error(st, STATUS_IO_ERROR, self%mess%error_message() // &
+                ' (the run stopped before ' // before // ')')
+        else if (self%resu%failed()) then
+            call set_error(st, STATUS_IO_ERROR, self%resu%error_message() // &
+                ' (the run stopped before ' // before // ')')
+        end if
+    end subroutine ctx_check_listings
 
     !> Counts one TEST_RESU check line (ok = .true. for OK, .false. for NOOK).
     subroutine ctx_count_test(self, ok)
