@@ -37,7 +37,7 @@ contains
         call c%key('VERI_JACOBIEN', 'TXM', into=OUI_NON, noop=.true.)
         call c%key('DISTRIBUTION', 'ANY', min=0, max=MANY, noop=.true.)
 
-        call c%command('DEFI_MATERIAU', 'mater')
+        call c%command('DEFI_MATERIAU', 'mater', reentrant='f:MATER')
         call c%fact('ELAS')
         call c%key('E', 'R', req=.true., vmin=0.0_dp, vmax=MAX_MODULUS, &
                    vtiny=MIN_MODULUS)                   ! val_min 0; E > 0: the handler

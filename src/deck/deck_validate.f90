@@ -9,6 +9,7 @@ module deck_validate
     use deck_catalog, only: catalog_t, cmd_def_t, kw_def_t, find_keyword, split_words, MANY, &
         RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
     use deck_command, only: command_t, keyword_set_t, kw_value_t, factor_value_t
+    use deck_concept, only: concept_display_name
     use deck_suggest, only: did_you_mean
     use deck_math, only: same_real
     implicit none
@@ -43,6 +44,11 @@ contains
             call check_scope(def, 0, a, file, st)
             if (st%failed()) return
             do j = 1, size(a%keys)
+                if (a%keys(j)%s == 'reuse') then
+                    call check_reuse(def, a, j, file, cmd, st)
+                    if (st%failed()) return
+                    cycle
+                end if
                 k = find_keyword(def, 0, a%keys(j)%s)
                 if (k > 0) then
                     if (def%kws(k)%is_factor) then
@@ -59,8 +65,81 @@ contains
             call check_required(def, 0, a, file, line, col, st)
             if (st%failed()) return
             call fill_defaults(def, 0, cmd)
+            if (associated(cmd%reuse)) call check_reused_keywords(def, cmd, st)
         end associate
     end subroutine validate_command
+
+    !> reuse=CONCEPT (Code_Aster's catalog attribute `reentrant`, cmd_def_t): allowed when
+    !> the command modifies a concept in place ('o' or 'f'); the concept must be of the
+    !> command's result type. Sets cmd%reuse and keeps the keyword (cmd%has('reuse')).
+    subroutine check_reuse(def, args, j, file, cmd, st)
+        type(cmd_def_t), intent(in) :: def
+        type(value_list_t), intent(in) :: args
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: file
+        type(command_t), intent(inout) :: cmd
+        type(status_t), intent(inout) :: st
+        type(kw_value_t) :: item
+        associate (v => args%items(j))
+            if (index('of', def%reentrant(1:1)) == 0 .or. len(def%result_type) == 0) then
+                call fail('reuse is not allowed: ' // def%name // ' makes a new concept, it ' &
+                    // 'does not modify one in place (Code_Aster''s catalog: reentrant=''n'')')
+                return
+            end if
+            if (v%kind /= VK_CONCEPT .or. .not. associated(v%obj)) then
+                call fail('expected the concept to modify in place (a concept of type ' // &
+                    type_words(def%result_type) // '), got ' // describe(v)); return
+            end if
+            if (.not. type_accepts(def%result_type, v)) then
+                call fail('expected ' // type_words(def%result_type) // ' (what ' // &
+                    def%name // ' makes), got ' // describe(v)); return
+            end if
+            cmd%reuse => v%obj
+            item%name = 'reuse'
+            item%line = args%key_line(j); item%col = args%key_col(j)
+            item%value = v
+            call cmd%add(item)
+        end associate
+    contains
+        subroutine fail(message)
+            character(len=*), intent(in) :: message
+            call set_error(st, STATUS_DECK_ERROR, message, file=file, &
+                line=vline(args%items(j), args%key_line(j)), &
+                column=vcol(args%items(j), args%key_col(j)), command=def%name, keyword='reuse')
+        end subroutine fail
+    end subroutine check_reuse
+
+    !> The keywords Code_Aster's `reentrant` names after ':' ('o:MAILLAGE|GRILLE') give the
+    !> concept the command reads and modifies: when one is given, it must be the reused one
+    !> (DEFI_GROUP(reuse=MA, MAILLAGE=MA)), else the command would change one concept with
+    !> what it computed on another.
+    subroutine check_reused_keywords(def, cmd, st)
+        type(cmd_def_t), intent(in) :: def
+        type(command_t), intent(in) :: cmd
+        type(status_t), intent(inout) :: st
+        type(string_t), allocatable :: names(:)
+        type(value_t) :: v
+        character(len=:), allocatable :: spec
+        integer :: i, colon
+        colon = index(def%reentrant, ':')
+        if (colon == 0) return
+        spec = def%reentrant(colon + 1:)
+        do i = 1, len(spec)
+            if (spec(i:i) == '|') spec(i:i) = ' '
+        end do
+        call split_words(spec, names)
+        do i = 1, size(names)
+            if (.not. cmd%given(names(i)%s)) cycle
+            v = cmd%get_value(names(i)%s)
+            if (v%kind /= VK_CONCEPT) cycle
+            if (associated(v%obj, cmd%reuse)) cycle
+            call cmd%error_at('reuse', 'reuse names ' // concept_display_name(cmd%reuse) // &
+                ' but ' // names(i)%s // ' gives ' // concept_display_name(v%obj) // ': ' // &
+                def%name // ' modifies in place the concept it reads (write reuse=' // &
+                concept_display_name(v%obj) // ', or leave reuse out for a new concept)', st)
+            return
+        end do
+    end subroutine check_reused_keywords
 
     !> Unknown and repeated keywords of one scope (checked before the values).
     subroutine check_scope(def, parent, args, file, st)
@@ -72,6 +151,7 @@ contains
         integer :: j, i, k
         do j = 1, size(args%keys)
             k = find_keyword(def, parent, args%keys(j)%s)
+            if (parent == 0 .and. args%keys(j)%s == 'reuse') k = -1   ! check_reuse
             if (k == 0 .and. .not. (def%open_keywords .and. parent == 0)) then
                 call set_error(st, STATUS_DECK_ERROR, 'unknown keyword ' // args%keys(j)%s // &
                     did_you_mean(args%keys(j)%s, scope_names(def, parent)) // &
