@@ -10,8 +10,11 @@ module deck_catalog
 
     !> "any number" for a maximum cardinality.
     integer, parameter, public :: MANY = huge(1)
-    !> Rule kinds between keywords of one scope (Code_Aster's EXCLUS, UN_PARMI, AU_MOINS_UN).
-    integer, parameter, public :: RULE_EXCLUS = 1, RULE_UN_PARMI = 2, RULE_AU_MOINS_UN = 3
+    !> Rule kinds between keywords of one scope (Code_Aster's EXCLUS, UN_PARMI, AU_MOINS_UN;
+    !> PRESENT_PRESENT: the first given needs all the others; PRESENT_ABSENT: the first given
+    !> forbids the others; ENSEMBLE: all or none).
+    integer, parameter, public :: RULE_EXCLUS = 1, RULE_UN_PARMI = 2, RULE_AU_MOINS_UN = 3, &
+        RULE_PRESENT_PRESENT = 4, RULE_PRESENT_ABSENT = 5, RULE_ENSEMBLE = 6
 
     !> One keyword. `types` is a '|'-separated list of: I, R, TXM, a concept type name
     !> (maillage, modele, ..., with FUNC meaning fonction|formule and RESU meaning

@@ -7,7 +7,8 @@ module deck_validate
     use status, only: status_t, set_error, STATUS_DECK_ERROR
     use deck_value
     use deck_catalog, only: catalog_t, cmd_def_t, kw_def_t, find_keyword, split_words, MANY, &
-        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, &
+        RULE_ENSEMBLE, rule_t
     use deck_command, only: command_t, keyword_set_t, kw_value_t, factor_value_t
     use deck_concept, only: concept_display_name
     use deck_suggest, only: did_you_mean
@@ -221,6 +222,8 @@ contains
                 if (count == 0) what = 'missing keyword: give exactly one of ' // names
             case (RULE_AU_MOINS_UN)
                 if (count == 0) what = 'missing keyword: give at least one of ' // names
+            case (RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, RULE_ENSEMBLE)
+                call conditional_rule(def%rules(r), args, what, last)
             end select
             if (len(what) == 0) cycle
             if (last > 0) then
@@ -235,6 +238,61 @@ contains
             return
         end do
     end subroutine check_rules
+
+    !> PRESENT_PRESENT (the first keyword given needs every other), PRESENT_ABSENT (the first
+    !> given forbids every other) and ENSEMBLE (all or none): the message, '' when the rule
+    !> holds, and the keyword to locate it at (index in the rule, 0 = the scope).
+    subroutine conditional_rule(rule, args, what, at)
+        type(rule_t), intent(in) :: rule
+        type(value_list_t), intent(in) :: args
+        character(len=:), allocatable, intent(out) :: what
+        integer, intent(out) :: at
+        logical :: here(size(rule%names))
+        integer :: i
+        character(len=:), allocatable :: first
+        what = ''
+        at = 0
+        do i = 1, size(rule%names)
+            here(i) = given(args, rule%names(i)%s)
+        end do
+        first = rule%names(1)%s
+        select case (rule%kind)
+        case (RULE_PRESENT_PRESENT)
+            if (.not. here(1)) return
+            do i = 2, size(rule%names)
+                if (here(i)) cycle
+                what = first // ' needs ' // rule%names(i)%s // ' (give it too)'
+                at = 1
+                return
+            end do
+        case (RULE_PRESENT_ABSENT)
+            if (.not. here(1)) return
+            do i = 2, size(rule%names)
+                if (.not. here(i)) cycle
+                what = first // ' and ' // rule%names(i)%s // ' exclude each other ' // &
+                    '(give only one)'
+                at = i
+                return
+            end do
+        case (RULE_ENSEMBLE)
+            if (all(here) .or. .not. any(here)) return
+            at = findloc(here, .true., dim=1)
+            what = 'keywords ' // join_names(rule) // ' go together: give all or none ' // &
+                '(missing ' // rule%names(findloc(here, .false., dim=1))%s // ')'
+        end select
+    end subroutine conditional_rule
+
+    ! 'A | B | C'
+    function join_names(rule) result(text)
+        type(rule_t), intent(in) :: rule
+        character(len=:), allocatable :: text
+        integer :: i
+        text = ''
+        do i = 1, size(rule%names)
+            if (i > 1) text = text // ' | '
+            text = text // rule%names(i)%s
+        end do
+    end function join_names
 
     !> Occurrences of factor keyword k: a _F, or a tuple/list of _F.
     subroutine build_factor(def, k, v, file, line, col, factor, st)
