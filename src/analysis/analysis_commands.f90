@@ -77,7 +77,7 @@ contains
             ' DIS_CHOC cell(s), ' // to_text(count(s%dis_contact)) // ' DIS_CONTACT cell(s), ' &
             // to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
         allocate (res)
-        call log_stream(log, ctx%mess%unit, '    ')   ! the .mess grows step by step
+        call log_stream(log, ctx%mess, '    ')   ! the .mess grows step by step
         call stat_non_line(s, excit, times, options, res, log, summary, st)
         call log_flush(log)
         if (st%failed()) return
@@ -130,7 +130,7 @@ contains
         if (st%ok()) call check_imposed(s, excit, times, st)
         if (st%failed()) return
         allocate (res)
-        call log_stream(log, ctx%mess%unit, '    ')
+        call log_stream(log, ctx%mess, '    ')
         call meca_statique(s, excit, times, options%factor, res, log, st, ctx%progress)
         call log_flush(log)
         if (st%failed()) return
