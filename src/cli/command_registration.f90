@@ -37,7 +37,7 @@ contains
         call ctx%register('TEST_RESU', run_test_resu)
         call ctx%register('IMPR_RESU', run_impr_resu)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
-        call ctx%register('DEFI_GROUP', run_defi_group)
+        call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
         call ctx%register('AFFE_MATERIAU', run_affe_materiau)

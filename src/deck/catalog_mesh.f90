@@ -7,8 +7,8 @@
 !> (X-FEM cracks, prestressing cables, volume cells, fields) are left out, so a deck naming
 !> one is told at its keyword.
 !>
-!> `reuse` is described here for DEFI_GROUP and MODI_MAILLAGE, which modify their mesh in
-!> place (Code_Aster's reentrant='o:MAILLAGE': the result is the MAILLAGE concept).
+!> DEFI_GROUP and MODI_MAILLAGE modify their mesh in place (Code_Aster's reentrant='o:...':
+!> the result is the MAILLAGE concept, reuse= naming it).
 module catalog_mesh
     use kinds, only: dp
     use deck_catalog, only: catalog_t, MANY, RULE_UN_PARMI, RULE_AU_MOINS_UN, RULE_EXCLUS, &
@@ -66,8 +66,7 @@ contains
     ! each occurrence seeing the groups of the earlier ones (op0104).
     subroutine describe_defi_group(c)
         type(catalog_t), intent(inout) :: c
-        call c%command('DEFI_GROUP', 'maillage')
-        call c%key('reuse', 'maillage')
+        call c%command('DEFI_GROUP', 'maillage', reentrant='o:MAILLAGE')
         call c%key('MAILLAGE', 'maillage', req=.true.)
         call c%rule(RULE_AU_MOINS_UN, 'CREA_GROUP_MA CREA_GROUP_NO DETR_GROUP_NO DETR_GROUP_MA')
         call c%fact('DETR_GROUP_MA', max=MANY)
@@ -236,8 +235,7 @@ contains
     ! (TRANSLATION, MODI_BASE, ROTATION, SYMETRIE, ECHELLE; op0154), then the orientations.
     subroutine describe_modi_maillage(c)
         type(catalog_t), intent(inout) :: c
-        call c%command('MODI_MAILLAGE', 'maillage')
-        call c%key('reuse', 'maillage')
+        call c%command('MODI_MAILLAGE', 'maillage', reentrant='o:MAILLAGE')
         call c%key('MAILLAGE', 'maillage', req=.true.)
         call c%rule(RULE_AU_MOINS_UN, 'ORIE_PEAU ORIE_NORM_COQUE TRANSLATION ROTATION ' // &
                     'MODI_BASE ECHELLE SYMETRIE ORIE_LIGNE')

@@ -9,6 +9,7 @@ module deck_catalog_data
     use catalog_session, only: describe_session
     use catalog_mesh, only: describe_mesh_commands
     use catalog_mesh_model, only: describe_mesh_and_model
+    use catalog_materials, only: describe_materials
     use catalog_cara_elem, only: describe_cara_elem
     use catalog_functions, only: describe_functions
     use catalog_loads, only: describe_loads
@@ -26,6 +27,7 @@ contains
         call describe_session(cat)
         call describe_mesh_commands(cat)
         call describe_mesh_and_model(cat)
+        call describe_materials(cat)
         call describe_cara_elem(cat)
         call describe_functions(cat)
         call describe_loads(cat)

@@ -77,37 +77,29 @@ contains
         target%mesh = work
     end subroutine run_defi_group
 
-    !> The mesh concept a reentrant mesh command modifies: MAILLAGE, which reuse= must name
-    !> too (Code_Aster: SOUSTRUC_15, MESH1_15; the command's result is its mesh).
+    !> The mesh concept a reentrant mesh command modifies: cmd%reuse, which validation has
+    !> checked is the MAILLAGE too (Code_Aster: SOUSTRUC_15, MESH1_15; the command's result is
+    !> its mesh, so reuse= is required).
     !>  target : out, pointer to the concept (owned by the run context)
-    !>  st     : out, at MAILLAGE: not a mesh, or no reuse=; at reuse: another concept
+    !>  st     : out, at MAILLAGE: no reuse=, or not a mesh
     subroutine mesh_in_place(cmd, target, st)
         type(command_t), intent(in) :: cmd
         type(mesh_concept_t), pointer, intent(out) :: target
         type(status_t), intent(out) :: st
-        class(concept_t), pointer :: p, q
         target => null()
-        call cmd%get_concept('MAILLAGE', p, st)
-        if (st%failed()) return
-        select type (p)
+        if (.not. associated(cmd%reuse)) then
+            call cmd%error_at('MAILLAGE', cmd%name // ' modifies its mesh in place: write ' // &
+                'MAIL = ' // cmd%name // '(reuse=MAIL, MAILLAGE=MAIL, ...)', st)
+            return
+        end if
+        select type (p => cmd%reuse)
         type is (mesh_concept_t)
             target => p
         class default
             call cmd%error_at('MAILLAGE', 'expected a mesh (maillage), got ' // p%type_name(), &
                               st)
-            return
         end select
-        if (.not. cmd%given('reuse')) then
-            call cmd%error_at('MAILLAGE', cmd%name // ' modifies its mesh in place: write ' // &
-                'MAIL = ' // cmd%name // '(reuse=MAIL, MAILLAGE=MAIL, ...)', st)
-            return
-        end if
-        call cmd%get_concept('reuse', q, st)
-        if (st%failed()) return
-        if (.not. associated(p, q)) call cmd%error_at('reuse', 'reuse= must name the ' // &
-            'MAILLAGE mesh (' // cmd%name // ' modifies it in place)', st)
     end subroutine mesh_in_place
-
     ! DETR_GROUP_MA / DETR_GROUP_NO: every NOM of every occurrence; names that are not groups
     ! are ignored, as in Code_Aster (detgnm).
     subroutine destroy_groups(ctx, cmd, key, mesh, cells)
