@@ -15,6 +15,7 @@ module command_registration
     use load_commands, only: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, &
         run_affe_char_cine_f
     use analysis_commands, only: run_stat_non_line, run_meca_statique
+    use time_stepping, only: run_defi_list_inst
     implicit none
     private
     public :: register_commands
@@ -46,6 +47,7 @@ contains
         call ctx%register('AFFE_CHAR_CINE_F', run_affe_char_cine_f)
         call ctx%register('MECA_STATIQUE', run_meca_statique)
         call ctx%register('STAT_NON_LINE', run_stat_non_line)
+        call ctx%register('DEFI_LIST_INST', run_defi_list_inst)
     end subroutine register_commands
 
 end module command_registration

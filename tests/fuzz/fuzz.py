@@ -170,6 +170,10 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # DEFI_LIST_INST and the cutting of a failed step.
+    seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
+                                    "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
