@@ -19,7 +19,7 @@ contains
 
     subroutine describe_materials(c)
         type(catalog_t), intent(inout) :: c
-        call c%command('DEFI_MATERIAU', 'mater')
+        call c%command('DEFI_MATERIAU', 'mater', reentrant='f:MATER')
         call c%key('MATER', 'mater')        ! reuse: the material completed (reentrant 'f')
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%key('COMP_THM', 'TXM', into='LIQU_SATU LIQU_GAZ GAZ LIQU_GAZ_ATM ' // &

@@ -1523,6 +1523,15 @@ contains
         end if
         cmd%source = statement_source(ctx)
         h = ctx%find_handler(cmd%name)
+        if (h > 0 .and. associated(cmd%reuse)) then
+            if (.not. ctx%handlers(h)%reuse) then
+                call cmd%error_at('reuse', cmd%name // '(reuse=...), which modifies ' // &
+                    concept_display_name(cmd%reuse) // ' in place, is not built yet in ' // &
+                    'parasol (leave reuse out and give the result a new name)', st, &
+                    STATUS_NOT_IMPLEMENTED)
+                return
+            end if
+        end if
         run_it = h > 0
         if (ctx%checking .and. h > 0) run_it = ctx%handlers(h)%at_check .and. &
             .not. holds_unknown(kwargs)
@@ -1545,7 +1554,7 @@ contains
                     return
                 end if
             end block
-        else if (len(cmd%result_type) > 0) then
+        else if (len(cmd%result_type) > 0 .and. .not. associated(cmd%reuse)) then
             allocate (placeholder_concept_t :: result)
             select type (result)
             type is (placeholder_concept_t)
@@ -1554,6 +1563,16 @@ contains
         end if
         ctx%ncommand = ctx%ncommand + 1
         if (cmd%name == 'FIN') ctx%finished = .true.
+        if (.not. allocated(result) .and. associated(cmd%reuse)) then
+            ! reuse=X: the command modified X in place; the result is X itself (as in
+            ! Code_Aster, where the command's result is the reused object)
+            v%kind = VK_CONCEPT
+            v%obj => cmd%reuse
+            v%s = cmd%reuse%type_name()
+            v%line = line; v%col = col
+            call ctx%write_mess('    -> ' // cmd%reuse%summary() // ', modified in place (reuse)')
+            return
+        end if
         if (.not. allocated(result)) then
             if (len(cmd%result_type) > 0) call set_error(st, STATUS_INTERNAL, cmd%name // &
                 ' produced no result', file=file, line=line, column=col)

@@ -28,10 +28,13 @@ module run_context
 
     !> A registered handler. at_check: side-effect free and cheap (function commands): it
     !> also runs in the check pass, so its own errors are found by `parasol --check`.
+    !> reuse: the handler handles reuse=CONCEPT (cmd%reuse; doc/architecture.md, "reuse");
+    !> without it a deck's reuse= is refused as not built yet.
     type, public :: handler_entry_t
         character(len=:), allocatable :: name
         procedure(command_handler), pointer, nopass :: run => null()
         logical :: at_check = .false.
+        logical :: reuse = .false.
     end type handler_entry_t
 
     !> A concept owned by the context; boxes never move, so pointers to obj stay valid.
@@ -234,11 +237,12 @@ contains
 
     !> Registers the handler of command `name` (replacing an earlier one).
     !>  at_check : optional, also run it in the check pass (side-effect-free commands)
-    subroutine ctx_register(self, name, handler, at_check)
+    !>  reuse : optional, the handler handles reuse=CONCEPT of a reentrant command
+    subroutine ctx_register(self, name, handler, at_check, reuse)
         class(run_context_t), intent(inout) :: self
         character(len=*), intent(in) :: name
         procedure(command_handler) :: handler
-        logical, intent(in), optional :: at_check
+        logical, intent(in), optional :: at_check, reuse
         type(handler_entry_t), allocatable :: bigger(:)
         integer :: k
         k = self%find_handler(name)
@@ -255,6 +259,8 @@ contains
         self%handlers(k)%run => handler
         self%handlers(k)%at_check = .false.
         if (present(at_check)) self%handlers(k)%at_check = at_check
+        self%handlers(k)%reuse = .false.
+        if (present(reuse)) self%handlers(k)%reuse = reuse
     end subroutine ctx_register
 
     !> Index of the handler of `name`, 0 if none.
