@@ -8,6 +8,7 @@ module command_registration
         run_defi_list_reel
     use test_resu_command, only: run_test_resu
     use impr_resu_command, only: run_impr_resu
+    use crea_champ_command, only: run_crea_champ
     use mesh_commands, only: run_lire_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
@@ -35,6 +36,7 @@ contains
         call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
         call ctx%register('TEST_RESU', run_test_resu)
         call ctx%register('IMPR_RESU', run_impr_resu)
+        call ctx%register('CREA_CHAMP', run_crea_champ)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)

@@ -14,6 +14,7 @@ module deck_catalog_data
     use catalog_loads, only: describe_loads
     use catalog_analyses, only: describe_analyses
     use catalog_results, only: describe_outputs
+    use catalog_fields, only: describe_fields
     implicit none
     private
     public :: build_catalog
@@ -31,6 +32,7 @@ contains
         call describe_loads(cat)
         call describe_analyses(cat)
         call describe_outputs(cat)
+        call describe_fields(cat)
     end subroutine build_catalog
 
 end module deck_catalog_data
