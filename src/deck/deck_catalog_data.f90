@@ -7,6 +7,7 @@
 module deck_catalog_data
     use deck_catalog, only: catalog_t
     use catalog_session, only: describe_session
+    use catalog_mesh, only: describe_mesh_commands
     use catalog_mesh_model, only: describe_mesh_and_model
     use catalog_materials, only: describe_materials
     use catalog_cara_elem, only: describe_cara_elem
@@ -25,6 +26,7 @@ contains
     subroutine build_catalog(cat)
         type(catalog_t), intent(out) :: cat
         call describe_session(cat)
+        call describe_mesh_commands(cat)
         call describe_mesh_and_model(cat)
         call describe_materials(cat)
         call describe_cara_elem(cat)
