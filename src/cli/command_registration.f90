@@ -8,6 +8,7 @@ module command_registration
         run_defi_list_reel
     use test_resu_command, only: run_test_resu
     use impr_resu_command, only: run_impr_resu
+    use crea_champ_command, only: run_crea_champ
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use model_commands, only: run_affe_modele
@@ -37,6 +38,7 @@ contains
         call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
         call ctx%register('TEST_RESU', run_test_resu)
         call ctx%register('IMPR_RESU', run_impr_resu)
+        call ctx%register('CREA_CHAMP', run_crea_champ)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('AFFE_MODELE', run_affe_modele)

@@ -16,6 +16,7 @@ module deck_catalog_data
     use catalog_analyses, only: describe_analyses
     use catalog_list_inst, only: describe_list_inst
     use catalog_results, only: describe_outputs
+    use catalog_fields, only: describe_fields
     implicit none
     private
     public :: build_catalog
@@ -35,6 +36,7 @@ contains
         call describe_analyses(cat)
         call describe_list_inst(cat)
         call describe_outputs(cat)
+        call describe_fields(cat)
     end subroutine build_catalog
 
 end module deck_catalog_data
