@@ -15,6 +15,10 @@ module command_registration
     use load_commands, only: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, &
         run_affe_char_cine_f
     use analysis_commands, only: run_stat_non_line, run_meca_statique
+    use crea_table_command, only: run_crea_table
+    use calc_table_command, only: run_calc_table
+    use test_table_command, only: run_test_table
+    use impr_table_command, only: run_impr_table
     implicit none
     private
     public :: register_commands
@@ -46,6 +50,11 @@ contains
         call ctx%register('AFFE_CHAR_CINE_F', run_affe_char_cine_f)
         call ctx%register('MECA_STATIQUE', run_meca_statique)
         call ctx%register('STAT_NON_LINE', run_stat_non_line)
+        ! tables (issue 20)
+        call ctx%register('CREA_TABLE', run_crea_table)
+        call ctx%register('CALC_TABLE', run_calc_table)
+        call ctx%register('TEST_TABLE', run_test_table)
+        call ctx%register('IMPR_TABLE', run_impr_table)
     end subroutine register_commands
 
 end module command_registration

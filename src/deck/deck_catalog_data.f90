@@ -13,6 +13,7 @@ module deck_catalog_data
     use catalog_loads, only: describe_loads
     use catalog_analyses, only: describe_analyses
     use catalog_results, only: describe_outputs
+    use catalog_tables, only: describe_tables
     implicit none
     private
     public :: build_catalog
@@ -29,6 +30,7 @@ contains
         call describe_loads(cat)
         call describe_analyses(cat)
         call describe_outputs(cat)
+        call describe_tables(cat)
     end subroutine build_catalog
 
 end module deck_catalog_data
