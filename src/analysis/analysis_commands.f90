@@ -29,7 +29,7 @@ module analysis_commands
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
-    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION
+    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION, result_set_structure
     use analysis_log, only: analysis_log_t, log_stream, log_flush
     implicit none
     private
@@ -77,7 +77,7 @@ contains
             ' DIS_CHOC cell(s), ' // to_text(count(s%dis_contact)) // ' DIS_CONTACT cell(s), ' &
             // to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
         allocate (res)
-        call log_stream(log, ctx%mess%unit, '    ')   ! the .mess grows step by step
+        call log_stream(log, ctx%mess, '    ')   ! the .mess grows step by step
         call stat_non_line(s, excit, times, options, res, log, summary, st)
         call log_flush(log)
         if (st%failed()) return
@@ -90,6 +90,7 @@ contains
             to_text(sum(summary%damped)) // ' correction(s) damped by the line search')
         call ctx%write_mess('    ' // solver_diagnostics_line(summary, options%factor%nprec, &
             options%factor%method))
+        call keep_structure(cmd, s, res)
         call move_alloc(res, result)
     end subroutine run_stat_non_line
 
@@ -129,12 +130,30 @@ contains
         if (st%ok()) call check_imposed(s, excit, times, st)
         if (st%failed()) return
         allocate (res)
-        call log_stream(log, ctx%mess%unit, '    ')
+        call log_stream(log, ctx%mess, '    ')
         call meca_statique(s, excit, times, options%factor, res, log, st, ctx%progress)
         call log_flush(log)
         if (st%failed()) return
+        call keep_structure(cmd, s, res)
         call move_alloc(res, result)
     end subroutine run_meca_statique
+
+    !> Gives the result the structure it was computed on (CALC_CHAMP computes on it) and the
+    !> name of its MODELE.
+    subroutine keep_structure(cmd, s, res)
+        type(command_t), intent(in) :: cmd
+        type(structure_t), intent(in) :: s
+        type(result_concept_t), intent(inout) :: res
+        class(concept_t), pointer :: p
+        type(status_t) :: st
+        character(len=:), allocatable :: name
+        name = ''
+        call cmd%get_concept('MODELE', p, st)
+        if (st%ok()) then
+            if (allocated(p%name)) name = p%name
+        end if
+        call result_set_structure(res, s%model, s%materials, s%cara, s%choc, name)
+    end subroutine keep_structure
 
     !> Refuses, before anything is allocated, an analysis whose records would take more
     !> than MAX_RECORD_BYTES: n_inst instants of 3 fields of n_eq equations and n_springs

@@ -14,8 +14,9 @@ module linear_static
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         internal_forces
     use assembly_loads, only: mark_imposed
-    use contact_newton, only: excitation_t, loads_at, factor_and_diagnose_linear, &
-        open_solver, log_numbering, solve_held, held_t
+    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_solver, only: factor_and_diagnose_linear, open_solver, log_numbering, &
+        solve_held, held_t
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
     use progress, only: progress_t, progress_note

@@ -13,7 +13,7 @@ module assembly_system
     use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
         is_discrete_2d, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, ELEM_DIS_T_POI1, &
         ELEM_2D_DIS_T_POI1, ELEM_D_PLAN_QUAD4, ELEMENT_NAMES
-    use model_material, only: material_field_t, material_t, material_of_cell
+    use model_material, only: material_field_t, material_t, material_of_cell, elastic_behaviour
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
         ORIENT_ANGL_NAUT
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
@@ -125,6 +125,14 @@ contains
                     what = 'no material (AFFE_MATERIAU)'
                 else if (.not. s%materials%materials(m)%has_elas) then
                     what = 'no ELAS in its material'
+                    law = elastic_behaviour(s%materials%materials(m))
+                    if (len(law) > 0) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c, &
+                            group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
+                            'material gives ' // law // ', which parasol''s element does ' // &
+                            'not build yet (it takes ELAS: E, NU)')
+                        return
+                    end if
                 end if
                 if (is_plate(kind) .and. .not. s%cara%has_coque(c)) &
                     what = 'no COQUE thickness (AFFE_CARA_ELEM)'

@@ -14,7 +14,7 @@ contains
 
     subroutine describe_analyses(c)
         type(catalog_t), intent(inout) :: c
-        call c%command('MECA_STATIQUE', 'evol_elas')
+        call c%command('MECA_STATIQUE', 'evol_elas', reentrant='f:RESULTAT')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('CHAM_MATER', 'cham_mater')
         call c%key('CARA_ELEM', 'cara_elem')
@@ -30,7 +30,7 @@ contains
         call c%key('OPTION', 'TXM', noop=.true.)
         call c%key('TITRE', 'TXM', max=MANY, noop=.true.)
 
-        call c%command('STAT_NON_LINE', 'evol_noli')
+        call c%command('STAT_NON_LINE', 'evol_noli', reentrant='f:RESULTAT')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('CHAM_MATER', 'cham_mater', req=.true.)
         call c%key('CARA_ELEM', 'cara_elem')

@@ -10,8 +10,11 @@ module deck_catalog
 
     !> "any number" for a maximum cardinality.
     integer, parameter, public :: MANY = huge(1)
-    !> Rule kinds between keywords of one scope (Code_Aster's EXCLUS, UN_PARMI, AU_MOINS_UN).
-    integer, parameter, public :: RULE_EXCLUS = 1, RULE_UN_PARMI = 2, RULE_AU_MOINS_UN = 3
+    !> Rule kinds between keywords of one scope (Code_Aster's EXCLUS, UN_PARMI, AU_MOINS_UN;
+    !> PRESENT_PRESENT: the first given needs all the others; PRESENT_ABSENT: the first given
+    !> forbids the others; ENSEMBLE: all or none).
+    integer, parameter, public :: RULE_EXCLUS = 1, RULE_UN_PARMI = 2, RULE_AU_MOINS_UN = 3, &
+        RULE_PRESENT_PRESENT = 4, RULE_PRESENT_ABSENT = 5, RULE_ENSEMBLE = 6
 
     !> One keyword. `types` is a '|'-separated list of: I, R, TXM, a concept type name
     !> (maillage, modele, ..., with FUNC meaning fonction|formule and RESU meaning
@@ -45,9 +48,14 @@ module deck_catalog
 
     !> One command: name, result concept type ('' = no result), keywords and rules.
     !> open_keywords: other keywords are accepted as-is (FORMULE binds deck objects so).
+    !> reentrant: Code_Aster's catalog attribute, 'n' (default: no `reuse`), or 'o'/'f'
+    !> optionally followed by ':' and the keywords that name the concept modified in place
+    !> ('o:MAILLAGE|GRILLE' for DEFI_GROUP, 'f:RESULTAT' for CALC_CHAMP): the command then
+    !> accepts reuse=CONCEPT (doc/architecture.md, "reuse").
     type, public :: cmd_def_t
         character(len=:), allocatable :: name
         character(len=:), allocatable :: result_type
+        character(len=:), allocatable :: reentrant
         logical :: open_keywords = .false.
         type(kw_def_t), allocatable :: kws(:)
         type(rule_t), allocatable :: rules(:)
@@ -103,10 +111,12 @@ contains
 
     !> Starts the description of a command.
     !>  name : command name;  result_type : concept type of its result ('' = none)
-    subroutine catalog_add_command(self, name, result_type, open_keywords)
+    !>  reentrant : Code_Aster's `reentrant` attribute (cmd_def_t), default 'n'
+    subroutine catalog_add_command(self, name, result_type, open_keywords, reentrant)
         class(catalog_t), intent(inout) :: self
         character(len=*), intent(in) :: name, result_type
         logical, intent(in), optional :: open_keywords
+        character(len=*), intent(in), optional :: reentrant
         type(cmd_def_t), allocatable :: bigger(:)
         if (.not. allocated(self%cmds)) allocate (self%cmds(32))
         if (self%ncmd == size(self%cmds)) then
@@ -118,6 +128,8 @@ contains
         self%cmds(self%ncmd)%name = name
         self%cmds(self%ncmd)%result_type = result_type
         if (present(open_keywords)) self%cmds(self%ncmd)%open_keywords = open_keywords
+        self%cmds(self%ncmd)%reentrant = 'n'
+        if (present(reentrant)) self%cmds(self%ncmd)%reentrant = reentrant
         allocate (self%cmds(self%ncmd)%kws(16), self%cmds(self%ncmd)%rules(4))
         self%factor = 0
     end subroutine catalog_add_command

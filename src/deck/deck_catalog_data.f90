@@ -8,6 +8,7 @@ module deck_catalog_data
     use deck_catalog, only: catalog_t
     use catalog_session, only: describe_session
     use catalog_mesh_model, only: describe_mesh_and_model
+    use catalog_materials, only: describe_materials
     use catalog_cara_elem, only: describe_cara_elem
     use catalog_functions, only: describe_functions
     use catalog_loads, only: describe_loads
@@ -25,6 +26,7 @@ contains
         type(catalog_t), intent(out) :: cat
         call describe_session(cat)
         call describe_mesh_and_model(cat)
+        call describe_materials(cat)
         call describe_cara_elem(cat)
         call describe_functions(cat)
         call describe_loads(cat)

@@ -7,8 +7,10 @@ module deck_validate
     use status, only: status_t, set_error, STATUS_DECK_ERROR
     use deck_value
     use deck_catalog, only: catalog_t, cmd_def_t, kw_def_t, find_keyword, split_words, MANY, &
-        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, &
+        RULE_ENSEMBLE, rule_t
     use deck_command, only: command_t, keyword_set_t, kw_value_t, factor_value_t
+    use deck_concept, only: concept_display_name
     use deck_suggest, only: did_you_mean
     use deck_math, only: same_real
     implicit none
@@ -43,6 +45,11 @@ contains
             call check_scope(def, 0, a, file, st)
             if (st%failed()) return
             do j = 1, size(a%keys)
+                if (a%keys(j)%s == 'reuse') then
+                    call check_reuse(def, a, j, file, cmd, st)
+                    if (st%failed()) return
+                    cycle
+                end if
                 k = find_keyword(def, 0, a%keys(j)%s)
                 if (k > 0) then
                     if (def%kws(k)%is_factor) then
@@ -59,8 +66,81 @@ contains
             call check_required(def, 0, a, file, line, col, st)
             if (st%failed()) return
             call fill_defaults(def, 0, cmd)
+            if (associated(cmd%reuse)) call check_reused_keywords(def, cmd, st)
         end associate
     end subroutine validate_command
+
+    !> reuse=CONCEPT (Code_Aster's catalog attribute `reentrant`, cmd_def_t): allowed when
+    !> the command modifies a concept in place ('o' or 'f'); the concept must be of the
+    !> command's result type. Sets cmd%reuse and keeps the keyword (cmd%has('reuse')).
+    subroutine check_reuse(def, args, j, file, cmd, st)
+        type(cmd_def_t), intent(in) :: def
+        type(value_list_t), intent(in) :: args
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: file
+        type(command_t), intent(inout) :: cmd
+        type(status_t), intent(inout) :: st
+        type(kw_value_t) :: item
+        associate (v => args%items(j))
+            if (index('of', def%reentrant(1:1)) == 0 .or. len(def%result_type) == 0) then
+                call fail('reuse is not allowed: ' // def%name // ' makes a new concept, it ' &
+                    // 'does not modify one in place (Code_Aster''s catalog: reentrant=''n'')')
+                return
+            end if
+            if (v%kind /= VK_CONCEPT .or. .not. associated(v%obj)) then
+                call fail('expected the concept to modify in place (a concept of type ' // &
+                    type_words(def%result_type) // '), got ' // describe(v)); return
+            end if
+            if (.not. type_accepts(def%result_type, v)) then
+                call fail('expected ' // type_words(def%result_type) // ' (what ' // &
+                    def%name // ' makes), got ' // describe(v)); return
+            end if
+            cmd%reuse => v%obj
+            item%name = 'reuse'
+            item%line = args%key_line(j); item%col = args%key_col(j)
+            item%value = v
+            call cmd%add(item)
+        end associate
+    contains
+        subroutine fail(message)
+            character(len=*), intent(in) :: message
+            call set_error(st, STATUS_DECK_ERROR, message, file=file, &
+                line=vline(args%items(j), args%key_line(j)), &
+                column=vcol(args%items(j), args%key_col(j)), command=def%name, keyword='reuse')
+        end subroutine fail
+    end subroutine check_reuse
+
+    !> The keywords Code_Aster's `reentrant` names after ':' ('o:MAILLAGE|GRILLE') give the
+    !> concept the command reads and modifies: when one is given, it must be the reused one
+    !> (DEFI_GROUP(reuse=MA, MAILLAGE=MA)), else the command would change one concept with
+    !> what it computed on another.
+    subroutine check_reused_keywords(def, cmd, st)
+        type(cmd_def_t), intent(in) :: def
+        type(command_t), intent(in) :: cmd
+        type(status_t), intent(inout) :: st
+        type(string_t), allocatable :: names(:)
+        type(value_t) :: v
+        character(len=:), allocatable :: spec
+        integer :: i, colon
+        colon = index(def%reentrant, ':')
+        if (colon == 0) return
+        spec = def%reentrant(colon + 1:)
+        do i = 1, len(spec)
+            if (spec(i:i) == '|') spec(i:i) = ' '
+        end do
+        call split_words(spec, names)
+        do i = 1, size(names)
+            if (.not. cmd%given(names(i)%s)) cycle
+            v = cmd%get_value(names(i)%s)
+            if (v%kind /= VK_CONCEPT) cycle
+            if (associated(v%obj, cmd%reuse)) cycle
+            call cmd%error_at('reuse', 'reuse names ' // concept_display_name(cmd%reuse) // &
+                ' but ' // names(i)%s // ' gives ' // concept_display_name(v%obj) // ': ' // &
+                def%name // ' modifies in place the concept it reads (write reuse=' // &
+                concept_display_name(v%obj) // ', or leave reuse out for a new concept)', st)
+            return
+        end do
+    end subroutine check_reused_keywords
 
     !> Unknown and repeated keywords of one scope (checked before the values).
     subroutine check_scope(def, parent, args, file, st)
@@ -72,6 +152,7 @@ contains
         integer :: j, i, k
         do j = 1, size(args%keys)
             k = find_keyword(def, parent, args%keys(j)%s)
+            if (parent == 0 .and. args%keys(j)%s == 'reuse') k = -1   ! check_reuse
             if (k == 0 .and. .not. (def%open_keywords .and. parent == 0)) then
                 call set_error(st, STATUS_DECK_ERROR, 'unknown keyword ' // args%keys(j)%s // &
                     did_you_mean(args%keys(j)%s, scope_names(def, parent)) // &
@@ -141,6 +222,8 @@ contains
                 if (count == 0) what = 'missing keyword: give exactly one of ' // names
             case (RULE_AU_MOINS_UN)
                 if (count == 0) what = 'missing keyword: give at least one of ' // names
+            case (RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, RULE_ENSEMBLE)
+                call conditional_rule(def%rules(r), args, what, last)
             end select
             if (len(what) == 0) cycle
             if (last > 0) then
@@ -155,6 +238,61 @@ contains
             return
         end do
     end subroutine check_rules
+
+    !> PRESENT_PRESENT (the first keyword given needs every other), PRESENT_ABSENT (the first
+    !> given forbids every other) and ENSEMBLE (all or none): the message, '' when the rule
+    !> holds, and the keyword to locate it at (index in the rule, 0 = the scope).
+    subroutine conditional_rule(rule, args, what, at)
+        type(rule_t), intent(in) :: rule
+        type(value_list_t), intent(in) :: args
+        character(len=:), allocatable, intent(out) :: what
+        integer, intent(out) :: at
+        logical :: here(size(rule%names))
+        integer :: i
+        character(len=:), allocatable :: first
+        what = ''
+        at = 0
+        do i = 1, size(rule%names)
+            here(i) = given(args, rule%names(i)%s)
+        end do
+        first = rule%names(1)%s
+        select case (rule%kind)
+        case (RULE_PRESENT_PRESENT)
+            if (.not. here(1)) return
+            do i = 2, size(rule%names)
+                if (here(i)) cycle
+                what = first // ' needs ' // rule%names(i)%s // ' (give it too)'
+                at = 1
+                return
+            end do
+        case (RULE_PRESENT_ABSENT)
+            if (.not. here(1)) return
+            do i = 2, size(rule%names)
+                if (.not. here(i)) cycle
+                what = first // ' and ' // rule%names(i)%s // ' exclude each other ' // &
+                    '(give only one)'
+                at = i
+                return
+            end do
+        case (RULE_ENSEMBLE)
+            if (all(here) .or. .not. any(here)) return
+            at = findloc(here, .true., dim=1)
+            what = 'keywords ' // join_names(rule) // ' go together: give all or none ' // &
+                '(missing ' // rule%names(findloc(here, .false., dim=1))%s // ')'
+        end select
+    end subroutine conditional_rule
+
+    ! 'A | B | C'
+    function join_names(rule) result(text)
+        type(rule_t), intent(in) :: rule
+        character(len=:), allocatable :: text
+        integer :: i
+        text = ''
+        do i = 1, size(rule%names)
+            if (i > 1) text = text // ' | '
+            text = text // rule%names(i)%s
+        end do
+    end function join_names
 
     !> Occurrences of factor keyword k: a _F, or a tuple/list of _F.
     subroutine build_factor(def, k, v, file, line, col, factor, st)
@@ -469,7 +607,7 @@ contains
             case ('FUNC')
                 out = out // ' fonction formule'
             case ('RESU')
-                out = out // ' evol_elas evol_noli'
+                out = out // ' evol_elas evol_noli evol_ther'
             case default
                 out = out // ' ' // words(i)%s
             end select

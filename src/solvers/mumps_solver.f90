@@ -44,7 +44,7 @@ module mumps_solver
     !> CNTL(5), the value null pivots are fixed to (Code_Aster's MUMPS driver).
     real(dp), parameter :: FIXATION = 1.0e20_dp
     !> Digits lost by a free (round-off) pivot, as the analyses classify them
-    !> (contact_newton FREE_PIVOT_DIGITS).
+    !> (analysis_solver FREE_PIVOT_DIGITS).
     real(dp), parameter :: FREE_DIGITS = 12.0_dp
 
     abstract interface

@@ -166,6 +166,10 @@ def make_seeds(parasol, work, wanted):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": os.path.join(verif, name + ".mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
+    seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
+                                    "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
