@@ -17,6 +17,7 @@ module command_registration
     use analysis_commands, only: run_stat_non_line, run_meca_statique
     use crea_table_command, only: run_crea_table
     use calc_table_command, only: run_calc_table
+    use lire_table_command, only: run_lire_table
     use test_table_command, only: run_test_table
     use impr_table_command, only: run_impr_table
     implicit none
@@ -53,6 +54,7 @@ contains
         ! tables (issue 20)
         call ctx%register('CREA_TABLE', run_crea_table)
         call ctx%register('CALC_TABLE', run_calc_table)
+        call ctx%register('LIRE_TABLE', run_lire_table)
         call ctx%register('TEST_TABLE', run_test_table)
         call ctx%register('IMPR_TABLE', run_impr_table)
     end subroutine register_commands

@@ -73,7 +73,12 @@ contains
         call c%key('PARA', 'TXM', min=2, max=2)
         call c%end_fact()
         call c%fact('RESU')
+        call c%key('CHAM_GD', 'cham_no_sdaster|cham_elem|carte_sdaster')
         call c%key('RESULTAT', 'RESU')
+        call c%rule(RULE_UN_PARMI, 'CHAM_GD RESULTAT')
+        ! the shells' characteristics place Code_Aster's Gauss-point coordinates across the
+        ! thickness; parasol writes no coordinates for Gauss points
+        call c%key('CARA_ELEM', 'cara_elem', noop=.true.)
         call c%key('INTITULE', 'TXM')
         call c%key('NOM_CHAM', 'TXM')
         call c%key('TOUT_ORDRE', 'TXM', into='OUI')
@@ -85,7 +90,8 @@ contains
         call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
         call c%key('TOUT_CMP', 'TXM', into='OUI')
         call c%key('NOM_CMP', 'TXM', max=MANY)
-        call c%rule(RULE_UN_PARMI, 'TOUT_CMP NOM_CMP')
+        call c%key('NOM_VARI', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT_CMP NOM_CMP NOM_VARI')
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)

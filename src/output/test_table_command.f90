@@ -7,7 +7,9 @@
 !>    rows left are reduced to one value;
 !>  - the value's type must be the column's: VALE_CALC for R, VALE_CALC_I for I,
 !>    VALE_CALC_K for K columns;
-!>  - the checks and their lines: test_value_check (listings.md's TEST_RESU layout).
+!>  - the checks and their lines are TEST_RESU's (test_resu_checks, listings.md): closest
+!>    VALE_CALC, VALE_ABS, ORDRE_GRANDEUR, the skip of a zero VALE_CALC; texts
+!>    (VALE_CALC_K) are equal or not.
 module test_table_command
     use kinds, only: dp, i4, i8
     use strings, only: string_t, to_text
@@ -20,11 +22,22 @@ module test_table_command
     use table_keywords, only: table_of_keyword, filter_rows_of_command, relocate_at, &
         column_values_text
     use table_reduce, only: reduce_reals, reduce_ints
-    use test_value_check, only: test_request_t, tested_value_t, read_test_request, &
-        test_check_lines, id_line_pair, write_test_block, TESTED_REAL, TESTED_INT, &
-        TESTED_TEXT, tested_kind_name
+    use test_resu_format, only: test_check_t, test_resu_header_line, TEST_RESU_NO_LEGEND
+    use test_resu_checks, only: read_checks, write_test_block, test_columns_t, add_column, &
+        listing_safe_text, compact_text
     implicit none
     private
+
+    !> Kinds of tested values.
+    integer, parameter :: TESTED_REAL = 1, TESTED_INT = 2, TESTED_TEXT = 3
+
+    !> The tested value.
+    type :: tested_value_t
+        integer :: kind = TESTED_REAL
+        real(dp) :: r = 0.0_dp
+        integer(i8) :: i = 0
+        character(len=:), allocatable :: k
+    end type tested_value_t
 
     public :: run_test_table
 
@@ -40,18 +53,24 @@ contains
         class(concept_t), allocatable, intent(out) :: result
         type(status_t), intent(out) :: st
         type(table_t), pointer :: t
-        type(test_request_t) :: req
         type(tested_value_t) :: value
+        type(test_check_t), allocatable :: checks(:)
+        type(test_columns_t) :: cols
         character(len=:), allocatable :: para, type_test
         integer, allocatable :: rows(:)
-        integer :: column, n_ok, n_nook
-        type(string_t) :: titles(3), values(3), id_lines(2)
-        type(string_t), allocatable :: lines(:)
+        integer :: column, kind
+        logical :: integers
         if (allocated(result)) deallocate (result)
         call table_of_keyword(cmd, 'TABLE', t, st)
-        if (st%ok()) call read_test_request(cmd, req, st)
         if (st%ok()) call cmd%get_text('NOM_PARA', para, st)
         if (st%failed()) return
+        kind = TESTED_REAL
+        if (cmd%has('VALE_CALC_I')) kind = TESTED_INT
+        if (cmd%has('VALE_CALC_K')) kind = TESTED_TEXT
+        if (kind /= TESTED_TEXT) then
+            call read_checks(cmd%keyword_set_t, checks, integers, st)
+            if (st%failed()) return
+        end if
         type_test = ''
         if (cmd%has('TYPE_TEST')) call cmd%get_text('TYPE_TEST', type_test, st)
         if (st%failed()) return
@@ -62,7 +81,7 @@ contains
             call relocate_at(cmd, 'NOM_PARA', st)
             return
         end if
-        call check_value_type(cmd, t, column, req%kind, st)
+        call check_value_type(cmd, t, column, kind, st)
         if (st%failed()) return
         if (len(type_test) > 0) then
             call reduce_column(cmd, t, column, rows, type_test, value, st)
@@ -70,22 +89,91 @@ contains
             call single_cell(cmd, t, column, rows, value, st)
         end if
         if (st%failed()) return
-        titles(1)%s = 'TABLE'
-        titles(2)%s = 'NOM_PARA'
-        titles(3)%s = 'TYPE_TEST'
-        values(1)%s = concept_display_name(t)
-        values(2)%s = para
-        values(3)%s = type_test
-        if (len(type_test) > 0) then
-            call id_line_pair(titles, values, id_lines)
-        else
-            call id_line_pair(titles(1:2), values(1:2), id_lines)
-        end if
-        n_ok = 0
-        n_nook = 0
-        call test_check_lines(req, value, lines, n_ok, n_nook)
-        call write_test_block(ctx, 'TEST_TABLE', id_lines, lines)
+        call add_column(cols, 'TABLE', concept_display_name(t))
+        call add_column(cols, 'NOM_PARA', para)
+        if (len(type_test) > 0) call add_column(cols, 'TYPE_TEST', type_test)
+        select case (kind)
+        case (TESTED_TEXT)
+            call test_texts(ctx, cmd, cols, value%k, st)
+        case (TESTED_INT)
+            call write_test_block(ctx, cols, checks, real(value%i, dp), 'TEST_TABLE')
+        case default
+            call write_test_block(ctx, cols, checks, value%r, 'TEST_TABLE')
+        end select
     end subroutine run_test_table
+
+    !> VALE_CALC_K (and VALE_REFE_K with REFERENCE): the cell's text equals one of them
+    !> (without surrounding blanks), as Code_Aster's tresu_str.
+    subroutine test_texts(ctx, cmd, cols, computed, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        type(test_columns_t), intent(in) :: cols
+        character(len=*), intent(in) :: computed
+        type(status_t), intent(inout) :: st
+        type(string_t), allocatable :: calc(:), refe(:), lines(:)
+        character(len=:), allocatable :: kind, legend, id
+        integer :: k
+        call cmd%get_texts('VALE_CALC_K', calc, st)
+        if (st%failed()) return
+        legend = ''
+        if (cmd%has('LEGENDE')) call cmd%get_text('LEGENDE', legend, st)
+        if (st%failed()) return
+        if (cmd%has('REFERENCE') .neqv. cmd%has('VALE_REFE_K')) then
+            call cmd%error_at(trim(merge('REFERENCE  ', 'VALE_REFE_K', cmd%has('REFERENCE'))), &
+                'REFERENCE and VALE_REFE_K go together (give both or neither)', st)
+            return
+        end if
+        allocate (lines(merge(5, 4, cmd%has('REFERENCE'))))
+        lines(1)%s = ' ---- ' // pad(17, cols%titles(1)%s) // pad(17, cols%titles(2)%s)
+        lines(2)%s = repeat(' ', 6) // pad(17, cols%values(1)%s) // cols%values(2)%s
+        lines(1)%s = trim(lines(1)%s)
+        lines(3)%s = test_resu_header_line()
+        lines(4)%s = text_line('NON_REGRESSION', '', calc, computed)
+        if (cmd%has('REFERENCE')) then
+            call cmd%get_text('REFERENCE', kind, st)
+            if (st%ok()) call cmd%get_texts('VALE_REFE_K', refe, st)
+            if (st%failed()) return
+            lines(5)%s = text_line(kind, legend, refe, computed)
+        end if
+        do k = 1, size(lines)
+            call ctx%write_resu(listing_safe_text(lines(k)%s))
+        end do
+        id = compact_text(lines(2)%s)
+        do k = 4, size(lines)
+            call ctx%count_test(lines(k)%s(1:4) == ' OK ')
+            call ctx%write_mess('    TEST_TABLE ' // id // ': ' // &
+                                listing_safe_text(compact_text(lines(k)%s)))
+        end do
+    end subroutine test_texts
+
+    !> One check line of texts.
+    function text_line(kind, legend, expected, computed) result(line)
+        character(len=*), intent(in) :: kind, legend, computed
+        type(string_t), intent(in) :: expected(:)
+        character(len=:), allocatable :: line, reference, shown_legend
+        logical :: ok
+        integer :: k
+        reference = trim(adjustl(expected(1)%s))
+        ok = .false.
+        do k = 1, size(expected)
+            if (trim(adjustl(expected(k)%s)) == trim(adjustl(computed))) then
+                ok = .true.
+                reference = trim(adjustl(expected(k)%s))
+            end if
+        end do
+        shown_legend = legend
+        if (len_trim(legend) == 0) shown_legend = TEST_RESU_NO_LEGEND
+        line = merge(' OK   ', 'NOOK  ', ok) // pad(17, kind) // pad(17, shown_legend) // &
+            pad(24, '''' // reference // '''') // &
+            pad(24, '''' // trim(adjustl(computed)) // '''') // pad(16, '-') // '-'
+    end function text_line
+
+    pure function pad(width, text) result(out)
+        integer, intent(in) :: width
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: out
+        out = text // repeat(' ', max(1, width - len(text)))
+    end function pad
 
     !> VALE_CALC goes with R columns, VALE_CALC_I with I, VALE_CALC_K with K.
     subroutine check_value_type(cmd, t, column, kind, st)
@@ -109,7 +197,8 @@ contains
         if (kind == TESTED_TEXT) key = 'VALE_CALC_K'
         call cmd%error_at(key, 'column ' // t%columns(column)%name // ' of table ' // &
             concept_display_name(t) // ' holds ' // table_kind_label(t%columns(column)) // &
-            ' values: test it with ' // tested_kind_name(wanted), st)
+            ' values: test it with ' // trim(merge('VALE_CALC_I', 'VALE_CALC  ', &
+            wanted == TESTED_INT)) // trim(merge('_K', '  ', wanted == TESTED_TEXT)), st)
     end subroutine check_value_type
 
     !> The one cell the filters leave.

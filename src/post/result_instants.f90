@@ -10,7 +10,7 @@ module result_instants
     use deck_concept, only: concept_t
     use deck_command, only: keyword_set_t
     use real_list, only: real_list_t
-    use analysis_result, only: result_concept_t
+    use result_fields, only: result_fields_t
     implicit none
     private
 
@@ -27,7 +27,7 @@ contains
     !>  st : located at NUME_ORDRE / INST / LIST_INST for a value not stored
     subroutine selected_instants(occ, res, indices, by_inst, st)
         class(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), intent(in) :: res
+        class(result_fields_t), intent(in) :: res
         integer, allocatable, intent(out) :: indices(:)
         logical, intent(out) :: by_inst
         type(status_t), intent(out) :: st
@@ -42,6 +42,7 @@ contains
         if (occ%has('NUME_ORDRE')) then
             call occ%get_ints('NUME_ORDRE', numbers, st)
             if (st%failed()) return
+            deallocate (indices)
             allocate (indices(size(numbers)))
             do k = 1, size(numbers)
                 found = findloc(res%nume_ordre(1:res%n_stored), numbers(k), dim=1)
@@ -115,7 +116,7 @@ contains
     end function instant_matches
 
     function stored_numbers(res) result(text)
-        type(result_concept_t), intent(in) :: res
+        class(result_fields_t), intent(in) :: res
         character(len=:), allocatable :: text
         integer :: k
         text = ''
@@ -128,7 +129,7 @@ contains
     end function stored_numbers
 
     function stored_instants(res) result(text)
-        type(result_concept_t), intent(in) :: res
+        class(result_fields_t), intent(in) :: res
         character(len=:), allocatable :: text
         integer :: k
         text = ''
