@@ -15,7 +15,7 @@ module test_table_command
     use strings, only: string_t, to_text
     use status, only: status_t, STATUS_MODEL_ERROR
     use deck_concept, only: concept_t, concept_display_name
-    use deck_command, only: command_t
+    use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
     use table_concept, only: table_t, table_require_column, table_kind_label, TABLE_INT, &
         TABLE_REAL, TABLE_TEXT
@@ -209,11 +209,11 @@ contains
         integer, intent(in) :: rows(:)
         type(tested_value_t), intent(out) :: value
         type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: where
-        where = 'TABLE'
-        if (cmd%count('FILTRE') > 0) where = 'FILTRE'
+        type(keyword_set_t) :: occ
         if (size(rows) /= 1) then
-            call cmd%error_at(where, to_text(int(size(rows), i4)) // ' rows of table ' // &
+            occ = cmd%keyword_set_t
+            if (cmd%count('FILTRE') > 0) occ = cmd%occurrence('FILTRE', cmd%count('FILTRE'))
+            call occ%error_at('', to_text(int(size(rows), i4)) // ' rows of table ' // &
                 concept_display_name(t) // ' pass the filters: TEST_TABLE tests one cell ' // &
                 '(add a FILTRE, or give TYPE_TEST); ' // t%columns(column)%name // &
                 ' in those rows: ' // column_values_text(t, column, rows), st, &

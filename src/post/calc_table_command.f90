@@ -28,12 +28,13 @@ module calc_table_command
     use deck_value, only: value_t
     use run_context, only: run_context_t
     use function_concept, only: function_concept_t
-    use table_concept, only: table_t, table_select_rows, table_select_columns, &
+    use table_concept, only: table_label, table_t, table_select_rows, table_select_columns, &
         table_require_column, table_find_column, table_rename_column, table_append_title, &
         table_default_title, table_replace_rows
     use table_sort, only: table_sorted_rows
     use table_filter, only: table_filter_t, apply_table_filter
-    use table_keywords, only: table_of_keyword, read_filter, relocate_at, read_mixed_values
+    use table_keywords, only: table_of_keyword, read_filter, relocate_at, read_mixed_values, &
+        filter_keyword
     use table_operations, only: table_combine, table_unique_rows, table_drop_empty_columns, &
         table_append_row, table_add_value_column, table_add_formula_column, &
         table_add_statistics, table_calculation
@@ -61,6 +62,7 @@ contains
         if (st%failed()) return
         allocate (t)
         t = table_select_rows(source, [(k, k=1, source%n_rows)])
+        t%name = concept_display_name(source)      ! messages name the table worked on
         deallocate (t%title)
         allocate (t%title(0))
         call table_append_title(t, table_default_title(source))
@@ -201,7 +203,7 @@ contains
             rows = [(k, k=1, t%n_rows)]
             call apply_table_filter(t, f, rows, st)
             if (st%failed()) then
-                call relocate_at(occ, 'NOM_PARA', st)
+                call relocate_at(occ, filter_keyword(occ, st%message), st)
                 return
             end if
             call table_replace_rows(t, rows)
@@ -219,7 +221,7 @@ contains
         case ('SUPPRIME')
             do k = 1, size(names)
                 if (table_find_column(t, names(k)%s) == 0) &
-                    call warn(ctx, occ, 'NOM_PARA', 'table ' // concept_display_name(t) // &
+                    call warn(ctx, occ, 'NOM_PARA', table_label(t) // &
                     ' has no column ' // names(k)%s // ': nothing to remove')
             end do
             columns = kept_columns(t, names)

@@ -146,7 +146,7 @@ contains
             if (st%failed()) return
             if (size(rows) /= n) then
                 call occ%error_at('NUME_LIGN', 'NUME_LIGN has ' // &
-                    to_text(int(size(rows), i4)) // ' row numbers but ' // key // ' has ' // &
+                    to_text(int(size(rows), i4)) // ' row number(s) but ' // key // ' has ' // &
                     to_text(int(n, i4)) // ' values (one row per value)', st)
                 return
             end if

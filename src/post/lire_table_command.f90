@@ -16,8 +16,10 @@
 !> they are an error). Every error names the file and line.
 module lire_table_command
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use, intrinsic :: ieee_exceptions, only: ieee_get_halting_mode, ieee_set_halting_mode, &
+        ieee_overflow
     use kinds, only: dp, i4, i8
-    use strings, only: string_t, to_text
+    use strings, only: string_t, to_text, to_lower
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_IO_ERROR
     use deck_concept, only: concept_t
     use deck_command, only: command_t
@@ -34,7 +36,7 @@ module lire_table_command
     private
 
     !> Kinds of a read value.
-    integer, parameter :: V_ABSENT = 0, V_INT = 1, V_REAL = 2, V_TEXT = 3
+    integer, parameter :: V_ABSENT = 0, V_INT = 1, V_REAL = 2, V_TEXT = 3, V_OVERFLOW = 4
 
     !> One read value.
     type :: cell_text_t
@@ -452,6 +454,13 @@ contains
         r = t%n_rows
         do k = 1, size(cells)
             if (cells(k)%kind == V_ABSENT) cycle
+            if (cells(k)%kind == V_OVERFLOW) then
+                call set_error(st, STATUS_MODEL_ERROR, 'column ' // t%columns(k)%name // &
+                    ': ' // cells(k)%k // ' is not a finite number within double ' // &
+                    'precision (about 1.8E+308): a table holds finite reals', &
+                    file=path, line=line)
+                return
+            end if
             if (cells(k)%kind == V_TEXT .and. t%columns(k)%kind /= TABLE_TEXT .and. &
                 .not. any(t%columns(k)%present(1:r))) call retype_text(t, k, len(cells(k)%k))
             if (cells(k)%kind == V_TEXT .and. t%columns(k)%kind == TABLE_TEXT .and. &
@@ -497,6 +506,12 @@ contains
         cell%kind = V_TEXT
         cell%k = text
         if (as_text) return
+        select case (to_lower(text))
+        case ('nan', '+nan', '-nan', 'inf', '+inf', '-inf', 'infinity', '+infinity', &
+              '-infinity')
+            cell%kind = V_OVERFLOW               ! Python reads them as floats: refused
+            return
+        end select
         if (is_integer_text(text)) then
             read (text, *, iostat=ios) cell%i
             if (ios == 0) then
@@ -508,10 +523,35 @@ contains
         if (index(number, ',') > 0 .and. index(number, '.') == 0) &
             number(index(number, ','):index(number, ',')) = '.'
         if (is_real_text(number)) then
-            read (number, *, iostat=ios) cell%r
-            if (ios == 0 .and. ieee_is_finite(cell%r)) cell%kind = V_REAL
+            call read_real(number, cell%r, ios)
+            if (ios == 0) then
+                cell%kind = V_REAL
+            else if (ios == 1) then
+                cell%kind = V_OVERFLOW          ! beyond double precision: an error
+            end if
         end if
     end subroutine parse_cell
+
+    !> Reads a real with the overflow trap off: a decimal beyond double precision is
+    !> reported (ios = 1), never a floating-point exception (values below the smallest
+    !> double read as 0, as Python's float()).
+    subroutine read_real(text, value, ios)
+        character(len=*), intent(in) :: text
+        real(dp), intent(out) :: value
+        integer, intent(out) :: ios
+        logical :: halting
+        call ieee_get_halting_mode(ieee_overflow, halting)
+        call ieee_set_halting_mode(ieee_overflow, .false.)
+        read (text, *, iostat=ios) value
+        call ieee_set_halting_mode(ieee_overflow, halting)
+        if (ios /= 0) then
+            ios = 2
+            value = 0.0_dp
+        else if (.not. ieee_is_finite(value)) then
+            ios = 1
+            value = 0.0_dp
+        end if
+    end subroutine read_real
 
     !> [+-]digits
     pure logical function is_integer_text(text)

@@ -15,7 +15,7 @@
 module table_concept
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, i4, i8
-    use strings, only: string_t, to_text, join_words
+    use strings, only: string_t, to_text, join_words, to_upper
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use deck_concept, only: concept_t, concept_display_name
     use deck_suggest, only: did_you_mean
@@ -64,7 +64,7 @@ module table_concept
         table_select_rows, table_select_columns, table_column_names, table_rename_column, &
         table_set_value_text, table_is_number, table_text_width_for, table_copy_cell, &
         table_append_title, table_remove_empty_rows, table_replace_rows, &
-        table_default_title
+        table_default_title, table_label
 
 contains
 
@@ -83,11 +83,26 @@ contains
         text = concept_display_name(self) // ' (' // TABLE_TYPE_NAME // ') with ' // &
             to_text(int(self%n_rows, i4)) // ' rows, columns'
         do c = 1, self%n_columns
-            text = text // ' ' // self%columns(c)%name // '(' // &
+            text = text // ' ' // shown_name(self%columns(c)%name) // '(' // &
                 table_kind_label(self%columns(c)) // ')'
         end do
         if (self%n_columns == 0) text = text // ' (none)'
     end function table_summary
+
+    !> A column name as the .mess shows it: quoted unless it is an identifier (a name read
+    !> from a file may be '1,5' or 'inf': quoted, it cannot pass for a number).
+    pure function shown_name(name) result(text)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: text
+        logical :: plain
+        plain = len(name) > 0
+        if (plain) plain = verify(name(1:1), 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz') &
+            == 0 .and. verify(name, 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz' // &
+            '0123456789_') == 0 .and. to_upper(name) /= 'INF' .and. to_upper(name) /= 'NAN' &
+            .and. to_upper(name) /= 'INFINITY'
+        text = name
+        if (.not. plain) text = '''' // name // ''''
+    end function shown_name
 
     !> The title of a table that has none, as Code_Aster's default title (titre.F90: 'ASTER
     !> <version> CONCEPT <name> CALCULE LE <date> A <time> DE TYPE TABLE_SDASTER') without
@@ -97,6 +112,16 @@ contains
         character(len=:), allocatable :: text
         text = 'CONCEPT ' // concept_display_name(t) // ' CALCULE DE TYPE TABLE_SDASTER'
     end function table_default_title
+
+    !> 'table NAME' in messages, 'the table' while it has no name (being built).
+    function table_label(t) result(text)
+        type(table_t), intent(in) :: t
+        character(len=:), allocatable :: text
+        text = 'the table'
+        if (allocated(t%name)) then
+            if (len(t%name) > 0) text = 'table ' // t%name
+        end if
+    end function table_label
 
     !> Empties a table (no columns, no rows, no title).
     subroutine table_init(t)
@@ -182,10 +207,10 @@ contains
         if (column > 0) return
         names = table_column_names(t)
         if (size(names) == 0) then
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' has no column ' // name // ' (it has no columns)')
         else
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' has no column ' // name // did_you_mean(name, names) // '; its columns: ' // &
                 join_words(names, ', '))
         end if
@@ -207,7 +232,7 @@ contains
         integer :: c
         column = 0
         if (table_find_column(t, name) > 0) then
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' already has a column ' // name // ' (column names must differ)')
             return
         end if
@@ -391,8 +416,8 @@ contains
         type(table_column_t), intent(in) :: col
         character(len=*), intent(in) :: what
         type(status_t), intent(inout) :: st
-        call set_error(st, STATUS_MODEL_ERROR, 'column ' // col%name // ' of table ' // &
-            concept_display_name(t) // ' holds values of type ' // table_kind_label(col) // &
+        call set_error(st, STATUS_MODEL_ERROR, 'column ' // col%name // ' of ' // &
+            table_label(t) // ' holds values of type ' // table_kind_label(col) // &
             ': ' // what // ' cannot go in it')
     end subroutine mixed_types
 
@@ -596,7 +621,7 @@ contains
         if (st%failed()) return
         if (old == new) return
         if (table_find_column(t, new) > 0) then
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' already has a column ' // new // ': ' // old // ' cannot take its name')
             return
         end if

@@ -21,7 +21,7 @@ module table_keywords
     integer, parameter :: LISTED_VALUES = 12
 
     public :: table_of_keyword, read_filter, filter_rows_of_command, relocate_at, &
-        column_values_text, read_mixed_values
+        column_values_text, read_mixed_values, filter_keyword
 
 contains
 

@@ -21,7 +21,7 @@ module table_operations
     use deck_concept, only: concept_display_name
     use deck_value, only: value_t, VK_INT, VK_REAL, VK_STR, VK_BOOL, kind_label, append_string
     use function_concept, only: function_concept_t, param_binding_t
-    use table_concept, only: table_t, table_column_t, table_find_column, &
+    use table_concept, only: table_label, table_t, table_column_t, table_find_column, &
         table_require_column, table_add_column, table_add_rows, table_set_int, &
         table_set_real, table_set_text, table_copy_cell, table_select_rows, &
         table_select_columns, table_replace_rows, table_text_width_for, TABLE_INT, &
@@ -400,7 +400,7 @@ contains
         integer :: c, r, kind, width, n, k
         if (t%n_rows == 0 .or. size(values) == 0) return
         if (table_find_column(t, name) > 0) then
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' already has a column ' // name)
             return
         end if
@@ -444,7 +444,7 @@ contains
         real(dp) :: y
         integer :: k, r, c
         if (table_find_column(t, name) > 0) then
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' already has a column ' // name // ' (OPER makes a new column)')
             return
         end if
@@ -513,7 +513,7 @@ contains
                                                     'NB_VIDE    ']
         integer :: c, cv, cn, k
         if (table_find_column(t, 'STAT_NOM') > 0 .or. table_find_column(t, 'STAT_VALE') > 0) then
-            call set_error(st, STATUS_MODEL_ERROR, 'table ' // concept_display_name(t) // &
+            call set_error(st, STATUS_MODEL_ERROR, table_label(t) // &
                 ' already has a column STAT_NOM or STAT_VALE')
             return
         end if
