@@ -28,7 +28,7 @@ module impr_table_command
     use table_sort, only: table_sorted_rows, compare_table_rows
     use table_filter, only: table_filter_t
     use table_keywords, only: table_of_keyword, filter_rows_of_command, read_filter, &
-        relocate_at
+        relocate_at, warn_at
     use table_listing, only: table_layout_t, default_table_layout, &
         table_text_lines
     use unit_text_output, only: write_unit_text
@@ -254,19 +254,15 @@ contains
         integer, allocatable, intent(out) :: columns(:)
         type(string_t), allocatable :: names(:)
         type(status_t) :: st
-        character(len=:), allocatable :: file
-        integer :: k, c, line, col
+        integer :: k, c
         allocate (columns(0))
         if (cmd%has('NOM_PARA')) then
             call cmd%get_texts('NOM_PARA', names, st)
             do k = 1, size(names)
                 c = table_find_column(t, names(k)%s)
                 if (c == 0) then
-                    call cmd%location('NOM_PARA', file, line, col)
-                    call ctx%write_warning(file // ':' // to_text(int(line, i4)) // ':' // &
-                        to_text(int(col, i4)) // ': warning: IMPR_TABLE/NOM_PARA: table ' // &
-                        concept_display_name(t) // ' has no column ' // names(k)%s // &
-                        ': it is not printed')
+                    call warn_at(ctx, cmd, 'NOM_PARA', 'table ' // concept_display_name(t) // &
+                        ' has no column ' // names(k)%s // ': it is not printed')
                     cycle
                 end if
                 if (any(columns == c)) cycle

@@ -34,7 +34,7 @@ module calc_table_command
     use table_sort, only: table_sorted_rows
     use table_filter, only: table_filter_t, apply_table_filter
     use table_keywords, only: table_of_keyword, read_filter, relocate_at, read_mixed_values, &
-        filter_keyword
+        filter_keyword, warn_at
     use table_operations, only: table_combine, table_unique_rows, table_drop_empty_columns, &
         table_append_row, table_add_value_column, table_add_formula_column, &
         table_add_statistics, table_calculation
@@ -221,7 +221,7 @@ contains
         case ('SUPPRIME')
             do k = 1, size(names)
                 if (table_find_column(t, names(k)%s) == 0) &
-                    call warn(ctx, occ, 'NOM_PARA', table_label(t) // &
+                    call warn_at(ctx, occ, 'NOM_PARA', table_label(t) // &
                     ' has no column ' // names(k)%s // ': nothing to remove')
             end do
             columns = kept_columns(t, names)
@@ -389,16 +389,5 @@ contains
         end do
     end function kept_columns
 
-    !> A located warning at `key` of `occ` (.mess and stderr).
-    subroutine warn(ctx, occ, key, message)
-        type(run_context_t), intent(inout) :: ctx
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: key, message
-        character(len=:), allocatable :: file
-        integer :: line, col
-        call occ%location(key, file, line, col)
-        call ctx%write_warning(file // ':' // to_text(int(line, i4)) // ':' // &
-            to_text(int(col, i4)) // ': warning: CALC_TABLE/ACTION/' // key // ': ' // message)
-    end subroutine warn
 
 end module calc_table_command

@@ -10,6 +10,7 @@ module table_keywords
     use deck_value, only: value_t, VK_INT, VK_REAL, VK_STR, VK_BOOL, VK_TUPLE, VK_LIST, &
         unpack_value, value_list_t, kind_label
     use deck_command, only: command_t, keyword_set_t
+    use run_context, only: run_context_t
     use table_concept, only: table_t, table_find_column, TABLE_TEXT, table_cell_text, &
         table_cell_real, TABLE_INT
     use table_filter, only: table_filter_t, apply_table_filter, describe_filter, &
@@ -21,7 +22,7 @@ module table_keywords
     integer, parameter :: LISTED_VALUES = 12
 
     public :: table_of_keyword, read_filter, filter_rows_of_command, relocate_at, &
-        column_values_text, read_mixed_values, filter_keyword
+        column_values_text, read_mixed_values, filter_keyword, warn_at
 
 contains
 
@@ -203,6 +204,23 @@ contains
             key = 'CRIT_COMP'
         end if
     end function filter_keyword
+
+    !> A located warning at `key` of `occ` (the .mess and stderr):
+    !> `deck.comm:L:C: warning: COMMAND/FACTOR/KEY: message`.
+    subroutine warn_at(ctx, occ, key, message)
+        type(run_context_t), intent(inout) :: ctx
+        class(keyword_set_t), intent(in) :: occ
+        character(len=*), intent(in) :: key, message
+        character(len=:), allocatable :: file, path
+        integer :: line, col
+        call occ%location(key, file, line, col)
+        path = occ%command
+        if (allocated(occ%scope)) then
+            if (len(occ%scope) > 0) path = path // '/' // occ%scope
+        end if
+        call ctx%write_warning(file // ':' // to_text(int(line, i4)) // ':' // &
+            to_text(int(col, i4)) // ': warning: ' // path // '/' // key // ': ' // message)
+    end subroutine warn_at
 
     !> Locates a failed status at `key` of `occ`, keeping its message.
     subroutine relocate_at(occ, key, st)

@@ -27,7 +27,7 @@ module table_operations
         table_select_columns, table_replace_rows, table_text_width_for, TABLE_INT, &
         TABLE_REAL, TABLE_TEXT, TABLE_DEFAULT_TEXT_WIDTH, table_kind_label, &
         table_is_number, MAX_TABLE_ROWS
-    use table_sort, only: compare_texts
+    use table_sort, only: compare_texts, stable_order
     use table_reduce, only: reduce_reals, reduce_ints
     implicit none
     private
@@ -103,39 +103,12 @@ contains
     subroutine sorted_key_order(keys, order)
         type(string_t), intent(in) :: keys(:)
         integer, allocatable, intent(out) :: order(:)
-        integer, allocatable :: work(:)
-        integer :: n, width, lo, mid, hi, i, j, k
-        n = size(keys)
-        order = [(i, i=1, n)]
-        allocate (work(n))
-        width = 1
-        do while (width < n)
-            lo = 1
-            do while (lo <= n)
-                mid = min(lo + width - 1, n)
-                hi = min(lo + 2 * width - 1, n)
-                if (mid < hi) then
-                    i = lo; j = mid + 1; k = lo
-                    do while (i <= mid .and. j <= hi)
-                        if (compare_texts(keys(order(j))%s, keys(order(i))%s) < 0) then
-                            work(k) = order(j); j = j + 1
-                        else
-                            work(k) = order(i); i = i + 1
-                        end if
-                        k = k + 1
-                    end do
-                    do while (i <= mid)
-                        work(k) = order(i); i = i + 1; k = k + 1
-                    end do
-                    do while (j <= hi)
-                        work(k) = order(j); j = j + 1; k = k + 1
-                    end do
-                    order(lo:hi) = work(lo:hi)
-                end if
-                lo = lo + 2 * width
-            end do
-            width = 2 * width
-        end do
+        call stable_order(size(keys), by_key, order)
+    contains
+        integer function by_key(a, b)
+            integer, intent(in) :: a, b
+            by_key = compare_texts(keys(a)%s, keys(b)%s)
+        end function by_key
     end subroutine sorted_key_order
 
     !> Whether each row's key is held by that row only; a row with an absent key cell

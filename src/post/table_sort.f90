@@ -10,7 +10,7 @@ module table_sort
     implicit none
     private
 
-    public :: table_sorted_rows, compare_table_rows, compare_texts
+    public :: table_sorted_rows, compare_table_rows, compare_texts, stable_order
 
 contains
 
@@ -23,45 +23,58 @@ contains
         integer, intent(in) :: keys(:)
         logical, intent(in) :: descending
         integer, allocatable, intent(out) :: order(:)
+        call stable_order(t%n_rows, by_keys, order)
+    contains
+        integer function by_keys(a, b)
+            integer, intent(in) :: a, b
+            by_keys = compare_table_rows(t, keys, a, b)
+            if (descending) by_keys = -by_keys
+        end function by_keys
+    end subroutine table_sorted_rows
+
+    !> The permutation of 1..n that sorts items by `compare` (-1, 0, 1 as item a sorts
+    !> before, with or after item b): a bottom-up merge sort, stable, O(n log n).
+    subroutine stable_order(n, compare, order)
+        integer, intent(in) :: n
+        interface
+            integer function compare(a, b)
+                integer, intent(in) :: a, b
+            end function compare
+        end interface
+        integer, allocatable, intent(out) :: order(:)
         integer, allocatable :: work(:)
-        integer :: r, width, lo, mid, hi
-        allocate (order(t%n_rows), work(t%n_rows))
-        order = [(r, r=1, t%n_rows)]
+        integer :: width, lo, mid, hi, i, j, k
+        allocate (order(n), work(n))
+        order = [(i, i=1, n)]
         width = 1
-        do while (width < t%n_rows)          ! bottom-up merge sort: stable, n log n
+        do while (width < n)
             lo = 1
-            do while (lo <= t%n_rows)
-                mid = min(lo + width - 1, t%n_rows)
-                hi = min(lo + 2 * width - 1, t%n_rows)
-                if (mid < hi) call merge_runs(lo, mid, hi)
+            do while (lo <= n)
+                mid = min(lo + width - 1, n)
+                hi = min(lo + 2 * width - 1, n)
+                if (mid < hi) then
+                    i = lo; j = mid + 1; k = lo
+                    do while (i <= mid .and. j <= hi)
+                        if (compare(order(j), order(i)) < 0) then  ! strictly before: right
+                            work(k) = order(j); j = j + 1
+                        else
+                            work(k) = order(i); i = i + 1
+                        end if
+                        k = k + 1
+                    end do
+                    do while (i <= mid)
+                        work(k) = order(i); i = i + 1; k = k + 1
+                    end do
+                    do while (j <= hi)
+                        work(k) = order(j); j = j + 1; k = k + 1
+                    end do
+                    order(lo:hi) = work(lo:hi)
+                end if
                 lo = lo + 2 * width
             end do
             width = 2 * width
         end do
-    contains
-        subroutine merge_runs(first, middle, last)
-            integer, intent(in) :: first, middle, last
-            integer :: i, j, k, c
-            i = first; j = middle + 1; k = first
-            do while (i <= middle .and. j <= last)
-                c = compare_table_rows(t, keys, order(j), order(i))
-                if (descending) c = -c
-                if (c < 0) then            ! strictly before: take from the right run
-                    work(k) = order(j); j = j + 1
-                else
-                    work(k) = order(i); i = i + 1
-                end if
-                k = k + 1
-            end do
-            do while (i <= middle)
-                work(k) = order(i); i = i + 1; k = k + 1
-            end do
-            do while (j <= last)
-                work(k) = order(j); j = j + 1; k = k + 1
-            end do
-            order(first:last) = work(first:last)
-        end subroutine merge_runs
-    end subroutine table_sorted_rows
+    end subroutine stable_order
 
     !> -1, 0 or 1 as row `a` sorts before, with or after row `b` on the key columns.
     pure integer function compare_table_rows(t, keys, a, b) result(c)
