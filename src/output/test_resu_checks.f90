@@ -375,6 +375,15 @@ contains
                 ' to test', st, STATUS_MODEL_ERROR)
             return
         end if
+        if (kind == 'SOMM' .or. kind == 'SOMM_ABS') then
+            ! a sum of n terms below 2**e stays below n 2**e: refuse what could overflow
+            if (exponent(maxval(abs(values))) + exponent(real(size(values), dp)) > &
+                maxexponent(1.0_dp) - 2) then
+                call occ%error_at('TYPE_TEST', 'the sum of the field''s values is beyond ' // &
+                    'double precision', st, STATUS_MODEL_ERROR)
+                return
+            end if
+        end if
         select case (kind)
         case ('MIN')
             value = minval(values)

@@ -166,10 +166,19 @@ def make_seeds(parasol, work, wanted):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": os.path.join(verif, name + ".mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # Fields: CREA_CHAMP (AFFE, EXTR, ASSE, COMB, EVAL) and TEST_RESU on field concepts.
+    fields = os.path.join(SOURCE, "tests", "fields")
+    seeds.append(Seed("fields", {"case.comm": os.path.join(fields, "crea_champ.comm"),
+                                 "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.8))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # DEFI_LIST_INST and the cutting of a failed step.
+    seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
+                                    "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # Tables (issue 20): every table command on lists; LIRE_TABLE on mutated table files.
     tables = os.path.join(SOURCE, "tests", "tables")
     seeds.append(Seed("tables", {"case.comm": os.path.join(tables, "table_commands.comm")},
