@@ -18,6 +18,11 @@ module command_registration
         run_affe_char_cine_f
     use analysis_commands, only: run_stat_non_line, run_meca_statique
     use time_stepping, only: run_defi_list_inst
+    use crea_table_command, only: run_crea_table
+    use calc_table_command, only: run_calc_table
+    use lire_table_command, only: run_lire_table
+    use test_table_command, only: run_test_table
+    use impr_table_command, only: run_impr_table
     implicit none
     private
     public :: register_commands
@@ -52,6 +57,12 @@ contains
         call ctx%register('MECA_STATIQUE', run_meca_statique)
         call ctx%register('STAT_NON_LINE', run_stat_non_line)
         call ctx%register('DEFI_LIST_INST', run_defi_list_inst)
+        ! tables (issue 20)
+        call ctx%register('CREA_TABLE', run_crea_table)
+        call ctx%register('CALC_TABLE', run_calc_table)
+        call ctx%register('LIRE_TABLE', run_lire_table)
+        call ctx%register('TEST_TABLE', run_test_table)
+        call ctx%register('IMPR_TABLE', run_impr_table)
     end subroutine register_commands
 
 end module command_registration
