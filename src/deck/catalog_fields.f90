@@ -4,6 +4,7 @@
 !> mirroring Code_Aster's (code_aster/Cata/Commands/<command>.py and its U4 documents),
 !> allowed values and rules, as data.
 module catalog_fields
+    use kinds, only: dp
     implicit none
     private
 
@@ -35,15 +36,108 @@ module catalog_fields
         'MODE_FLAMB MODE_STAB NEUT PRES PRES_NOEU PTOT RESI_NOEU RESI_RELA_NOEU SISE_ELNO ' // &
         'VITE_VENT'
 
-    public :: describe_fields
+    !> The physical quantities of TYPE_CHAM (the fields layer's FIELD_QUANTITY_NAMES;
+    !> test_catalog_fields checks that the two lists agree).
+    character(len=*), parameter, public :: TYPE_CHAM_QUANTITIES = 'DEPL_R DEPL_F SIEF_R ' // &
+        'EPSI_R TEMP_R TEMP_F NEUT_R NEUT_F GEOM_R ENER_R VARI_R HYDR_R ERRE_R SING_R ' // &
+        'FER2_R FORC_R FORC_F PRES_R PRES_F'
+    !> The locations of TYPE_CHAM (Code_Aster's C_TYPE_CHAM_INTO: <location>_<quantity>).
+    character(len=*), parameter, public :: TYPE_CHAM_LOCATIONS = 'NOEU ELGA ELNO ELEM CART'
+
+    public :: describe_fields, type_cham_names
 
 contains
 
-    !> The field commands (filled in as they are built).
+    !> Every TYPE_CHAM parasol makes: each location with each quantity.
+    function type_cham_names() result(text)
+        use deck_catalog, only: split_words
+        use strings, only: string_t
+        character(len=:), allocatable :: text
+        type(string_t), allocatable :: locations(:), quantities(:)
+        integer :: i, j
+        call split_words(TYPE_CHAM_LOCATIONS, locations)
+        call split_words(TYPE_CHAM_QUANTITIES, quantities)
+        text = ''
+        do i = 1, size(locations)
+            do j = 1, size(quantities)
+                text = text // ' ' // locations(i)%s // '_' // quantities(j)%s
+            end do
+        end do
+    end function type_cham_names
+
+    !> CREA_CHAMP (code_aster/Cata/Commands/crea_champ.py, U4.72.04): its blocks by
+    !> OPERATION are flattened here (the catalog has no conditional blocks); what belongs to
+    !> which operation is checked by the handler (post/crea_champ_command), located.
     subroutine describe_fields(c)
-        use deck_catalog, only: catalog_t
+        use deck_catalog, only: catalog_t, MANY, RULE_UN_PARMI, RULE_EXCLUS, &
+            RULE_AU_MOINS_UN, RULE_PRESENT_PRESENT
+        use catalog_common, only: OUI_NON
         type(catalog_t), intent(inout) :: c
-        if (.false.) c%ncmd = c%ncmd
+        call c%command('CREA_CHAMP', '@TYPE_CHAM', reentrant='f:CHAM_GD')
+        call c%key('TYPE_CHAM', 'TXM', req=.true., into=type_cham_names())
+        call c%key('OPERATION', 'TXM', req=.true., into='AFFE ASSE ASSE_DEPL EVAL EXTR ' // &
+            'DISC NORMALE R2C C2R COMB')
+        call c%key('NUME_DDL', 'nume_ddl_sdaster', noop=.true.)
+        call c%key('CHAM_NO', 'cham_no_sdaster', noop=.true.)
+        call c%rule(RULE_EXCLUS, 'NUME_DDL CHAM_NO')
+        call c%key('PROL_ZERO', 'TXM', def='NON', into=OUI_NON)
+        call c%key('OPTION', 'TXM', noop=.true.)
+        call c%fact('AFFE_SP', noop=.true.)
+        call c%key('CARA_ELEM', 'cara_elem', req=.true.)
+        call c%end_fact()
+        call c%key('MAILLAGE', 'maillage')
+        call c%key('MODELE', 'modele')
+        call c%rule(RULE_EXCLUS, 'MAILLAGE MODELE')
+        call c%key('GROUP_MA', 'TXM', max=MANY)                 ! OPERATION='NORMALE'
+        call c%fact('AFFE', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('NOEUD', 'TXM', max=MANY)
+        call c%key('MAILLE', 'TXM', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_MA GROUP_NO NOEUD MAILLE')
+        call c%key('NOM_CMP', 'TXM', max=MANY, req=.true.)
+        call c%key('VALE', 'R', max=MANY)
+        call c%key('VALE_I', 'I', max=MANY)
+        call c%key('VALE_F', 'FUNC', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'VALE VALE_I VALE_F')
+        call c%end_fact()
+        call c%fact('ASSE', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_MA GROUP_NO')
+        call c%key('CHAM_GD', 'CHAM_GD', req=.true.)
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%key('NOM_CMP_RESU', 'TXM', max=MANY)
+        call c%rule(RULE_PRESENT_PRESENT, 'NOM_CMP_RESU NOM_CMP')
+        call c%key('CUMUL', 'TXM', def='NON', into=OUI_NON)
+        call c%key('COEF_R', 'R', def='1.0')
+        call c%end_fact()
+        call c%fact('COMB', max=MANY)
+        call c%key('CHAM_GD', 'cham_no_sdaster', req=.true.)
+        call c%key('COEF_R', 'R', req=.true.)
+        call c%end_fact()
+        call c%key('CHAM_F', 'CHAM_GD')
+        call c%key('CHAM_PARA', 'CHAM_GD', max=MANY)
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('PARTIE', 'TXM', into='REEL IMAG MODULE PHASE')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%key('CHARGE', 'char_meca')
+        call c%key('NOM_CHAM', 'TXM', into=NOM_CHAM_NAMES // ' GEOMETRIE ABSC_CURV')
+        call c%key('TYPE_MAXI', 'TXM', into='MAXI MINI MAXI_ABS MINI_ABS NORM_TRAN')
+        call c%key('TYPE_RESU', 'TXM', into='VALE INST VALE_ABS NUME_ORDRE')
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('LIST_INST', 'listr8')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%rule(RULE_EXCLUS, 'NUME_ORDRE INST TOUT_ORDRE LIST_INST')
+        call c%key('INTERPOL', 'TXM', def='NON', into='NON LIN')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('TITRE', 'TXM', noop=.true.)
     end subroutine describe_fields
 
 end module catalog_fields

@@ -73,8 +73,44 @@ contains
             if (st%failed()) return
             call fill_defaults(def, 0, active, cmd)
             if (associated(cmd%reuse)) call check_reused_keywords(def, cmd, st)
+            cmd%result_type = call_result_type(def%result_type, cmd)
         end associate
     end subroutine validate_command
+
+    !> The result type of one call. A catalog result type that depends on the call (Code_Aster's
+    !> sd_prod functions) is written '@KEY': '@TYPE_CHAM' (CREA_CHAMP: NOEU_* cham_no_sdaster,
+    !> CART_* carte_sdaster, EL*_* cham_elem), '@TYPE_RESU' (CREA_RESU: the lower-case
+    !> TYPE_RESU), '@RESULTAT' (CALC_CHAMP, POST_CHAMP: the type of the RESULTAT concept).
+    function call_result_type(declared, cmd) result(type_name)
+        character(len=*), intent(in) :: declared
+        type(command_t), intent(in) :: cmd
+        character(len=:), allocatable :: type_name
+        type(value_t) :: v
+        character(len=:), allocatable :: text
+        integer :: i
+        type_name = declared
+        if (len(declared) < 2) return
+        if (declared(1:1) /= '@') return
+        v = cmd%get_value(declared(2:))
+        select case (declared)
+        case ('@TYPE_CHAM')
+            if (v%kind /= VK_STR) return
+            text = v%s
+            if (len(text) < 4) return
+            type_name = 'cham_elem'
+            if (text(1:4) == 'NOEU') type_name = 'cham_no_sdaster'
+            if (text(1:4) == 'CART') type_name = 'carte_sdaster'
+        case ('@TYPE_RESU')
+            if (v%kind /= VK_STR) return
+            type_name = v%s
+            do i = 1, len(type_name)
+                if (type_name(i:i) >= 'A' .and. type_name(i:i) <= 'Z') type_name(i:i) = &
+                    achar(iachar(type_name(i:i)) + 32)
+            end do
+        case ('@RESULTAT')
+            if (v%kind == VK_CONCEPT) type_name = v%s
+        end select
+    end function call_result_type
 
     !> Which conditional blocks of scope `parent` are active for the keywords `args` written
     !> there (blocks of other scopes: false). A block is active when its enclosing block is
@@ -739,8 +775,10 @@ contains
             select case (words(i)%s)
             case ('FUNC')
                 out = out // ' fonction formule'
-            case ('RESU')
+            case ('RESU', '@TYPE_RESU', '@RESULTAT')
                 out = out // ' evol_elas evol_noli evol_ther'
+            case ('CHAM_GD', '@TYPE_CHAM')   ! Code_Aster's cham_gd_sdaster: any field
+                out = out // ' cham_no_sdaster cham_elem carte_sdaster'
             case default
                 out = out // ' ' // words(i)%s
             end select

@@ -20,8 +20,7 @@ module test_resu_command
     use run_context, only: run_context_t
     use mesh_types, only: mesh_t, find_node_group, find_cell_group, nodes_of_group, &
         cells_of_group, n_node_groups, n_cell_groups
-    use mesh_concept, only: mesh_concept_t
-    use model_concept, only: model_concept_t
+    use field_support, only: mesh_of_support
     use field_types, only: field_t
     use field_concept, only: field_concept_t
     use result_fields, only: result_fields_t, result_find, RESULT_INST_PRECISION
@@ -35,8 +34,7 @@ module test_resu_command
     private
 
     public :: run_test_resu, test_resu_value, test_resu_single_node, listing_safe_text, &
-        compact_text, result_of_keyword, result_index_of, relocate, test_resu_single_cell, &
-        mesh_of_support
+        compact_text, result_of_keyword, result_index_of, relocate, test_resu_single_cell
 
 contains
 
@@ -259,30 +257,6 @@ contains
         if (.not. integers) checks(:)%integers = .true.
         call write_test_block(ctx, cols, checks, real(count_value, dp))
     end subroutine test_mesh_occurrence
-
-    !> The mesh a field or a command refers to: a maillage's mesh or a modele's copy.
-    !>  st : STATUS_MODEL_ERROR when the concept is neither
-    subroutine mesh_of_support(support, mesh, st)
-        class(concept_t), pointer, intent(in) :: support
-        type(mesh_t), pointer, intent(out) :: mesh
-        type(status_t), intent(out) :: st
-        mesh => null()
-        if (.not. associated(support)) then
-            call set_error(st, STATUS_MODEL_ERROR, 'the field knows no mesh')
-            return
-        end if
-        select type (support)
-        type is (mesh_concept_t)
-            mesh => support%mesh
-        type is (model_concept_t)
-            mesh => support%mesh
-        type is (result_concept_t)
-            mesh => support%mesh
-        class default
-            call set_error(st, STATUS_MODEL_ERROR, 'expected a mesh (maillage) or a ' // &
-                'model (modele), got ' // support%type_name())
-        end select
-    end subroutine mesh_of_support
 
     !> The result concept given at `key` of `occ`.
     !>  res : out, points to the concept (owned by the run context)

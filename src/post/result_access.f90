@@ -59,7 +59,7 @@ contains
         if (k == 0) then
             select type (res)
             type is (result_concept_t)
-                if (res%has_state .and. index(' ' // STATE_FIELDS // ' ', ' ' // &
+                if (res%has_state .and. index(' ' // state_fields_of(res) // ' ', ' ' // &
                     field_name // ' ') > 0) then
                     call field_from_state(res, at, field_name, made, st)
                     if (st%failed()) return
@@ -78,6 +78,15 @@ contains
         f => res%stored(at)%items(k)%field
     end subroutine result_field_at
 
+    !> The STATE_FIELDS a result can make: VARI_ELGA only for STAT_NON_LINE (evol_noli),
+    !> whose behaviours have internal variables.
+    function state_fields_of(res) result(names)
+        type(result_concept_t), intent(in) :: res
+        character(len=:), allocatable :: names
+        names = 'DEPL FORC_NODA REAC_NODA SIEF_ELGA'
+        if (res%type_name() == 'evol_noli') names = names // ' VARI_ELGA'
+    end function state_fields_of
+
     !> What a result holds at an instant, for messages.
     function available_text(res, at) result(text)
         class(result_fields_t), intent(in) :: res
@@ -90,7 +99,7 @@ contains
         all = ''
         select type (res)
         type is (result_concept_t)
-            if (res%has_state) all = STATE_FIELDS
+            if (res%has_state) all = state_fields_of(res)
         end select
         do k = 1, size(names)
             if (index(' ' // all // ' ', ' ' // names(k)%s // ' ') > 0) cycle
