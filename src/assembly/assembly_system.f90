@@ -100,7 +100,7 @@ module assembly_system
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
-        spring_lines, linear_product
+        spring_lines, linear_product, cell_response
 
 contains
 
