@@ -5,7 +5,7 @@
 !> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
 module analysis_commands
     use kinds, only: dp, i4, i8
-    use status, only: status_t, clear_status, STATUS_MODEL_ERROR
+    use status, only: status_t, clear_status, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
@@ -20,6 +20,7 @@ module analysis_commands
     use load_commands, only: char_meca_concept_t
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
+    use time_stepping, only: list_inst_concept_t, step_cutting_t, step_cutting_for
     use assembly_system, only: structure_t, structure_check
     use assembly_loads, only: check_imposed_owners, record_imposed
     use model_loads, only: load_item_where
@@ -59,13 +60,15 @@ contains
         type(result_concept_t), allocatable :: res
         type(analysis_log_t) :: log
         type(newton_summary_t) :: summary
+        type(step_cutting_t) :: cutting
         real(dp), allocatable :: times(:)
         call gather_structure(cmd, s, st)
         if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_behaviour(cmd, s, st)
-        if (st%ok()) call read_increment(cmd, times, st)
+        if (st%ok()) call read_increment(cmd, times, cutting, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
+        options%cutting = cutting
         options%deadline = ctx%deadline            ! polled between Newton iterations
         options%progress => ctx%progress           ! a line per step, work under way
         call structure_check(s, st)
@@ -373,11 +376,16 @@ contains
         end do
     end subroutine read_behaviour
 
-    !> INCREMENT: LIST_INST restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices
+    !> INCREMENT: LIST_INST (a DEFI_LIST_REEL, or a DEFI_LIST_INST with what a failed step
+    !> does: time_stepping) restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices
     !> from 0). times(1) is the initial instant.
-    subroutine read_increment(cmd, times, st)
+    !>  cutting : out, the list's ECHEC policy (off for a DEFI_LIST_REEL)
+    !>  st      : out, located at INCREMENT/LIST_INST: an empty selection; what the
+    !>            DEFI_LIST_INST asks for that parasol does not build
+    subroutine read_increment(cmd, times, cutting, st)
         type(command_t), intent(in) :: cmd
         real(dp), allocatable, intent(out) :: times(:)
+        type(step_cutting_t), intent(out) :: cutting
         type(status_t), intent(out) :: st
         type(keyword_set_t) :: occ
         class(concept_t), pointer :: p
@@ -389,8 +397,16 @@ contains
         select type (p)
         type is (real_list_t)
             times = p%values
+        type is (list_inst_concept_t)
+            times = p%instants
+            call step_cutting_for(p, cutting, st)
+            if (st%failed()) then
+                call occ%error_at('LIST_INST', st%message, st, code=STATUS_NOT_IMPLEMENTED)
+                return
+            end if
         class default
-            call occ%error_at('LIST_INST', 'expected a list of reals (DEFI_LIST_REEL)', st)
+            call occ%error_at('LIST_INST', 'expected a list of instants (DEFI_LIST_REEL, ' // &
+                'DEFI_LIST_INST)', st)
             return
         end select
         i0 = 1

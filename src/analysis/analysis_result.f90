@@ -66,8 +66,8 @@ module analysis_result
         final :: result_concept_final
     end type result_concept_t
 
-    public :: result_init, result_store, result_node_value, result_store_spring_fields, &
-        result_cell_value, is_cell_field, result_set_structure
+    public :: result_init, result_reserve, result_store, result_node_value, &
+        result_store_spring_fields, result_cell_value, is_cell_field, result_set_structure
 
 contains
 
@@ -137,6 +137,46 @@ contains
             res%spring_vari(DIS_CHOC_N_VARI, n_springs, capacity), source=0.0_dp)
         if (present(spring_cell)) res%spring_cell = spring_cell
     end subroutine result_init
+
+    !> Makes room for `capacity` instants in the raw state (the instants a STAT_NON_LINE step
+    !> cut by DEFI_LIST_INST/ECHEC adds; the stored instants grow by themselves,
+    !> result_add_instant); what is stored is kept.
+    subroutine result_reserve(res, capacity)
+        type(result_concept_t), intent(inout) :: res
+        integer(i4), intent(in) :: capacity
+        integer(i4) :: n
+        if (capacity <= size(res%depl, 2)) return
+        n = res%n_stored
+        call grow_r2(res%depl)
+        call grow_r2(res%forc_noda)
+        call grow_r2(res%reac_noda)
+        call grow_l2(res%spring_closed)
+        call grow_r2(res%spring_force)
+        call grow_r3(res%spring_sief)
+        call grow_r3(res%spring_vari)
+    contains
+        subroutine grow_r2(a)
+            real(dp), allocatable, intent(inout) :: a(:, :)
+            real(dp), allocatable :: b(:, :)
+            allocate (b(size(a, 1), capacity))
+            b(:, 1:n) = a(:, 1:n)
+            call move_alloc(b, a)
+        end subroutine grow_r2
+        subroutine grow_l2(a)
+            logical, allocatable, intent(inout) :: a(:, :)
+            logical, allocatable :: b(:, :)
+            allocate (b(size(a, 1), capacity))
+            b(:, 1:n) = a(:, 1:n)
+            call move_alloc(b, a)
+        end subroutine grow_l2
+        subroutine grow_r3(a)
+            real(dp), allocatable, intent(inout) :: a(:, :, :)
+            real(dp), allocatable :: b(:, :, :)
+            allocate (b(size(a, 1), size(a, 2), capacity), source=0.0_dp)
+            b(:, :, 1:n) = a(:, :, 1:n)
+            call move_alloc(b, a)
+        end subroutine grow_r3
+    end subroutine result_reserve
 
     !> Stores one instant (the next NUME_ORDRE).
     !>  depl, forc_noda, reac_noda : in, (n_equations) fields at this instant

@@ -14,8 +14,10 @@ module deck_catalog_data
     use catalog_functions, only: describe_functions
     use catalog_loads, only: describe_loads
     use catalog_analyses, only: describe_analyses
+    use catalog_list_inst, only: describe_list_inst
     use catalog_results, only: describe_outputs
     use catalog_fields, only: describe_fields
+    use catalog_tables, only: describe_tables
     implicit none
     private
     public :: build_catalog
@@ -33,8 +35,10 @@ contains
         call describe_functions(cat)
         call describe_loads(cat)
         call describe_analyses(cat)
+        call describe_list_inst(cat)
         call describe_outputs(cat)
         call describe_fields(cat)
+        call describe_tables(cat)
     end subroutine build_catalog
 
 end module deck_catalog_data
