@@ -14,6 +14,7 @@ module command_registration
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage
+    use mesh_create_commands, only: run_crea_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
     use cara_elem_commands, only: run_affe_cara_elem
@@ -52,6 +53,7 @@ contains
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)
+        call ctx%register('CREA_MAILLAGE', run_crea_maillage)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
         call ctx%register('AFFE_MATERIAU', run_affe_materiau)
