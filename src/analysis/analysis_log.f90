@@ -5,6 +5,7 @@
 module analysis_log
     use kinds, only: i4
     use strings, only: string_t
+    use atomic_file, only: atomic_file_t
     implicit none
     private
 
@@ -12,7 +13,7 @@ module analysis_log
     type, public :: analysis_log_t
         integer(i4) :: n = 0
         type(string_t), allocatable :: lines(:)
-        integer :: unit = -1                       !< open file the lines go to (-1: none)
+        type(atomic_file_t) :: file                !< where the lines go (if open)
         character(len=:), allocatable :: indent    !< put before each line written there
     end type analysis_log_t
 
@@ -36,29 +37,31 @@ contains
         end if
         log%n = log%n + 1
         log%lines(log%n)%s = trim(text)
-        if (log%unit /= -1) write (log%unit, '(a)') log%indent // trim(text)
+        if (log%file%is_open()) call log%file%write_line(log%indent // trim(text))
     end subroutine log_add
 
-    !> Connects the log to an open formatted file: the lines already in it and every later
-    !> one are written there, each after `indent`.
-    !>  unit : in, the open unit (the .mess's temporary file, run_context%mess%unit)
-    subroutine log_stream(log, unit, indent)
+    !> Connects the log to an open file: the lines already in it and every later one are
+    !> written there, each after `indent` (checked writes: a failure is the file's, reported
+    !> when it is committed).
+    !>  file : in, the open file (run_context%mess: a second handle to it, used only while
+    !>         the analysis runs)
+    subroutine log_stream(log, file, indent)
         type(analysis_log_t), intent(inout) :: log
-        integer, intent(in) :: unit
+        type(atomic_file_t), intent(in) :: file
         character(len=*), intent(in) :: indent
         integer(i4) :: k
-        log%unit = unit
+        log%file = file
         log%indent = indent
-        if (unit == -1) return
+        if (.not. file%is_open()) return
         do k = 1, log%n
-            write (unit, '(a)') indent // log%lines(k)%s
+            call file%write_line(indent // log%lines(k)%s)
         end do
     end subroutine log_stream
 
     !> Hands the lines written so far to the system (a reader of the file sees them).
     subroutine log_flush(log)
         type(analysis_log_t), intent(in) :: log
-        if (log%unit /= -1) flush (log%unit)
+        call log%file%flush()
     end subroutine log_flush
 
 end module analysis_log

@@ -9,18 +9,18 @@ module assembly_system
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text
-    use mesh_types, only: mesh_t, cell_label, CELL_POI1
+    use mesh_types, only: mesh_t, cell_label, CELL_POI1, MAX_CELL_NODES
     use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
-        is_discrete_2d, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, ELEM_DIS_T_POI1, &
-        ELEM_2D_DIS_T_POI1, ELEM_D_PLAN_QUAD4, ELEMENT_NAMES
-    use model_material, only: material_field_t, material_t, material_of_cell
+        is_discrete_2d, is_plane_strain, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, &
+        ELEM_DIS_T_POI1, ELEM_2D_DIS_T_POI1, ELEMENT_NAMES
+    use model_material, only: material_field_t, material_t, material_of_cell, elastic_behaviour
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
         ORIENT_ANGL_NAUT
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
         rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
         expand_plate_blocks
-    use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
+    use element_plane, only: plane_elasticity_matrix, plane_stiffness
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
     use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_line_seg2, &
@@ -72,20 +72,20 @@ module assembly_system
     !> built once per analysis by the first internal_forces_incremental call that passes
     !> it: the element equations, node coordinates and the element matrix (plates: local
     !> frame and local matrix by blocks (membrane, bending, drilling: plate_local_blocks),
-    !> plane QUAD4: the 8x8 matrix). An iteration then costs one small matrix-vector
+    !> plane solids: the 2nn x 2nn matrix). An iteration then costs one small matrix-vector
     !> product per cell instead of a rebuilt element stiffness (doc/performance.md,
-    !> "SSNL130 decks"); the forces are bit for bit the same. Memory: 212 reals (1.7 kB)
+    !> "SSNL130 decks"); the forces are bit for bit the same. Memory: 227 reals (1.8 kB)
     !> per DKQ cell.
     type, public :: linear_cache_t
         logical :: ready = .false.
         integer(i4), allocatable :: slot(:)         !< (size(map%cells)) cached index, 0 = none
         integer(i4), allocatable :: n(:)            !< (n_cached) element equations
         integer(i4), allocatable :: nn(:)           !< (n_cached) nodes
-        logical, allocatable :: plate(:)            !< (n_cached) DKT/DKQ, else plane QUAD4
+        logical, allocatable :: plate(:)            !< (n_cached) DKT/DKQ, else plane solid
         integer(i4), allocatable :: eqs(:, :)       !< (MAX_ELEMENT_DOFS, n_cached)
         integer(i8), allocatable :: k_ptr(:)        !< (n_cached + 1) matrix start in k
         real(dp), allocatable :: k(:)               !< the matrices, column-major
-        real(dp), allocatable :: x(:, :, :)         !< (3, 4, n_cached) node coordinates
+        real(dp), allocatable :: x(:, :, :)         !< (3, MAX_CELL_NODES, n_cached) nodes
         real(dp), allocatable :: rot(:, :, :)       !< (3, 3, n_cached) plate local frame
         real(dp), allocatable :: xy(:, :, :)        !< (2, 4, n_cached) plate local coords
     end type linear_cache_t
@@ -125,6 +125,14 @@ contains
                     what = 'no material (AFFE_MATERIAU)'
                 else if (.not. s%materials%materials(m)%has_elas) then
                     what = 'no ELAS in its material'
+                    law = elastic_behaviour(s%materials%materials(m))
+                    if (len(law) > 0) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c, &
+                            group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
+                            'material gives ' // law // ', which parasol''s element does ' // &
+                            'not build yet (it takes ELAS: E, NU)')
+                        return
+                    end if
                 end if
                 if (is_plate(kind) .and. .not. s%cara%has_coque(c)) &
                     what = 'no COQUE thickness (AFFE_CARA_ELEM)'
@@ -355,7 +363,7 @@ contains
         type(assembly_map_t), intent(in), optional :: map
         type(contact_history_t), intent(in), optional :: history
         integer(i4) :: kind, m, nn, p0
-        real(dp) :: x(3, 4), x2(2, 4), k8(8, 8), d8(8)
+        real(dp) :: x(3, MAX_CELL_NODES), x2(2, MAX_CELL_NODES), d3(3, 3), ud(MAX_ELEMENT_DOFS)
         kind = s%model%element(c)
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
@@ -378,14 +386,14 @@ contains
             end associate
         else if (is_plane_solid(kind)) then
             associate (e => s%materials%materials(m)%elas)
-                x2 = x(1:2, 1:4)
-                call plane_quad4_stiffness(x2, e%e, e%nu, kind == ELEM_D_PLAN_QUAD4, k8, st)
-                ke = k8
-                if (.not. want_matrix) then
+                x2(:, 1:nn) = x(1:2, 1:nn)
+                call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(kind), d3, st)
+                if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), d3, ke, st)
+                if (.not. want_matrix .and. st%ok()) then
                     ! the deformation in a variable of its own: matmul of a function result,
                     ! inlined by the front end, read an uninitialised temporary (valgrind)
-                    d8 = plane_deformation(x2, ue)
-                    fe = matmul(k8, d8)
+                    call remove_plane_rigid_motion(x2(:, 1:nn), nn, ue, ud(1:n))
+                    fe = matmul(ke, ud(1:n))
                 end if
             end associate
         else if (is_dis_contact(s, c)) then
@@ -410,7 +418,7 @@ contains
     subroutine discrete_matrix(s, c, x, n, ke, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4)
+        real(dp), intent(in) :: x(:, :)
         real(dp), intent(out) :: ke(n, n)
         type(status_t), intent(out) :: st
         integer(i4) :: kind
@@ -446,7 +454,7 @@ contains
                                     history)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4), ue(n)
+        real(dp), intent(in) :: x(:, :), ue(n)
         logical, intent(in) :: elastic
         real(dp), intent(out) :: ke(n, n), fe(n), fn
         logical, intent(out) :: closed
@@ -561,7 +569,7 @@ contains
     subroutine discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4), ue(n)
+        real(dp), intent(in) :: x(:, :), ue(n)
         logical, intent(in) :: elastic
         real(dp), intent(out) :: ke(n, n), fe(n), fn
         logical, intent(out) :: closed
@@ -604,38 +612,42 @@ contains
         end associate
     end subroutine discrete_response
 
-    !> Plane QUAD4 displacements minus their rigid motion (mean translation and the
-    !> rotation about Z fitted about the centroid). K times a rigid motion is zero, so f_int
-    !> is unchanged, but the round-off of K u no longer scales with the (large) rigid part:
-    !> in SSNL130 the slab is ~1e8 times stiffer than the springs and moves ~3.5e-3 rigidly.
-    pure function plane_deformation(x, ue) result(ud)
-        real(dp), intent(in) :: x(2, 4), ue(8)
-        real(dp) :: ud(8), xc(2), uc(2), d(2), num, den, omega
+    !> Plane displacements minus their rigid motion (mean translation and the rotation
+    !> about Z fitted about the centroid of the nodes). K times a rigid motion is zero, so
+    !> f_int is unchanged, but the round-off of K u no longer scales with the (large) rigid
+    !> part: in SSNL130 the slab is ~1e8 times stiffer than the springs and moves ~3.5e-3
+    !> rigidly.
+    !>  x : in, x(2, nn) node coordinates; ue : in, ue(2 nn); ud : out, ud(2 nn)
+    pure subroutine remove_plane_rigid_motion(x, nn, ue, ud)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: x(2, nn), ue(2 * nn)
+        real(dp), intent(out) :: ud(2 * nn)
+        real(dp) :: xc(2), uc(2), d(2), num, den, omega
         integer(i4) :: i
-        xc = sum(x, dim=2) / 4.0_dp
-        uc = [sum(ue(1:7:2)), sum(ue(2:8:2))] / 4.0_dp
+        xc = sum(x, dim=2) / real(nn, dp)
+        uc = [sum(ue(1:2 * nn - 1:2)), sum(ue(2:2 * nn:2))] / real(nn, dp)
         num = 0.0_dp
         den = 0.0_dp
-        do i = 1, 4
+        do i = 1, nn
             d = x(:, i) - xc
             num = num + d(1) * (ue(2 * i) - uc(2)) - d(2) * (ue(2 * i - 1) - uc(1))
             den = den + d(1)**2 + d(2)**2
         end do
         omega = 0.0_dp
         if (den > 0.0_dp) omega = num / den
-        do i = 1, 4
+        do i = 1, nn
             d = x(:, i) - xc
             ud(2 * i - 1) = ue(2 * i - 1) - uc(1) + omega * d(2)
             ud(2 * i) = ue(2 * i) - uc(2) - omega * d(1)
         end do
-    end function plane_deformation
+    end subroutine remove_plane_rigid_motion
 
     !> Plate (DX..DRZ per node) displacements minus a rigid motion: the mean translation
     !> and the mean rotation about the in-plane axes (u = t + w x P(x - xc), P the
     !> projection on the cell's mean plane, theta = w,
     !> w normal to the plate). That motion has zero energy in DKT/DKQ (a rotation about the
     !> normal would load the fictitious DRZ stiffness, so it is left in); removing it keeps
-    !> the round-off of K u proportional to the deformation (see plane_deformation).
+    !> the round-off of K u proportional to the deformation (see remove_plane_rigid_motion).
     pure function plate_deformation(x, nn, ue) result(ud)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: x(3, nn), ue(6 * nn)
@@ -1130,7 +1142,8 @@ contains
         nc = count(linear, kind=i4)
         allocate (cache%n(nc), cache%nn(nc), cache%plate(nc), cache%k_ptr(nc + 1), &
             cache%eqs(MAX_ELEMENT_DOFS, nc))
-        allocate (cache%x(3, 4, nc), cache%rot(3, 3, nc), cache%xy(2, 4, nc), source=0.0_dp)
+        allocate (cache%x(3, MAX_CELL_NODES, nc), cache%rot(3, 3, nc), cache%xy(2, 4, nc), &
+            source=0.0_dp)
         i = 0
         cache%k_ptr(1) = 1
         do k = 1, size(map%cells)
@@ -1168,8 +1181,8 @@ contains
     end subroutine build_linear_cache
 
     !> Element matrix of cached cell i (mesh cell c): plates keep their local frame and
-    !> local matrix (plate_internal_forces works in the local frame), plane QUAD4 the
-    !> global 8x8 matrix (as cell_response).
+    !> local matrix (plate_internal_forces works in the local frame), plane solids the
+    !> global matrix (as cell_response).
     subroutine cache_cell_matrix(s, c, cache, i, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, i
@@ -1177,7 +1190,7 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: m, nn
         integer(i8) :: p, q
-        real(dp) :: x2(2, 4)
+        real(dp) :: x2(2, MAX_CELL_NODES), d3(3, 3), kp(2 * MAX_CELL_NODES, 2 * MAX_CELL_NODES)
         m = material_of_cell(s%materials, c)
         nn = cache%nn(i)
         p = cache%k_ptr(i)
@@ -1190,9 +1203,12 @@ contains
                 call plate_local_blocks(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
                     s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             else
-                x2 = cache%x(1:2, 1:4, i)    ! contiguous copy: no array temporary
-                call plane_quad4_stiffness(x2, e%e, e%nu, &
-                    s%model%element(c) == ELEM_D_PLAN_QUAD4, cache%k(p:q), st)
+                x2(:, 1:nn) = cache%x(1:2, 1:nn, i)    ! contiguous copy: no array temporary
+                call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(s%model%element(c)), &
+                    d3, st)
+                if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), d3, &
+                    kp(1:2 * nn, 1:2 * nn), st)
+                cache%k(p:q) = reshape(kp(1:2 * nn, 1:2 * nn), [4 * nn * nn])
             end if
         end associate
     end subroutine cache_cell_matrix
@@ -1205,7 +1221,8 @@ contains
         real(dp), intent(inout) :: flin(:)
         integer(i4) :: i, j, n, nn
         integer(i8) :: p, q
-        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS), x2(2, 4)
+        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS)
+        real(dp) :: x2(2, MAX_CELL_NODES)
         do i = 1, size(cache%n)
             n = cache%n(i)
             nn = cache%nn(i)
@@ -1220,8 +1237,8 @@ contains
                 call plate_forces_from_blocks(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
                     cache%k(p:q), ud(1:n), fe(1:n))
             else
-                x2 = cache%x(1:2, 1:4, i)
-                call plane_forces(cache%k(p:q), x2, ue(1:8), fe(1:8))
+                x2(:, 1:nn) = cache%x(1:2, 1:nn, i)
+                call plane_forces(cache%k(p:q), x2(:, 1:nn), nn, ue(1:n), fe(1:n))
             end if
             do j = 1, n
                 if (cache%eqs(j, i) > 0) flin(cache%eqs(j, i)) = flin(cache%eqs(j, i)) + fe(j)
@@ -1229,7 +1246,7 @@ contains
         end do
     end subroutine add_cached_linear_forces
 
-    !> Global matrix of cached cell i, as plate_stiffness / plane_quad4_stiffness give it.
+    !> Global matrix of cached cell i, as plate_stiffness / plane_stiffness give it.
     subroutine cached_global_matrix(cache, i, ke)
         type(linear_cache_t), intent(in) :: cache
         integer(i4), intent(in) :: i
@@ -1245,17 +1262,18 @@ contains
             call expand_plate_blocks(3_i4, cache%k(p:q), k18)
             call rotate_to_global(cache%rot(:, :, i), 6_i4, k18, ke)
         else
-            ke = reshape(cache%k(p:q), [8, 8])
+            ke = reshape(cache%k(p:q), [cache%n(i), cache%n(i)])
         end if
     end subroutine cached_global_matrix
 
-    !> Plane QUAD4 forces K u of the deformation part of ue (see plane_deformation).
-    pure subroutine plane_forces(k8, x2, ue, fe)
-        real(dp), intent(in) :: k8(8, 8), x2(2, 4), ue(8)
-        real(dp), intent(out) :: fe(8)
-        real(dp) :: d8(8)
-        d8 = plane_deformation(x2, ue)    ! not inline in matmul: see cell_response
-        fe = matmul(k8, d8)
+    !> Plane forces K u of the deformation part of ue (see remove_plane_rigid_motion).
+    pure subroutine plane_forces(k, x2, nn, ue, fe)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: k(2 * nn, 2 * nn), x2(2, nn), ue(2 * nn)
+        real(dp), intent(out) :: fe(2 * nn)
+        real(dp) :: ud(2 * nn)
+        call remove_plane_rigid_motion(x2, nn, ue, ud)    ! not inline in matmul
+        fe = matmul(k, ud)
     end subroutine plane_forces
 
     !> The response of one SEG2 spring (DIS_T, 2D_DIS_T; DIS_CHOC or linear) at u: its

@@ -20,7 +20,7 @@ module cli
     use system_error, only: readable_errno, errno_text
     use cli_args, only: get_arguments
     use parasol_version, only: parasol_version_string
-    use atomic_file, only: open_atomic
+    use atomic_file, only: open_atomic, install_interrupt_cleanup
     use install_layout, only: data_file_path
     use run_context, only: run_context_t, init_context
     use deck_value, only: append_string
@@ -62,6 +62,7 @@ contains
         type(mumps_session_t) :: session
         type(status_t) :: st
         logical :: worker
+        call install_interrupt_cleanup()
         call mumps_session_start(session, worker, st)
         if (st%failed()) then
             write (error_unit, '(a)') 'parasol: error: ' // st%message
@@ -322,7 +323,17 @@ contains
                 ' command files are valid (' // to_text(int(ctx%ncommand, i4)) // &
                 ' commands checked)'
         end if
+        if (ctx%check_stopped) write (output_unit, '(a)') check_horizon(ctx)
     end subroutine say_valid
+
+    !> Where a check pass stopped early, in words (doc/deck-language.md, "The check pass").
+    function check_horizon(ctx) result(text)
+        type(run_context_t), intent(in) :: ctx
+        character(len=:), allocatable :: text
+        text = 'checked up to ' // ctx%check_stop_file // ':' // &
+            to_text(int(ctx%check_stop_line, i4)) // ': from there the deck depends on ' // &
+            'values known when it runs (each command is validated before it runs)'
+    end function check_horizon
 
     !> The line that ends a run of a given deck (not with --quiet): what ran, the TEST_RESU
     !> tally, the listings and the wall time, e.g.
@@ -481,6 +492,7 @@ contains
         if (st%failed()) return
         call ctx%write_mess('check pass: the deck is valid (' // &
                             to_text(int(ctx%ncommand, i4)) // ' commands)')
+        if (ctx%check_stopped) call ctx%write_mess('check pass: ' // check_horizon(ctx))
     end subroutine check_pass
 
     subroutine run_pass(ctx, st)
@@ -494,44 +506,56 @@ contains
             ctx%deck_name // ' has no FIN(); the listings are closed at its end')
     end subroutine run_pass
 
-    !> Reports an error (stderr and .mess), writes the verdict, commits or discards files.
-    subroutine finish(ctx, st, exit_status)
+    !> Ends the run's listings and reports. The .resu is published only by a run that ends
+    !> well and when all of it reached the disk; a run that fails (deck error, a listing or
+    !> result file that could not be written) discards it, so an older .resu of that name
+    !> stays as it was. The .mess, which tells the run's story and its error, is published
+    !> only when it was written whole; the error line goes to standard error in any case,
+    !> and names the .mess too when that could not be written (one line, e.g.
+    !> `parasol: error: cannot write OUT/plate.resu: No space left on device`).
+    subroutine finish(ctx, run_status, exit_status)
         type(run_context_t), intent(inout) :: ctx
-        type(status_t), intent(in) :: st
+        type(status_t), intent(in) :: run_status
         integer, intent(out) :: exit_status
-        type(status_t) :: io
-        character(len=:), allocatable :: verdict
+        type(status_t) :: st, io
+        character(len=:), allocatable :: verdict, line
         if (associated(ctx%progress)) call ctx%progress%done()   ! wipe a progress line
+        st = run_status
+        call ctx%resu%flush()      ! every line handed to the system: a full disk shows here
+        if (st%ok() .and. ctx%resu%failed()) &
+            call set_error(st, STATUS_IO_ERROR, ctx%resu%error_message())
+        if (st%ok() .and. ctx%mess%failed()) &
+            call set_error(st, STATUS_IO_ERROR, ctx%mess%error_message())
+        if (st%ok()) call ctx%resu%commit(st)
         if (st%failed()) then
-            write (error_unit, '(a)') error_line(st)
+            call ctx%resu%discard()
             call ctx%write_mess('')
             call ctx%write_mess(format_status(st))
             call ctx%write_mess('verdict: STOPPED ON AN ERROR after ' // &
                 to_text(int(ctx%ncommand, i4)) // ' commands; TEST_RESU: ' // &
                 to_text(int(ctx%n_ok, i4)) // ' OK, ' // to_text(int(ctx%n_nook, i4)) // ' NOOK')
-            call ctx%resu%discard()
-            call ctx%mess%commit(io)
             exit_status = EXIT_ERROR
-            return
-        end if
-        verdict = 'verdict: ' // to_text(int(ctx%n_ok, i4)) // ' OK, ' // &
-            to_text(int(ctx%n_nook, i4)) // ' NOOK'
-        exit_status = EXIT_OK
-        if (ctx%n_nook > 0) then
-            verdict = verdict // ' -- SOME TESTS FAILED'
-            exit_status = EXIT_NOOK
-        end if
-        call ctx%write_mess('')
-        call ctx%write_mess(verdict)
-        call ctx%resu%commit(io)
-        if (io%failed()) then
-            write (error_unit, '(a)') 'parasol: ' // format_status(io)
-            exit_status = EXIT_ERROR
+        else
+            verdict = 'verdict: ' // to_text(int(ctx%n_ok, i4)) // ' OK, ' // &
+                to_text(int(ctx%n_nook, i4)) // ' NOOK'
+            exit_status = EXIT_OK
+            if (ctx%n_nook > 0) then
+                verdict = verdict // ' -- SOME TESTS FAILED'
+                exit_status = EXIT_NOOK
+            end if
+            call ctx%write_mess('')
+            call ctx%write_mess(verdict)
         end if
         call ctx%mess%commit(io)
-        if (io%failed()) then
-            write (error_unit, '(a)') 'parasol: ' // format_status(io)
+        if (st%ok() .and. io%failed()) then
+            st = io
             exit_status = EXIT_ERROR
+        end if
+        if (st%failed()) then
+            line = error_line(st)
+            if (io%failed() .and. io%message /= st%message .and. &
+                index(st%message, io%message) == 0) line = line // '; ' // io%message
+            write (error_unit, '(a)') line
         end if
     end subroutine finish
 

@@ -3,10 +3,16 @@
 !> "Permission denied") rather than a generic "cannot write".
 module system_error
     use, intrinsic :: iso_c_binding, only: c_int, c_long, c_ptr, c_char, c_size_t, &
-        c_associated, c_f_pointer
+        c_associated, c_f_pointer, c_int16_t
     implicit none
     private
-    public :: last_errno, errno_text, process_id, readable_errno, c_text
+    public :: last_errno, errno_text, process_id, readable_errno, c_text, path_kind
+
+    !> What a path names (path_kind).
+    integer, parameter, public :: PATH_MISSING = 0   !< nothing (or it cannot be looked at)
+    integer, parameter, public :: PATH_FILE = 1      !< a regular file
+    integer, parameter, public :: PATH_FOLDER = 2    !< a directory
+    integer, parameter, public :: PATH_DEVICE = 3    !< a device, FIFO or socket
 
     interface
         function c_errno_location() result(p) bind(c, name='__errno_location')
@@ -40,6 +46,13 @@ module system_error
             integer(c_size_t), value :: count
             integer(c_long) :: n                   ! ssize_t
         end function c_read
+        function c_statx(dirfd, pathname, flags, mask, buf) result(rc) bind(c, name='statx')
+            import :: c_int, c_char, c_int16_t
+            integer(c_int), value :: dirfd, flags, mask
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int16_t), intent(out) :: buf(*)
+            integer(c_int) :: rc
+        end function c_statx
         function c_close(fd) result(rc) bind(c, name='close')
             import :: c_int
             integer(c_int), value :: fd
@@ -104,6 +117,31 @@ contains
         if (n < 0_c_long) code = last_errno()
         rc = c_close(fd)
     end function readable_errno
+
+    !> What `path` names, symbolic links followed: PATH_MISSING, PATH_FILE, PATH_FOLDER or
+    !> PATH_DEVICE. statx(2), whose struct is the same on every architecture (the mode is
+    !> the 16-bit word at byte 28, linux/stat.h).
+    integer function path_kind(path) result(kind)
+        use, intrinsic :: iso_c_binding, only: c_null_char
+        character(len=*), intent(in) :: path
+        integer(c_int), parameter :: AT_FDCWD = -100, STATX_TYPE = 1
+        integer, parameter :: S_IFMT = int(o'170000'), S_IFREG = int(o'100000'), &
+            S_IFDIR = int(o'040000')
+        integer(c_int16_t) :: buf(128)      ! struct statx: 256 bytes
+        integer :: mode
+        kind = PATH_MISSING
+        buf = 0
+        if (c_statx(AT_FDCWD, path // c_null_char, 0_c_int, STATX_TYPE, buf) /= 0) return
+        mode = iand(int(buf(15)), int(z'FFFF'))
+        select case (iand(mode, S_IFMT))
+        case (S_IFREG)
+            kind = PATH_FILE
+        case (S_IFDIR)
+            kind = PATH_FOLDER
+        case default
+            kind = PATH_DEVICE
+        end select
+    end function path_kind
 
     !> The process identifier (getpid), e.g. to make temporary names unique per process.
     integer function process_id()

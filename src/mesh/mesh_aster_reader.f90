@@ -4,7 +4,8 @@
 !> FINSF, the whole ended by FIN:
 !>   TITRE ... FINSF              free text
 !>   COOR_2D | COOR_3D            one node per line: name x y [z]
-!>   POI1 | SEG2 | TRIA3 | QUAD4  one cell per line: name node...
+!>   POI1 | SEG2 | SEG3 | TRIA3 | TRIA6 | QUAD4 | QUAD8 | QUAD9
+!>                                one cell per line: name node... (Code_Aster's node order)
 !>   GROUP_NO | GROUP_MA          name (`NOM=NAME` on the header line, or first token of the
 !>                                next line), then member names over any number of lines
 !> `%` starts a comment; blanks and commas separate tokens; other `KEY=VALUE` tokens on a
@@ -18,7 +19,7 @@ module mesh_aster_reader
     use mesh_name_index, only: name_find
     use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
         mesh_add_node_group, mesh_add_cell_group, mesh_finish, not_found_message, &
-        CELL_TYPE_NAMES, N_CELL_TYPES, ENTITY_NODE, ENTITY_CELL
+        CELL_TYPE_NAMES, CELL_TYPE_NODES, N_CELL_TYPES, ENTITY_NODE, ENTITY_CELL
     use mesh_text_lexer, only: text_lexer_t, open_lexer, next_token, next_line, at_end, &
         parse_real
     implicit none
@@ -27,9 +28,12 @@ module mesh_aster_reader
     public :: read_aster_mesh
 
     !> Cell types that Code_Aster knows and parasol refuses by name.
-    character(len=7), parameter :: OTHER_CELL_TYPES(14) = ['SEG3   ', 'SEG4   ', &
-        'TRIA6  ', 'TRIA7  ', 'QUAD8  ', 'QUAD9  ', 'TETRA4 ', 'TETRA10', 'PENTA6 ', &
-        'PENTA15', 'HEXA8  ', 'HEXA20 ', 'HEXA27 ', 'PYRAM5 ']
+    character(len=7), parameter :: OTHER_CELL_TYPES(12) = ['SEG4   ', 'TRIA7  ', &
+        'TETRA4 ', 'TETRA10', 'PENTA6 ', 'PENTA15', 'PENTA18', 'HEXA8  ', 'HEXA20 ', &
+        'HEXA27 ', 'PYRAM5 ', 'PYRAM13']
+    !> The cell types parasol reads, for messages.
+    character(len=*), parameter :: KNOWN_CELL_TYPES = &
+        'POI1, SEG2, SEG3, TRIA3, TRIA6, QUAD4, QUAD8, QUAD9'
 
 contains
 
@@ -100,11 +104,12 @@ contains
             end do
             if (any(word == OTHER_CELL_TYPES)) then
                 call set_error(st, STATUS_MESH_ERROR, 'cell type ' // word // &
-                    ' is not supported (POI1, SEG2, TRIA3, QUAD4)', file=mesh%file, line=lex%line)
+                    ' is not supported (' // KNOWN_CELL_TYPES // ')', file=mesh%file, &
+                    line=lex%line)
             else
                 call set_error(st, STATUS_MESH_ERROR, 'unknown sub-file keyword ' // word // &
-                    ' (expected TITRE, COOR_2D, COOR_3D, POI1, SEG2, TRIA3, QUAD4, ' // &
-                    'GROUP_NO, GROUP_MA or FIN)', file=mesh%file, line=lex%line)
+                    ' (expected TITRE, COOR_2D, COOR_3D, ' // KNOWN_CELL_TYPES // &
+                    ', GROUP_NO, GROUP_MA or FIN)', file=mesh%file, line=lex%line)
             end if
         end select
     end subroutine read_sub_file
@@ -204,30 +209,60 @@ contains
         type(mesh_t), intent(inout) :: mesh
         integer(i4), intent(in) :: ctype
         type(status_t), intent(inout) :: st
-        integer(i4) :: first, last, f2, l2, n, nodes(64)
+        integer(i4) :: first, last, f2, l2, n, nodes(64), line
+        character(len=:), allocatable :: name
         call next_line(lex)
         do while (.not. at_end(lex))
             if (at_finsf(lex, first, last)) return
+            name = lex%text(first:last)
+            line = lex%line
             n = 0
             do
                 call next_token(lex, f2, l2)
-                if (f2 == 0) exit
+                if (f2 == 0) then
+                    ! a cell's nodes may go on over the next lines (Code_Aster's free
+                    ! format: QUAD8 and longer cells are often written on two lines)
+                    if (n >= CELL_TYPE_NODES(ctype)) exit
+                    if (.not. continues(lex)) exit
+                    cycle
+                end if
                 n = n + 1
                 if (n > size(nodes)) exit
                 nodes(n) = name_find(mesh%node_names, lex%text(f2:l2))
                 if (nodes(n) == 0) then
-                    call set_error(st, STATUS_MESH_ERROR, 'cell ' // lex%text(first:last) // &
+                    call set_error(st, STATUS_MESH_ERROR, 'cell ' // name // &
                         ': ' // not_found_message(mesh, mesh%node_names, ENTITY_NODE, &
                         lex%text(f2:l2)), file=mesh%file, line=lex%line)
                     return
                 end if
             end do
-            call mesh_add_cell(mesh, lex%text(first:last), ctype, nodes(1:min(n, 64)), &
-                               lex%line, st)
+            call mesh_add_cell(mesh, name, ctype, nodes(1:min(n, 64)), line, st)
             if (st%failed()) return
             call next_line(lex)
         end do
         call missing_finsf(lex, mesh, st)
+    contains
+        ! Moves to the next line when it goes on with the cell's nodes: not the end of the
+        ! text nor a FINSF line (blank and comment lines are skipped). Else the lexer stays.
+        logical function continues(lex) result(more)
+            type(text_lexer_t), intent(inout) :: lex
+            integer(i4) :: f3, l3, saved_pos, saved_line
+            saved_pos = lex%pos
+            saved_line = lex%line
+            more = .false.
+            do
+                call next_line(lex)
+                if (at_end(lex)) exit
+                call next_token(lex, f3, l3)
+                if (f3 == 0) cycle
+                more = to_upper(lex%text(f3:l3)) /= 'FINSF'
+                lex%pos = f3           ! the token is read again by the caller
+                exit
+            end do
+            if (more) return
+            lex%pos = saved_pos
+            lex%line = saved_line
+        end function continues
     end subroutine read_cells
 
     ! GROUP_NO / GROUP_MA: name from NOM= on the header line or first token of the next

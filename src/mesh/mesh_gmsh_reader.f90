@@ -24,7 +24,8 @@ module mesh_gmsh_reader
     use mesh_name_index, only: name_index_t, name_add, name_find
     use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
         mesh_add_node_group, mesh_add_cell_group, mesh_finish, nodes_of_cells, &
-        CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_TYPE_NODES
+        CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_SEG3, CELL_TRIA6, CELL_QUAD8, &
+        CELL_QUAD9, CELL_TYPE_NODES, CELL_TYPE_DIM
     use mesh_text_lexer, only: text_lexer_t, open_lexer, next_token, next_line, at_end, &
         parse_real, parse_integer, bytes_left
     implicit none
@@ -702,10 +703,15 @@ contains
         case (1); ctype = CELL_SEG2
         case (2); ctype = CELL_TRIA3
         case (3); ctype = CELL_QUAD4
+        case (8); ctype = CELL_SEG3          ! Gmsh's node orders are Code_Aster's for these
+        case (9); ctype = CELL_TRIA6
+        case (16); ctype = CELL_QUAD8
+        case (10); ctype = CELL_QUAD9
         case default
             call set_error(st, STATUS_MESH_ERROR, 'element ' // to_text(tag) // ': Gmsh ' // &
                 'element type ' // to_text(etype) // ' is not supported (15 point POI1, ' // &
-                '1 line SEG2, 2 triangle TRIA3, 3 quadrangle QUAD4)', line=line)
+                '1 line SEG2, 8 line SEG3, 2 triangle TRIA3, 9 triangle TRIA6, 3 ' // &
+                'quadrangle QUAD4, 16 quadrangle QUAD8, 10 quadrangle QUAD9)', line=line)
             return
         end select
         if (tag < 1) then
@@ -758,7 +764,7 @@ contains
         type(gmsh_state_t), intent(inout) :: gs
         integer(i4), intent(in) :: tag, ctype
         integer(i4) :: dim, t
-        dim = merge(0, merge(1, 2, ctype == CELL_SEG2), ctype == CELL_POI1)
+        dim = CELL_TYPE_DIM(ctype)
         t = abs(tag)
         if (t < 0) t = huge(1_i4)      ! abs(-2**31) stays negative
         k = name_find(gs%phys_keys, physical_key(dim, t))

@@ -4,10 +4,10 @@
 !>  - the mesh named NOM_MED, else the file's only mesh (Code_Aster takes the first one; a
 !>    file with several meshes and no NOM_MED is an error here, listing their names);
 !>  - its first computation step; its space dimension (2 or 3) is the mesh's dimension;
-!>  - nodes in file order; cells by type in Code_Aster's order POI1, SEG2, TRIA3, QUAD4 (the
-!>    order of increasing MED type), in file order within a type; MED's node order within a
-!>    cell is Code_Aster's for these types. Higher-order and other cell types are refused by
-!>    their Code_Aster names;
+!>  - nodes in file order; cells by type in Code_Aster's catalogue order POI1, SEG2, SEG3,
+!>    TRIA3, TRIA6, QUAD4, QUAD8, QUAD9 (MeshReader's asterTypeList), in file order within a
+!>    type; MED's node order within a cell is Code_Aster's for these types (Code_Aster
+!>    permutes only 3D types). Other cell types are refused by their Code_Aster names;
 !>  - node and cell names: the file's names when it has them (MED stores 16 characters; the
 !>    full name is kept), else N<number> and M<number> with the numbers of the order above;
 !>  - groups from the families: a family with a number > 0 is a set of nodes, < 0 a set of
@@ -25,8 +25,8 @@ module mesh_med_reader
     use status, only: status_t, set_error, STATUS_MESH_ERROR
     use strings, only: string_t, to_text, starts_with
     use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
-        mesh_add_node_group, mesh_add_cell_group, mesh_finish, CELL_POI1, CELL_SEG2, &
-        CELL_TRIA3, CELL_QUAD4
+        mesh_add_node_group, mesh_add_cell_group, mesh_finish, CELL_TYPE_ORDER, &
+        CELL_TYPE_NODES, MAX_CELL_NODES
     use mesh_name_index, only: name_index_t, name_add, name_of
     use med_file, only: med_file_t, med_load, med_open, med_close, med_mesh_count, med_mesh_info, &
         med_mesh_step, med_count, med_cell_type, med_read_coordinates, med_read_connectivity, &
@@ -43,19 +43,22 @@ module mesh_med_reader
     !> Most groups one family may hold (a sanity bound on a count read from the file).
     integer(i4), parameter :: MAX_GROUPS_PER_FAMILY = 100000
 
-    !> MED cell types (med.h) with their Code_Aster names and node counts; the first four are
-    !> the ones parasol reads, in Code_Aster's order.
+    !> MED cell types (med.h) with their Code_Aster names; the first eight are the ones
+    !> parasol reads, in Code_Aster's catalogue order (CELL_TYPE_ORDER), in which its
+    !> MeshReader numbers the cells type by type.
     integer, parameter :: N_MED_TYPES = 24
-    integer(i4), parameter :: MED_TYPE_CODES(N_MED_TYPES) = [1, 102, 203, 204, 103, 104, &
-        206, 207, 208, 209, 304, 305, 306, 308, 310, 312, 313, 315, 318, 320, 327, 400, 420, 500]
+    integer(i4), parameter :: MED_TYPE_CODES(N_MED_TYPES) = [1, 102, 103, 203, 206, 204, &
+        208, 209, 104, 207, 304, 305, 306, 308, 310, 312, 313, 315, 318, 320, 327, 400, 420, 500]
     character(len=10), parameter :: MED_TYPE_NAMES(N_MED_TYPES) = [character(len=10) :: &
-        'POI1', 'SEG2', 'TRIA3', 'QUAD4', 'SEG3', 'SEG4', 'TRIA6', 'TRIA7', 'QUAD8', 'QUAD9', &
+        'POI1', 'SEG2', 'SEG3', 'TRIA3', 'TRIA6', 'QUAD4', 'QUAD8', 'QUAD9', 'SEG4', 'TRIA7', &
         'TETRA4', 'PYRAM5', 'PENTA6', 'HEXA8', 'TETRA10', 'OCTA12', 'PYRAM13', 'PENTA15', &
         'PENTA18', 'HEXA20', 'HEXA27', 'POLYGON', 'QPOLYGON', 'POLYHEDRON']
-    integer, parameter :: N_READ_TYPES = 4
-    integer(i4), parameter :: READ_TYPE_CELL(N_READ_TYPES) = [CELL_POI1, CELL_SEG2, &
-        CELL_TRIA3, CELL_QUAD4]
-    integer(i4), parameter :: READ_TYPE_NODES(N_READ_TYPES) = [1, 2, 3, 4]
+    integer, parameter :: N_READ_TYPES = 8
+    integer(i4), parameter :: READ_TYPE_CELL(N_READ_TYPES) = CELL_TYPE_ORDER
+    integer(i4), parameter :: READ_TYPE_NODES(N_READ_TYPES) = CELL_TYPE_NODES(CELL_TYPE_ORDER)
+    !> The types read, for messages.
+    character(len=*), parameter :: READ_TYPES_TEXT = &
+        'POI1, SEG2, SEG3, TRIA3, TRIA6, QUAD4, QUAD8 and QUAD9'
 
     !> A family of the file: its number and groups.
     type :: family_t
@@ -279,7 +282,7 @@ contains
     end subroutine read_nodes
 
     ! The cells, all types together in Code_Aster's order: type (index into READ_TYPE_*),
-    ! nodes (4, n; unused entries 0), names and family numbers.
+    ! nodes (MAX_CELL_NODES, n; unused entries 0), names and family numbers.
     subroutine read_cells(file, mesh, numdt, numit, n_nodes, kinds_, nodes, names, named, &
                           families, st)
         type(med_file_t), intent(in) :: file
@@ -305,8 +308,7 @@ contains
             if (t == 0) then
                 call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
                     mesh // ' has cells of MED type ' // to_text(code) // ', which parasol ' &
-                    // 'does not know (structural elements?); it reads POI1, SEG2, TRIA3 ' // &
-                    'and QUAD4')
+                    // 'does not know (structural elements?); it reads ' // READ_TYPES_TEXT)
                 return
             end if
             n = med_count(file, mesh, numdt, numit, MED_COUNT_CELLS, code, &
@@ -326,19 +328,19 @@ contains
             if (t > N_READ_TYPES) then
                 call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
                     mesh // ' has ' // to_text(n) // ' ' // trim(MED_TYPE_NAMES(t)) // &
-                    ' cells (MED type ' // to_text(code) // '); parasol reads POI1, SEG2, ' &
-                    // 'TRIA3 and QUAD4 cells only (its elements are linear)')
+                    ' cells (MED type ' // to_text(code) // '); parasol reads ' // &
+                    READ_TYPES_TEXT // ' cells only')
                 return
             end if
             all_counts(t) = n
         end do
         counts = all_counts(1:N_READ_TYPES)
-        if (sum(int(counts, i8) * 4) > huge(1_i4)) then
+        if (sum(int(counts, i8) * MAX_CELL_NODES) > huge(1_i4)) then
             call too_many(st, file, sum(int(counts, i8)), 'cells')
             return
         end if
         total = sum(counts)
-        allocate (kinds_(total), nodes(4, total), names(total), named(total), &
+        allocate (kinds_(total), nodes(MAX_CELL_NODES, total), names(total), named(total), &
                   families(total), stat=ios)
         if (ios /= 0) then
             call too_many(st, file, total, 'cells')

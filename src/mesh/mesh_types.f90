@@ -1,5 +1,6 @@
-!> The mesh: nodes, cells (POI1, SEG2, TRIA3, QUAD4) in CSR form, named node groups
-!> (GROUP_NO) and cell groups (GROUP_MA), with hashed name lookup (layer 4, design.md).
+!> The mesh: nodes, cells (POI1, SEG2, SEG3, TRIA3, TRIA6, QUAD4, QUAD8, QUAD9; the types
+!> and their geometry are in mesh_cell_shapes) in CSR form, named node groups (GROUP_NO)
+!> and cell groups (GROUP_MA), with hashed name lookup (layer 4, design.md).
 !>
 !> Readers build a mesh with `mesh_add_node`, `mesh_add_cell`, `mesh_add_node_group`,
 !> `mesh_add_cell_group` and close it with `mesh_finish`; later layers only read it.
@@ -9,15 +10,18 @@ module mesh_types
     use strings, only: to_text
     use mesh_name_index, only: name_index_t, name_add, name_find, name_of, closest_name
     use number_limits, only: MAX_LENGTH, MIN_MESH_EXTENT, is_finite
+    use mesh_cell_shapes, only: CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_SEG3, &
+        CELL_TRIA6, CELL_QUAD8, CELL_QUAD9, N_CELL_TYPES, CELL_TYPE_NAMES, CELL_TYPE_NODES, &
+        CELL_TYPE_CORNERS, CELL_TYPE_DIM, CELL_TYPE_LINEAR, CELL_TYPE_ORDER, MAX_CELL_NODES, &
+        cell_type_of_name, cell_type_is_quadratic, cell_geometric_measure
     implicit none
     private
 
-    !> Cell types (Code_Aster names). Index into CELL_TYPE_NAMES / CELL_TYPE_NODES.
-    integer(i4), parameter, public :: CELL_POI1 = 1, CELL_SEG2 = 2, CELL_TRIA3 = 3, &
-        CELL_QUAD4 = 4, N_CELL_TYPES = 4
-    character(len=5), parameter, public :: CELL_TYPE_NAMES(N_CELL_TYPES) = &
-        ['POI1 ', 'SEG2 ', 'TRIA3', 'QUAD4']
-    integer(i4), parameter, public :: CELL_TYPE_NODES(N_CELL_TYPES) = [1, 2, 3, 4]
+    !> Cell types, re-exported from mesh_cell_shapes (users of the mesh take them here).
+    public :: CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_SEG3, CELL_TRIA6, &
+        CELL_QUAD8, CELL_QUAD9, N_CELL_TYPES, CELL_TYPE_NAMES, CELL_TYPE_NODES, &
+        CELL_TYPE_CORNERS, CELL_TYPE_DIM, CELL_TYPE_LINEAR, CELL_TYPE_ORDER, MAX_CELL_NODES, &
+        cell_type_of_name, cell_type_is_quadratic
 
     !> Kinds of named entity, for lookups and messages.
     integer(i4), parameter, public :: ENTITY_NODE = 1, ENTITY_CELL = 2, &
@@ -51,7 +55,8 @@ module mesh_types
     end type mesh_t
 
     public :: mesh_init, mesh_add_node, mesh_add_cell, mesh_add_node_group, &
-        mesh_add_cell_group, mesh_finish, mesh_release
+        mesh_add_cell_group, mesh_finish, mesh_release, mesh_remove_node_groups, &
+        mesh_remove_cell_groups
     public :: find_node, find_cell, find_node_group, find_cell_group, node_name, cell_name, &
         node_group_name, cell_group_name, cells_of_group, nodes_of_group, nodes_of_cells, &
         cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message, &
@@ -199,6 +204,52 @@ contains
         lines(index) = line
     end subroutine add_group
 
+    !> Removes the GROUP_NO whose flag `remove(g)` is set (DEFI_GROUP/DETR_GROUP_NO); the
+    !> others keep their order, members and lines. O(groups + members).
+    subroutine mesh_remove_node_groups(mesh, remove)
+        type(mesh_t), intent(inout) :: mesh
+        logical, intent(in) :: remove(:)
+        call remove_groups(mesh%node_group_names, mesh%node_group_ptr, &
+            mesh%node_group_items, mesh%node_group_line, mesh%n_node_items, remove)
+    end subroutine mesh_remove_node_groups
+
+    !> Removes the GROUP_MA whose flag `remove(g)` is set (DEFI_GROUP/DETR_GROUP_MA).
+    subroutine mesh_remove_cell_groups(mesh, remove)
+        type(mesh_t), intent(inout) :: mesh
+        logical, intent(in) :: remove(:)
+        call remove_groups(mesh%cell_group_names, mesh%cell_group_ptr, &
+            mesh%cell_group_items, mesh%cell_group_line, mesh%n_cell_items, remove)
+    end subroutine mesh_remove_cell_groups
+
+    ! Rebuilds a group family without the flagged groups (the name index cannot delete:
+    ! the kept names are added again to a new one).
+    subroutine remove_groups(names, ptr, items, lines, n_items, remove)
+        type(name_index_t), intent(inout) :: names
+        integer(i4), allocatable, intent(inout) :: ptr(:), items(:), lines(:)
+        integer(i4), intent(inout) :: n_items
+        logical, intent(in) :: remove(:)
+        type(name_index_t) :: kept
+        integer(i4), allocatable :: new_ptr(:), new_items(:), new_lines(:)
+        integer(i4) :: g, n, index, first, last
+        n = names%count
+        allocate (new_ptr(n + 1), new_items(n_items), new_lines(max(n, 1)))
+        new_ptr(1) = 1
+        do g = 1, n
+            if (remove(g)) cycle
+            call name_add(kept, name_of(names, g), index)
+            first = ptr(g)
+            last = ptr(g + 1) - 1
+            new_items(new_ptr(index):new_ptr(index) + last - first) = items(first:last)
+            new_ptr(index + 1) = new_ptr(index) + last - first + 1
+            new_lines(index) = lines(g)
+        end do
+        n_items = new_ptr(kept%count + 1) - 1
+        names = kept
+        call move_alloc(new_ptr, ptr)
+        call move_alloc(new_items, items)
+        call move_alloc(new_lines, lines)
+    end subroutine remove_groups
+
     !> Trims the work arrays to their final sizes and checks the mesh is not empty.
     !> Errors: no nodes or no cells ("empty mesh").
     subroutine mesh_finish(mesh, line, st)
@@ -226,14 +277,16 @@ contains
         call shrink_int(mesh%cell_group_items, mesh%n_cell_items)
     end subroutine mesh_finish
 
-    ! A SEG2/TRIA3/QUAD4 whose measure is negligible against the mesh size is an error
-    ! (its element matrices and RIGI_PARASOL shares would be meaningless).
+    ! A line or surface cell whose measure is negligible against the mesh size is an error
+    ! (its element matrices and RIGI_PARASOL shares would be meaningless); so is a QUAD4 or
+    ! a quadratic cell with two of its nodes at one place (collapsed: the area test may
+    ! pass, a triangle's, while the isoparametric map is singular there).
     subroutine check_degenerate_cells(mesh, st)
         type(mesh_t), intent(inout) :: mesh
         type(status_t), intent(inout) :: st
         real(dp), parameter :: RELATIVE_TOLERANCE = 1.0e-12_dp
         real(dp) :: size_scale, threshold
-        integer(i4) :: c
+        integer(i4) :: c, ctype
         size_scale = maxval(maxval(mesh%coords(:, 1:mesh%n_nodes), dim=2) &
                             - minval(mesh%coords(:, 1:mesh%n_nodes), dim=2))
         if (size_scale < MIN_MESH_EXTENT .and. any(mesh%cell_type(1:mesh%n_cells) /= &
@@ -246,56 +299,64 @@ contains
             return
         end if
         do c = 1, mesh%n_cells
-            select case (mesh%cell_type(c))
-            case (CELL_SEG2)
+            ctype = mesh%cell_type(c)
+            select case (CELL_TYPE_DIM(ctype))
+            case (1)
                 threshold = RELATIVE_TOLERANCE * size_scale
-            case (CELL_TRIA3, CELL_QUAD4)
+            case (2)
                 threshold = RELATIVE_TOLERANCE * size_scale**2
             case default
                 cycle
             end select
-            if (mesh%cell_type(c) == CELL_QUAD4) then
-                call check_corners(c, RELATIVE_TOLERANCE * size_scale)
+            if (ctype == CELL_QUAD4 .or. cell_type_is_quadratic(ctype)) then
+                call check_distinct_nodes(c, RELATIVE_TOLERANCE * size_scale)
                 if (st%failed()) return
             end if
             if (cell_measure(mesh, c) <= threshold) then
                 call set_error(st, STATUS_MESH_ERROR, 'degenerate cell ' // cell_name(mesh, c) &
-                    // ': its ' // trim(CELL_TYPE_NAMES(mesh%cell_type(c))) // ' has zero ' // &
-                    trim(merge('length', 'area  ', mesh%cell_type(c) == CELL_SEG2)), &
+                    // ': its ' // trim(CELL_TYPE_NAMES(ctype)) // ' has zero ' // &
+                    trim(merge('length', 'area  ', CELL_TYPE_DIM(ctype) == 1)), &
                     file=mesh%file, line=mesh%cell_line(c))
                 return
             end if
         end do
     contains
-        ! Two corners of QUAD4 c closer than `tolerance` (or the same node twice): the cell
-        ! is a collapsed quadrangle, whose area test may still pass (a triangle's) while its
-        ! bilinear map is singular at the collapsed corner.
-        subroutine check_corners(c, tolerance)
+        ! Two nodes of cell c closer than `tolerance` (or the same node twice).
+        subroutine check_distinct_nodes(c, tolerance)
             integer(i4), intent(in) :: c
             real(dp), intent(in) :: tolerance
-            integer(i4) :: i, j, p0
+            integer(i4) :: i, j, p0, nn
+            character(len=:), allocatable :: need, what
             p0 = mesh%cell_ptr(c) - 1
-            do i = 1, 3
-                do j = i + 1, 4
+            nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+            if (mesh%cell_type(c) == CELL_QUAD4) then
+                need = ' (a QUAD4 needs four distinct corners)'
+                what = 'corner'
+            else
+                need = ' (a ' // trim(CELL_TYPE_NAMES(mesh%cell_type(c))) // ' needs ' // &
+                    to_text(nn) // ' distinct nodes)'
+                what = 'node'
+            end if
+            do i = 1, nn - 1
+                do j = i + 1, nn
                     if (norm2(mesh%coords(:, mesh%cell_nodes(p0 + i)) - &
                               mesh%coords(:, mesh%cell_nodes(p0 + j))) > tolerance) cycle
                     if (mesh%cell_nodes(p0 + i) == mesh%cell_nodes(p0 + j)) then
                         call set_error(st, STATUS_MESH_ERROR, 'cell ' // cell_name(mesh, c) // &
                             ': node ' // node_name(mesh, mesh%cell_nodes(p0 + i)) // &
-                            ' is corner ' // to_text(i) // ' and corner ' // to_text(j) // &
-                            ' (a QUAD4 needs four distinct corners)', file=mesh%file, &
-                            line=mesh%cell_line(c))
+                            ' is ' // what // ' ' // to_text(i) // ' and ' // what // ' ' // &
+                            to_text(j) // need, file=mesh%file, line=mesh%cell_line(c))
                     else
                         call set_error(st, STATUS_MESH_ERROR, 'cell ' // cell_name(mesh, c) // &
-                            ': its corners ' // node_name(mesh, mesh%cell_nodes(p0 + i)) // &
-                            ' and ' // node_name(mesh, mesh%cell_nodes(p0 + j)) // &
-                            ' coincide (a QUAD4 needs four distinct corners)', &
+                            ': its ' // what // 's ' // &
+                            node_name(mesh, mesh%cell_nodes(p0 + i)) // ' and ' // &
+                            node_name(mesh, mesh%cell_nodes(p0 + j)) // ' coincide' // need, &
                             file=mesh%file, line=mesh%cell_line(c))
                     end if
                     return
                 end do
             end do
-        end subroutine check_corners
+        end subroutine check_distinct_nodes
     end subroutine check_degenerate_cells
 
     !> Number of GROUP_NO / GROUP_MA.
@@ -468,11 +529,12 @@ contains
 
     !> Measure of cell `c`: 0 for POI1, length for SEG2, area for TRIA3 (half the cross
     !> product) and QUAD4 (2 x 2 Gauss integration of |x_xi x x_eta| over the bilinear
-    !> surface, exact for a plane quadrilateral, accurate for a warped one).
+    !> surface, exact for a plane quadrilateral, accurate for a warped one); quadratic cells
+    !> by mesh_cell_shapes' cell_geometric_measure (exact for straight-sided plane cells).
     real(dp) function cell_measure(mesh, c) result(measure)
         type(mesh_t), intent(in) :: mesh
         integer(i4), intent(in) :: c
-        real(dp) :: x(3, 4), dxi(3), deta(3), xi, eta
+        real(dp) :: x(3, MAX_CELL_NODES), dxi(3), deta(3), xi, eta
         real(dp), parameter :: g = 0.577350269189625764509148780502_dp  ! 1/sqrt(3)
         integer(i4) :: n, i, j
         n = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
@@ -495,6 +557,8 @@ contains
                     measure = measure + norm2(cross(dxi, deta))   ! weight 1 per point
                 end do
             end do
+        case (CELL_SEG3, CELL_TRIA6, CELL_QUAD8, CELL_QUAD9)
+            measure = cell_geometric_measure(mesh%cell_type(c), x(:, 1:n))
         case default
             measure = 0.0_dp
         end select
@@ -521,16 +585,18 @@ contains
     function mesh_summary(mesh) result(lines)
         type(mesh_t), intent(in) :: mesh
         character(len=100), allocatable :: lines(:)
-        integer(i4) :: t, g, k
+        integer(i4) :: t, g, k, k_type, n_of_type
         character(len=100) :: buf
         allocate (lines(6 + N_CELL_TYPES + n_node_groups(mesh) + n_cell_groups(mesh)))
         k = 0
         call put('MESH ' // mesh%file // ' (dimension ' // to_text(mesh%dim) // ')')
         call put('  nodes          ' // to_text(mesh%n_nodes))
         call put('  cells          ' // to_text(mesh%n_cells))
-        do t = 1, N_CELL_TYPES
-            call put('    ' // CELL_TYPE_NAMES(t) // '        ' // &
-                     to_text(count(mesh%cell_type(1:mesh%n_cells) == t, kind=i4)))
+        do k_type = 1, N_CELL_TYPES          ! the types present, in Code_Aster's order
+            t = CELL_TYPE_ORDER(k_type)
+            n_of_type = count(mesh%cell_type(1:mesh%n_cells) == t, kind=i4)
+            if (n_of_type > 0) call put('    ' // CELL_TYPE_NAMES(t) // '        ' // &
+                                        to_text(n_of_type))
         end do
         do g = 1, n_node_groups(mesh)
             call put('  GROUP_NO ' // node_group_name(mesh, g) // ' ' // &

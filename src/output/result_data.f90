@@ -17,9 +17,16 @@ module result_data
     implicit none
     private
 
-    !> Cell types the writers know (Code_Aster names POI1, SEG2, TRIA3, QUAD4).
+    !> Cell types the writers know (Code_Aster names POI1, SEG2, TRIA3, QUAD4, SEG3, TRIA6,
+    !> QUAD8, QUAD9; nodes in Code_Aster's order, which VTK and Gmsh share for these).
     integer, parameter, public :: RESULT_CELL_POI1 = 1, RESULT_CELL_SEG2 = 2, &
-                                  RESULT_CELL_TRIA3 = 3, RESULT_CELL_QUAD4 = 4
+                                  RESULT_CELL_TRIA3 = 3, RESULT_CELL_QUAD4 = 4, &
+                                  RESULT_CELL_SEG3 = 5, RESULT_CELL_TRIA6 = 6, &
+                                  RESULT_CELL_QUAD8 = 7, RESULT_CELL_QUAD9 = 8
+    !> Names and node counts of the RESULT_CELL_* codes.
+    character(len=5), parameter :: RESULT_CELL_NAMES(8) = ['POI1 ', 'SEG2 ', 'TRIA3', &
+        'QUAD4', 'SEG3 ', 'TRIA6', 'QUAD8', 'QUAD9']
+    integer, parameter :: RESULT_CELL_NODES(8) = [1, 2, 3, 4, 3, 6, 8, 9]
 
     !> One field at the nodes at one instant.
     type, public :: node_field_t
@@ -52,57 +59,32 @@ module result_data
 
 contains
 
-    !> RESULT_CELL_* code of a Code_Aster cell type name (POI1, SEG2, TRIA3, QUAD4), 0 if
-    !> unknown.
+    !> RESULT_CELL_* code of a Code_Aster cell type name (POI1, SEG2, TRIA3, QUAD4, SEG3,
+    !> TRIA6, QUAD8, QUAD9), 0 if unknown.
     pure integer function cell_type_from_name(name)
         character(len=*), intent(in) :: name
-        select case (to_upper(trim(name)))
-        case ('POI1')
-            cell_type_from_name = RESULT_CELL_POI1
-        case ('SEG2')
-            cell_type_from_name = RESULT_CELL_SEG2
-        case ('TRIA3')
-            cell_type_from_name = RESULT_CELL_TRIA3
-        case ('QUAD4')
-            cell_type_from_name = RESULT_CELL_QUAD4
-        case default
-            cell_type_from_name = 0
-        end select
+        integer :: t
+        cell_type_from_name = 0
+        do t = 1, size(RESULT_CELL_NAMES)
+            if (to_upper(trim(name)) == trim(RESULT_CELL_NAMES(t))) cell_type_from_name = t
+        end do
     end function cell_type_from_name
 
     !> Name of a RESULT_CELL_* code ('?' if unknown).
     pure function cell_type_name(cell_type) result(name)
         integer, intent(in) :: cell_type
         character(len=:), allocatable :: name
-        select case (cell_type)
-        case (RESULT_CELL_POI1)
-            name = 'POI1'
-        case (RESULT_CELL_SEG2)
-            name = 'SEG2'
-        case (RESULT_CELL_TRIA3)
-            name = 'TRIA3'
-        case (RESULT_CELL_QUAD4)
-            name = 'QUAD4'
-        case default
-            name = '?'
-        end select
+        name = '?'
+        if (cell_type >= 1 .and. cell_type <= size(RESULT_CELL_NAMES)) &
+            name = trim(RESULT_CELL_NAMES(cell_type))
     end function cell_type_name
 
     !> Number of nodes of a RESULT_CELL_* type (0 if unknown).
     elemental integer function cell_node_count(cell_type)
         integer, intent(in) :: cell_type
-        select case (cell_type)
-        case (RESULT_CELL_POI1)
-            cell_node_count = 1
-        case (RESULT_CELL_SEG2)
-            cell_node_count = 2
-        case (RESULT_CELL_TRIA3)
-            cell_node_count = 3
-        case (RESULT_CELL_QUAD4)
-            cell_node_count = 4
-        case default
-            cell_node_count = 0
-        end select
+        cell_node_count = 0
+        if (cell_type >= 1 .and. cell_type <= size(RESULT_CELL_NODES)) &
+            cell_node_count = RESULT_CELL_NODES(cell_type)
     end function cell_node_count
 
     !> Checks the shapes and contents of a mesh given to a writer.

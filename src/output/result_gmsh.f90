@@ -13,8 +13,7 @@ module result_gmsh
     use status, only: status_t, set_error, STATUS_INTERNAL
     use atomic_file, only: atomic_file_t, open_atomic
     use result_data, only: node_field_t, point_array_t, check_result_mesh, check_node_field, &
-                           expand_node_field, RESULT_CELL_POI1, RESULT_CELL_SEG2, &
-                           RESULT_CELL_TRIA3, RESULT_CELL_QUAD4, cell_array_t, &
+                           expand_node_field, cell_array_t, &
                            check_cell_array
     use strings, only: to_text
     implicit none
@@ -30,18 +29,11 @@ contains
     !> Gmsh element type of a RESULT_CELL_* code (0 if unknown).
     elemental integer function gmsh_element_type(cell_type)
         integer, intent(in) :: cell_type
-        select case (cell_type)
-        case (RESULT_CELL_POI1)
-            gmsh_element_type = 15
-        case (RESULT_CELL_SEG2)
-            gmsh_element_type = 1
-        case (RESULT_CELL_TRIA3)
-            gmsh_element_type = 2
-        case (RESULT_CELL_QUAD4)
-            gmsh_element_type = 3
-        case default
-            gmsh_element_type = 0
-        end select
+        ! point, line, triangle, quadrangle, 3-node line, 6-node triangle, 8-node and
+        ! 9-node quadrangles (Gmsh's MSH element types), in RESULT_CELL_* order
+        integer, parameter :: CODES(8) = [15, 1, 2, 3, 8, 9, 16, 10]
+        gmsh_element_type = 0
+        if (cell_type >= 1 .and. cell_type <= size(CODES)) gmsh_element_type = CODES(cell_type)
     end function gmsh_element_type
 
     !> Writes the mesh and every field of every instant to one `.msh` file.

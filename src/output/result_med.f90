@@ -22,11 +22,11 @@ module result_med
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_INTERNAL
     use strings, only: string_t, to_text
-    use atomic_file, only: rename_file, delete_file
-    use system_error, only: process_id
+    use atomic_file, only: delete_file, temporary_path, track_temporary, untrack_temporary, &
+        publish_file
     use mesh_types, only: mesh_t, node_name, cell_name, n_node_groups, n_cell_groups, &
-        nodes_of_group, cells_of_group, node_group_name, cell_group_name, CELL_POI1, &
-        CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_TYPE_NODES
+        nodes_of_group, cells_of_group, node_group_name, cell_group_name, N_CELL_TYPES, &
+        CELL_TYPE_ORDER, CELL_TYPE_NODES
     use mesh_name_index, only: name_index_t, name_add
     use med_file, only: med_file_t, med_open, med_close, med_mesh_count, med_mesh_info, &
         med_count, med_create_mesh, med_write_coordinates, med_write_connectivity, &
@@ -42,11 +42,11 @@ module result_med
     character(len=*), parameter :: MESH_DESCRIPTION = 'written by parasol'
     !> Name of the family of entities in no group (irmmfa).
     character(len=*), parameter :: NULL_FAMILY = 'FAMILLE_NULLE'
-    !> Cell types in the order they are written, with their MED type codes (med.h).
-    integer, parameter :: N_TYPES = 4
-    integer(i4), parameter :: WRITE_TYPES(N_TYPES) = [CELL_POI1, CELL_SEG2, CELL_TRIA3, &
-        CELL_QUAD4]
-    integer(i4), parameter :: MED_CODES(N_TYPES) = [1, 102, 203, 204]
+    !> Cell types in the order they are written (Code_Aster's catalogue order, in which
+    !> LIRE_MAILLAGE numbers them back), with their MED type codes (med.h).
+    integer, parameter :: N_TYPES = N_CELL_TYPES
+    integer(i4), parameter :: WRITE_TYPES(N_TYPES) = CELL_TYPE_ORDER
+    integer(i4), parameter :: MED_CODES(N_TYPES) = [1, 102, 103, 203, 206, 204, 208, 209]
 
     type :: int_list_t
         integer(i4), allocatable :: items(:)
@@ -77,8 +77,9 @@ contains
         logical, intent(in) :: append
         type(status_t), intent(out) :: st
         out%path = path
-        out%temp_path = path // '.' // to_text(int(process_id(), i4)) // '.partial'
+        out%temp_path = temporary_path(path)
         allocate (out%profile_names(0), out%profile_nodes(0))
+        call track_temporary(out%temp_path)
         if (append) then
             call copy_file(path, out%temp_path, st)
             if (st%failed()) return
@@ -87,6 +88,7 @@ contains
             call med_open(out%file, out%temp_path, MED_CREATE, st)
         end if
         if (st%failed()) then
+            call untrack_temporary(out%temp_path)
             call delete_file(out%temp_path)
             return
         end if
@@ -98,24 +100,22 @@ contains
     subroutine med_output_commit(out, st)
         type(med_output_t), intent(inout) :: out
         type(status_t), intent(out) :: st
-        integer :: ios
         call med_close(out%file, st)
         if (st%failed()) then
+            call untrack_temporary(out%temp_path)
             call delete_file(out%temp_path)
             return
         end if
-        call rename_file(out%temp_path, out%path, ios)
-        if (ios /= 0) then
-            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // out%path)
-            call delete_file(out%temp_path)
-        end if
+        call publish_file(out%temp_path, out%path, st)
     end subroutine med_output_commit
 
     !> Closes and deletes the temporary file: the final name is left untouched.
     subroutine med_output_discard(out)
         type(med_output_t), intent(inout) :: out
         call med_close(out%file)
-        if (allocated(out%temp_path)) call delete_file(out%temp_path)
+        if (.not. allocated(out%temp_path)) return
+        call untrack_temporary(out%temp_path)
+        call delete_file(out%temp_path)
     end subroutine med_output_discard
 
     !> The MED field name of field `field` of result `result` (mdnoch): the result name's

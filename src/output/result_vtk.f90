@@ -13,8 +13,7 @@ module result_vtk
     use strings, only: string_t, to_text
     use atomic_file, only: atomic_file_t, open_atomic
     use result_data, only: node_field_t, point_array_t, check_result_mesh, check_node_field, &
-                           expand_node_field, RESULT_CELL_POI1, RESULT_CELL_SEG2, &
-                           RESULT_CELL_TRIA3, RESULT_CELL_QUAD4, cell_array_t, &
+                           expand_node_field, cell_array_t, &
                            check_cell_array
     implicit none
     private
@@ -29,18 +28,11 @@ contains
     !> VTK cell type of a RESULT_CELL_* code (0 if unknown).
     elemental integer function vtk_cell_type(cell_type)
         integer, intent(in) :: cell_type
-        select case (cell_type)
-        case (RESULT_CELL_POI1)
-            vtk_cell_type = 1
-        case (RESULT_CELL_SEG2)
-            vtk_cell_type = 3
-        case (RESULT_CELL_TRIA3)
-            vtk_cell_type = 5
-        case (RESULT_CELL_QUAD4)
-            vtk_cell_type = 9
-        case default
-            vtk_cell_type = 0
-        end select
+        ! VTK_VERTEX, LINE, TRIANGLE, QUAD, QUADRATIC_EDGE, QUADRATIC_TRIANGLE,
+        ! QUADRATIC_QUAD, BIQUADRATIC_QUAD (vtkCellType.h), in RESULT_CELL_* order
+        integer, parameter :: CODES(8) = [1, 3, 5, 9, 21, 22, 23, 28]
+        vtk_cell_type = 0
+        if (cell_type >= 1 .and. cell_type <= size(CODES)) vtk_cell_type = CODES(cell_type)
     end function vtk_cell_type
 
     !> Writes one instant as a `.vtu` file.

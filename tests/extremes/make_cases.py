@@ -28,7 +28,7 @@ import slab_reference  # noqa: E402
 
 INST1 = r"error: STAT_NON_LINE: INST 1\.0+E\+00: "
 NO_EQUILIBRIUM = INST1 + r"no equilibrium: "
-NODE = r"at node N[0-9]+ component D[XYZ] \(pivot lost [0-9.]+ digits, NPREC = {nprec}\)"
+NODE = r"at node N[0-9]+ component DR?[XYZ] \(pivot lost [0-9.]+ digits, NPREC = {nprec}\)"
 # a pivot at round-off level (>= 12 digits lost): nothing holds the equation
 FREE = INST1 + r"singular matrix " + NODE + r", [0-9]+ pivot\(s\) flagged: the equation is free"
 # more digits lost than NPREC, fewer than 12: held, but too ill-conditioned for NPREC

@@ -1,0 +1,143 @@
+!> The catalog of the commands that make and transform fields: CREA_CHAMP, CALC_CHAMP,
+!> POST_CHAMP, CREA_RESU (doc/architecture.md, "Fields and results"). Part of THE command
+!> catalog (deck_catalog_data gathers the parts): keywords, types, cardinality, defaults
+!> mirroring Code_Aster's (code_aster/Cata/Commands/<command>.py and its U4 documents),
+!> allowed values and rules, as data.
+module catalog_fields
+    use kinds, only: dp
+    implicit none
+    private
+
+    !> The field names of Code_Aster's results (code_aster/Cata/Commons/c_nom_cham_into.py,
+    !> C_NOM_CHAM_INTO): what NOM_CHAM accepts in TEST_RESU, IMPR_RESU, CREA_CHAMP EXTR...
+    !> A name parasol does not compute is refused when the command runs, naming what the
+    !> result holds.
+    character(len=*), parameter, public :: NOM_CHAM_NAMES = &
+        'EFGE_ELGA EFGE_ELNO EGRU_ELNO EFGE_NOEU SIEF_ELGA SIEF_ELNO SIMY_ELGA SIEF_NOEU ' // &
+        'SIGM_ELGA SIGM_ELNO SIGM_NOEU SIPM_ELNO SIPO_ELNO SIPO_NOEU SIRO_ELEM STRX_ELGA ' // &
+        'DEGE_ELGA DEGE_ELNO DEGE_NOEU EPFD_ELGA EPFD_ELNO EPFD_NOEU EPFP_ELGA EPFP_ELNO ' // &
+        'EPFP_NOEU EPME_ELGA EPME_ELNO EPME_NOEU EPMG_ELGA EPMG_ELNO EPMG_NOEU EPSG_ELGA ' // &
+        'EPSG_ELNO EPSG_NOEU EPSI_ELGA EPSI_ELNO EPSI_NOEU EPSP_ELGA EPSP_ELNO EPSP_NOEU ' // &
+        'EPVC_ELGA EPVC_ELNO EPVC_NOEU EPSL_ELGA EPSL_ELNO EPSL_NOEU DISS_ELEM DISS_ELGA ' // &
+        'DISS_ELNO DISS_NOEU ECIN_ELEM ENEL_ELEM ENEL_ELGA ENEL_ELNO ENEL_NOEU ENTR_ELEM ' // &
+        'EPOT_ELEM ETOT_ELEM ETOT_ELGA ETOT_ELNO ETOT_NOEU DERA_ELGA DERA_ELNO DERA_NOEU ' // &
+        'ENDO_ELGA ENDO_ELNO ENDO_NOEU EPEQ_ELGA EPEQ_ELNO EPEQ_NOEU EPGQ_ELGA EPGQ_ELNO ' // &
+        'EPGQ_NOEU EPMQ_ELGA EPMQ_ELNO EPMQ_NOEU INDL_ELGA PDIL_ELGA SIEQ_ELGA SIEQ_ELNO ' // &
+        'SIEQ_NOEU VARC_ELGA VARC_ELNO VARC_NOEU VARI_ELNO VARI_NOEU FLHN_ELGA TEMP_ELGA ' // &
+        'FLUX_ELGA FLUX_ELNO FLUX_NOEU GRAT_ELGA GRAT_ELNO GRAT_NOEU HYDR_ELGA HYDR_ELNO ' // &
+        'HYDR_NOEU SOUR_ELGA ETHE_ELEM HHO_TEMP DIFF_ELGA DIFF_ELNO DIFF_NOEU HYGR_ELGA ' // &
+        'HYGR_ELNO HYGR_NOEU PRAC_ELNO PRAC_NOEU PRME_ELNO INTE_ELNO INTE_NOEU FORC_NODA ' // &
+        'REAC_NODA SIZ1_NOEU ERZ1_ELEM SIZ2_NOEU ERZ2_ELEM ERME_ELEM ERME_ELNO ERME_NOEU ' // &
+        'QIRE_ELEM QIRE_ELNO QIRE_NOEU QIZ1_ELEM QIZ2_ELEM SING_ELEM SING_ELNO ERTH_ELEM ' // &
+        'ERTH_ELNO ERTH_NOEU DURT_ELNO DURT_NOEU META_ELNO META_NOEU ACCE ACCE_ABSOLU DEPL ' // &
+        'DEPL_ABSOLU HHO_DEPL TEMP VITE HHO_VITE CONT_NOEU CONT_ELEM VARI_ELGA VITE_ABSOLU ' // &
+        'DEPL_ELGA SECH MATE_ELGA MATE_ELEM COMPORTEMENT COMPORTHER DEPL_VIBR DIVU EPSA_ELNO ' // &
+        'EPSA_NOEU FERR_ELEM MARG_ELEM FSUR_2D FSUR_3D FVOL_2D FVOL_3D COEF_H T_EXT IRRA ' // &
+        'MODE_FLAMB MODE_STAB NEUT PRES PRES_NOEU PTOT RESI_NOEU RESI_RELA_NOEU SISE_ELNO ' // &
+        'VITE_VENT'
+
+    !> The physical quantities of TYPE_CHAM (the fields layer's FIELD_QUANTITY_NAMES;
+    !> test_catalog_fields checks that the two lists agree).
+    character(len=*), parameter, public :: TYPE_CHAM_QUANTITIES = 'DEPL_R DEPL_F SIEF_R ' // &
+        'EPSI_R TEMP_R TEMP_F NEUT_R NEUT_F GEOM_R ENER_R VARI_R HYDR_R ERRE_R SING_R ' // &
+        'FER2_R FORC_R FORC_F PRES_R PRES_F'
+    !> The locations of TYPE_CHAM (Code_Aster's C_TYPE_CHAM_INTO: <location>_<quantity>).
+    character(len=*), parameter, public :: TYPE_CHAM_LOCATIONS = 'NOEU ELGA ELNO ELEM CART'
+
+    public :: describe_fields, type_cham_names
+
+contains
+
+    !> Every TYPE_CHAM parasol makes: each location with each quantity.
+    function type_cham_names() result(text)
+        use deck_catalog, only: split_words
+        use strings, only: string_t
+        character(len=:), allocatable :: text
+        type(string_t), allocatable :: locations(:), quantities(:)
+        integer :: i, j
+        call split_words(TYPE_CHAM_LOCATIONS, locations)
+        call split_words(TYPE_CHAM_QUANTITIES, quantities)
+        text = ''
+        do i = 1, size(locations)
+            do j = 1, size(quantities)
+                text = text // ' ' // locations(i)%s // '_' // quantities(j)%s
+            end do
+        end do
+    end function type_cham_names
+
+    !> CREA_CHAMP (code_aster/Cata/Commands/crea_champ.py, U4.72.04): its blocks by
+    !> OPERATION are flattened here (the catalog has no conditional blocks); what belongs to
+    !> which operation is checked by the handler (post/crea_champ_command), located.
+    subroutine describe_fields(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_UN_PARMI, RULE_EXCLUS, &
+            RULE_AU_MOINS_UN, RULE_PRESENT_PRESENT
+        use catalog_common, only: OUI_NON
+        type(catalog_t), intent(inout) :: c
+        call c%command('CREA_CHAMP', '@TYPE_CHAM', reentrant='f:CHAM_GD')
+        call c%key('TYPE_CHAM', 'TXM', req=.true., into=type_cham_names())
+        call c%key('OPERATION', 'TXM', req=.true., into='AFFE ASSE ASSE_DEPL EVAL EXTR ' // &
+            'DISC NORMALE R2C C2R COMB')
+        call c%key('NUME_DDL', 'nume_ddl_sdaster', noop=.true.)
+        call c%key('CHAM_NO', 'cham_no_sdaster', noop=.true.)
+        call c%rule(RULE_EXCLUS, 'NUME_DDL CHAM_NO')
+        call c%key('PROL_ZERO', 'TXM', def='NON', into=OUI_NON)
+        call c%key('OPTION', 'TXM', noop=.true.)
+        call c%fact('AFFE_SP', noop=.true.)
+        call c%key('CARA_ELEM', 'cara_elem', req=.true.)
+        call c%end_fact()
+        call c%key('MAILLAGE', 'maillage')
+        call c%key('MODELE', 'modele')
+        call c%rule(RULE_EXCLUS, 'MAILLAGE MODELE')
+        call c%key('GROUP_MA', 'TXM', max=MANY)                 ! OPERATION='NORMALE'
+        call c%fact('AFFE', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('NOEUD', 'TXM', max=MANY)
+        call c%key('MAILLE', 'TXM', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_MA GROUP_NO NOEUD MAILLE')
+        call c%key('NOM_CMP', 'TXM', max=MANY, req=.true.)
+        call c%key('VALE', 'R', max=MANY)
+        call c%key('VALE_I', 'I', max=MANY)
+        call c%key('VALE_F', 'FUNC', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'VALE VALE_I VALE_F')
+        call c%end_fact()
+        call c%fact('ASSE', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_MA GROUP_NO')
+        call c%key('CHAM_GD', 'CHAM_GD', req=.true.)
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%key('NOM_CMP_RESU', 'TXM', max=MANY)
+        call c%rule(RULE_PRESENT_PRESENT, 'NOM_CMP_RESU NOM_CMP')
+        call c%key('CUMUL', 'TXM', def='NON', into=OUI_NON)
+        call c%key('COEF_R', 'R', def='1.0')
+        call c%end_fact()
+        call c%fact('COMB', max=MANY)
+        call c%key('CHAM_GD', 'cham_no_sdaster', req=.true.)
+        call c%key('COEF_R', 'R', req=.true.)
+        call c%end_fact()
+        call c%key('CHAM_F', 'CHAM_GD')
+        call c%key('CHAM_PARA', 'CHAM_GD', max=MANY)
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('PARTIE', 'TXM', into='REEL IMAG MODULE PHASE')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%key('CHARGE', 'char_meca')
+        call c%key('NOM_CHAM', 'TXM', into=NOM_CHAM_NAMES // ' GEOMETRIE ABSC_CURV')
+        call c%key('TYPE_MAXI', 'TXM', into='MAXI MINI MAXI_ABS MINI_ABS NORM_TRAN')
+        call c%key('TYPE_RESU', 'TXM', into='VALE INST VALE_ABS NUME_ORDRE')
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('LIST_INST', 'listr8')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%rule(RULE_EXCLUS, 'NUME_ORDRE INST TOUT_ORDRE LIST_INST')
+        call c%key('INTERPOL', 'TXM', def='NON', into='NON LIN')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('TITRE', 'TXM', noop=.true.)
+    end subroutine describe_fields
+
+end module catalog_fields
