@@ -100,7 +100,8 @@ module assembly_system
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
-        spring_lines, linear_product, body_product, support_product, is_body_cell
+        spring_lines, linear_product, body_product, support_product, is_body_cell, &
+        cell_response
 
 contains
 
