@@ -10,6 +10,7 @@ module command_registration
     use impr_resu_command, only: run_impr_resu
     use crea_champ_command, only: run_crea_champ
     use calc_champ_command, only: run_calc_champ
+    use crea_resu_command, only: run_crea_resu
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage
@@ -48,6 +49,7 @@ contains
         call ctx%register('IMPR_RESU', run_impr_resu)
         call ctx%register('CREA_CHAMP', run_crea_champ)
         call ctx%register('CALC_CHAMP', run_calc_champ, reuse=.true.)
+        call ctx%register('CREA_RESU', run_crea_resu, reuse=.true.)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)

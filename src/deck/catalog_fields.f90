@@ -139,7 +139,46 @@ contains
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%key('TITRE', 'TXM', noop=.true.)
         call describe_calc_champ(c)
+        call describe_crea_resu(c)
     end subroutine describe_fields
+
+    !> CREA_RESU (code_aster/Cata/Commands/crea_resu.py, U4.44.12): its result type is
+    !> TYPE_RESU's ('@TYPE_RESU'); the AFFE block's keywords; the other operations are
+    !> refused by the handler as not built.
+    subroutine describe_crea_resu(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+        type(catalog_t), intent(inout) :: c
+        call c%command('CREA_RESU', '@TYPE_RESU', reentrant='f:RESULTAT')
+        call c%key('OPERATION', 'TXM', req=.true., into='AFFE ASSE PERM_CHAM PROL_RTZ ' // &
+            'PREP_VARC KUCV CONV_CHAR CONV_RESU')
+        call c%key('TYPE_RESU', 'TXM', req=.true., into='MODE_MECA MODE_MECA_C MULT_ELAS ' // &
+            'EVOL_ELAS EVOL_NOLI DYNA_HARMO DYNA_TRANS FOURIER_ELAS FOURIER_THER EVOL_THER ' // &
+            'EVOL_VARC EVOL_CHAR EVOL_SECH')
+        call c%key('RESULTAT', 'RESU')
+        call c%fact('AFFE', max=MANY)
+        call c%key('CHAM_GD', 'CHAM_GD', req=.true.)
+        call c%key('NOM_CHAM', 'TXM', req=.true., into=NOM_CHAM_NAMES // ' FLUN')
+        call c%key('MODELE', 'modele')
+        call c%key('CHAM_MATER', 'cham_mater')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%key('CHARGE', 'char_meca', max=MANY, noop=.true.)
+        call c%key('NOM_CAS', 'TXM')
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'INST LIST_INST NOM_CAS')
+        call c%key('NUME_INIT', 'I', vmin=1.0_dp)
+        call c%key('NUME_FIN', 'I', vmin=1.0_dp)
+        call c%key('PRECISION', 'R', def='0.0', vmin=0.0_dp)
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%end_fact()
+        call c%fact('PREP_VARC')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('CARA_ELEM', 'cara_elem', req=.true.)
+        call c%key('EVOL_THER', 'evol_ther', req=.true.)
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('TITRE', 'TXM', noop=.true.)
+    end subroutine describe_crea_resu
 
     !> CALC_CHAMP (code_aster/Cata/Commands/calc_champ.py, U4.81.04): the result's own type
     !> ('@RESULTAT'); the options of each keyword are Code_Aster's for linear and non-linear
