@@ -103,7 +103,8 @@ module assembly_system
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
-        spring_lines, linear_product
+        spring_lines, linear_product, body_product, support_product, is_body_cell, &
+        cell_response
 
 contains
 
@@ -844,7 +845,10 @@ contains
     !>  closed : out, (size(map%springs)) status of each DIS_CHOC spring
     !>  fn     : out, (size(map%springs)) normal force of each (<= 0 when closed)
     !>  history: in, optional, DIS_CONTACT state at the start of the step
-    subroutine internal_forces(s, map, u, fint, closed, fn, st, history)
+    !>  u_body : in, optional, (n_equations) what the plates and plane solids see: u minus
+    !>           the rigid modes the analysis keeps apart (their forces are zero, and
+    !>           leaving them out keeps the round-off of the stiff bodies' forces off them)
+    subroutine internal_forces(s, map, u, fint, closed, fn, st, history, u_body)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -852,18 +856,26 @@ contains
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
         type(contact_history_t), intent(in), optional :: history
+        real(dp), intent(in), optional :: u_body(:)
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: f
-        logical :: is_closed
+        logical :: is_closed, body
         fint = 0.0_dp
         i_spring = 0
         do k = 1, size(map%cells)
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st, map, history)
+            body = .false.
+            if (present(u_body)) body = is_body_cell(s, c)
+            if (body) then
+                call cell_response(s, c, gather(u_body, eqs, n), n, .false., .false., ke, &
+                    fe, is_closed, f, st, map, history)
+            else
+                call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
+                    is_closed, f, st, map, history)
+            end if
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
@@ -895,8 +907,11 @@ contains
     !>           tangent matrix at u_ref, and closed/fn are their state at u_ref. This is
     !>           the force of Code_Aster's prediction with imposed-value increments (the
     !>           second member of nsassp: the increments enter through the matrix).
+    !>  du_body: in, optional, (n_equations) the increment the plates and plane solids see:
+    !>           du minus the rigid modes the analysis keeps apart (K_lin R = 0; leaving
+    !>           them out keeps their round-off off f_lin)
     subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st, cache, &
-                                           u_ref, elastic_ref, history)
+                                           u_ref, elastic_ref, history, du_body)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:), du(:)
@@ -908,6 +923,7 @@ contains
         real(dp), intent(in), optional :: u_ref(:)
         logical, intent(in), optional :: elastic_ref
         type(contact_history_t), intent(in), optional :: history
+        real(dp), intent(in), optional :: du_body(:)
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: ue(MAX_ELEMENT_DOFS), ur(MAX_ELEMENT_DOFS)
@@ -917,7 +933,11 @@ contains
         if (present(cache)) then
             if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
             if (st%failed()) return
-            call add_cached_linear_forces(cache, du, flin)
+            if (present(du_body)) then
+                call add_cached_linear_forces(cache, du_body, flin)
+            else
+                call add_cached_linear_forces(cache, du, flin)
+            end if
         else
             do k = 1, size(map%cells)
                 c = map%cells(k)
@@ -925,8 +945,13 @@ contains
                 if (.not. linear) cycle
                 call element_equations(s, c, eqs, n)
                 call size_element_arrays(n, ke, fe)
-                call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, fe, &
-                    is_closed, f, st)
+                if (present(du_body)) then
+                    call cell_response(s, c, gather(du_body, eqs, n), n, .false., .false., &
+                        ke, fe, is_closed, f, st)
+                else
+                    call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, &
+                        fe, is_closed, f, st)
+                end if
                 if (st%failed()) return
                 do j = 1, n
                     if (eqs(j) > 0) flin(eqs(j)) = flin(eqs(j)) + fe(j)
@@ -1065,21 +1090,26 @@ contains
     !>  cache : inout, the linear cells' matrices (built on the first call if needed)
     !>  du    : in, (n_equations); f : out, (n_equations)
     !>  st    : out, element failures, naming the cell
-    subroutine linear_product(s, map, cache, du, f, st)
+    !>  support_only : in, optional, .true.: leave the plates and plane solids (the cached
+    !>          cells, body_product) out
+    subroutine linear_product(s, map, cache, du, f, st, support_only)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(linear_cache_t), intent(inout) :: cache
         real(dp), intent(in) :: du(:)
         real(dp), intent(out) :: f(:)
         type(status_t), intent(out) :: st
+        logical, intent(in), optional :: support_only
         integer(i4) :: k, c, n, j, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: ue(MAX_ELEMENT_DOFS), fn
-        logical :: closed
+        logical :: closed, body
         if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
         if (st%failed()) return
         f = 0.0_dp
-        call add_cached_linear_forces(cache, du, f)
+        body = .true.
+        if (present(support_only)) body = .not. support_only
+        if (body) call add_cached_linear_forces(cache, du, f)
         do k = 1, size(map%cells)
             c = map%cells(k)
             if (cache%slot(k) > 0 .or. s%choc(c)) cycle
@@ -1093,6 +1123,72 @@ contains
             end do
         end do
     end subroutine linear_product
+
+    !> f = K_b du: the product of the plates and plane solids (the bodies' cells, cached)
+    !> with du, element by element with each cell's rigid motion removed first (as the
+    !> incremental forces).
+    !>  du, f : (n_equations)
+    !>  st    : out, element failures while the cache is built, naming the cell
+    subroutine body_product(s, map, cache, du, f, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        real(dp), intent(in) :: du(:)
+        real(dp), intent(out) :: f(:)
+        type(status_t), intent(out) :: st
+        if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
+        if (st%failed()) return
+        f = 0.0_dp
+        call add_cached_linear_forces(cache, du, f)
+    end subroutine body_product
+
+    !> y = K_s x for several vectors on the free equations: K_s the stiffness of every cell
+    !> but the plates and plane solids (springs, discrete elements), as assemble_stiffness
+    !> builds it at u (elastic or at the springs' status there). What the rigid modes of
+    !> spring-held bodies need (K_s R): the bodies' own cells give K_b R = 0.
+    !>  u       : in, (n_equations) the displacements the matrix is assembled at
+    !>  elastic : in, as assemble_stiffness
+    !>  x       : in, (n_free, m); y : out, (n_free, m)
+    !>  st      : out, element failures, naming the cell
+    !>  history : in, optional, DIS_CONTACT state at the start of the step
+    subroutine support_product(s, map, u, elastic, x, y, st, history)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), x(:, :)
+        logical, intent(in) :: elastic
+        real(dp), intent(out) :: y(:, :)
+        type(status_t), intent(out) :: st
+        type(contact_history_t), intent(in), optional :: history
+        integer(i4) :: k, c, n, i, j, eqs(MAX_ELEMENT_DOFS), free(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
+        logical :: closed
+        y = 0.0_dp
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            if (is_body_cell(s, c)) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
+                fn, st, map, history)
+            if (st%failed()) return
+            free(1:n) = free_of(map, eqs(1:n))
+            do i = 1, n
+                if (free(i) == 0) cycle
+                do j = 1, n
+                    if (free(j) > 0) y(free(i), :) = y(free(i), :) + ke(i, j) * x(free(j), :)
+                end do
+            end do
+        end do
+    end subroutine support_product
+
+    !> Plates and plane solids: the cells whose rigid motions have zero energy (the bodies
+    !> of analysis rigid_bodies; the linear cells of the cache).
+    pure logical function is_body_cell(s, c)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        is_body_cell = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+    end function is_body_cell
 
     !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
     !>  st : out, element failures (material, geometry), naming the cell
