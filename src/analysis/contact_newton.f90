@@ -61,7 +61,7 @@ module contact_newton
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
         solve_held, answer_digits, real_digits
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
         step_pivots_t, residual_measures, criteria_met, absolute_tol, prediction_is_elastic, &
         DEFAULT_RESI_GLOB_RELA, DEFAULT_ITER_GLOB_MAXI, MATRIX_ELASTIC, &
@@ -122,7 +122,7 @@ contains
         type(newton_state_t) :: state
         logical, allocatable :: imposed(:)
         integer(i4) :: k, step, n_eq
-        real(dp), allocatable :: targets(:)
+        real(dp), allocatable :: targets(:), forc(:)
         integer(i4), allocatable :: levels(:)
         real(dp) :: t_prev
         type(step_start_t) :: saved
@@ -200,7 +200,10 @@ contains
             end if
             step = step + 1
             call result_reserve(res, step + 1 + size(targets, kind=i4) - k)
-            call result_store(res, step, targets(k), state%u, state%fint, &
+            if (.not. allocated(forc)) allocate (forc(size(state%fint)))
+            call recorded_internal_forces(s, targets(k), state%fint, forc, st)
+            if (st%failed()) return
+            call result_store(res, step, targets(k), state%u, forc, &
                 reactions(map, state), state%closed, state%fn)
             call store_spring_fields(s, state%u, res, st)
             if (st%failed()) return

@@ -19,7 +19,7 @@ module linear_static
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         internal_forces
     use assembly_loads, only: mark_imposed
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
     use analysis_solver, only: factor_and_diagnose_linear, open_solver, log_numbering, &
         solve_held, held_t, answer_digits, real_digits
     use two_level_solver, only: from_hat, hat_body_part
@@ -63,7 +63,7 @@ contains
         class(direct_solver_t), allocatable :: solver
         type(held_t) :: held
         logical, allocatable :: imposed(:), closed(:)
-        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:)
+        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:), forc(:)
         integer(i4) :: k, n_eq, pass
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
@@ -85,7 +85,7 @@ contains
         call open_solver(s, map, options, matrix, solver, log, st)
         if (present(progress) .and. st%ok()) solver%progress => progress
         if (st%failed()) return
-        allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), r(map%n_free), &
+        allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
             x(map%n_free), closed(0), fn(0))
         u = 0.0_dp
         call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
@@ -110,7 +110,9 @@ contains
                 call internal_forces(s, map, u, fint, closed, fn, st, u_body=u_body)
                 if (st%failed()) return
             end do
-            call result_store(res, k, times(k), u, fint, merge(fint - fext, 0.0_dp, imposed))
+            call recorded_internal_forces(s, times(k), fint, forc, st)   ! less thermal forces
+            if (st%failed()) return
+            call result_store(res, k, times(k), u, forc, merge(fint - fext, 0.0_dp, imposed))
             call log_add(log, 'INST ' // to_text(times(k)) // ': solved; the answer holds ' &
                 // real_digits(answer_digits(x, u)) // ' significant digits (correction ' // &
                 'for the final residual ' // real_short(maxval(abs(x), dim=1)) // &

@@ -335,11 +335,11 @@ contains
         if (st%failed()) return
         if (location == FIELD_ELNO .and. .not. job%linear) then
             call plate_field(r, r%depl(:, at), PLATE_FORCES, FIELD_ELGA, 'SIEF_R', &
-                PLATE_FORCES_CMPS, gauss, st, job%cells)
+                PLATE_FORCES_CMPS, gauss, st, job%cells, inst=r%inst(at))
             if (st%ok()) call gauss_to_nodes(gauss, r%mesh, r%model, plates, st)
         else
             call plate_field(r, r%depl(:, at), PLATE_FORCES, location, 'SIEF_R', &
-                PLATE_FORCES_CMPS, plates, st, job%cells)
+                PLATE_FORCES_CMPS, plates, st, job%cells, inst=r%inst(at))
         end if
         if (st%failed()) return
         any_spring = any(is_discrete(r%model%element) .and. job%cells)

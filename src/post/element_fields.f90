@@ -25,7 +25,9 @@ module element_fields
         FIELD_ELGA, FIELD_ELNO
     use analysis_result, only: result_concept_t
     use plate_options, only: plate_cell_t, plate_prepare, plate_values, plate_rigi_points, &
-        plate_node_points, plate_value_count, PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS
+        plate_node_points, plate_value_count, PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS, &
+        PLATE_FORCES
+    use assembly_varc, only: plate_thermal_strains
     implicit none
     private
 
@@ -108,7 +110,7 @@ contains
             if (n_points(c) == 0) cycle
             if (cell_set(c) == 1) then
                 call plate_cell_values(res, c, res%depl(:, at), PLATE_STRESS, .false., &
-                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst=res%inst(at))
             else if (spring_of(c) > 0 .and. res%choc(c)) then
                 call stored_spring_values(res, spring_of(c), at, n_points(c), &
                     size(sets(cell_set(c))%cmp, kind=i4), &
@@ -126,7 +128,7 @@ contains
     !> when absent), at RIGI points (ELGA) or at the nodes (ELNO, evaluated there).
     !>  location : in, FIELD_ELGA or FIELD_ELNO
     !>  quantity, cmps : in, the field's quantity and the kind's components
-    subroutine plate_field(res, u, kind, location, quantity, cmps, f, st, cells)
+    subroutine plate_field(res, u, kind, location, quantity, cmps, f, st, cells, inst)
         type(result_concept_t), intent(in) :: res
         real(dp), intent(in) :: u(:)
         integer(i4), intent(in) :: kind, location
@@ -134,6 +136,7 @@ contains
         type(field_t), intent(out) :: f
         type(status_t), intent(out) :: st
         logical, intent(in), optional :: cells(:)
+        real(dp), intent(in), optional :: inst     !< the instant (thermal strains, elem's)
         type(string_t), allocatable :: names(:)
         type(component_set_t) :: sets(1)
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:)
@@ -160,19 +163,22 @@ contains
         do c = 1, res%mesh%n_cells
             if (n_points(c) == 0) cycle
             call plate_cell_values(res, c, u, kind, location == FIELD_ELNO, &
-                f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+                f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst)
             if (st%failed()) return
         end do
     end subroutine plate_field
 
-    !> The values of one plate cell, at its RIGI points or at its nodes.
-    subroutine plate_cell_values(res, c, u, kind, at_nodes, values, st)
+    !> The values of one plate cell, at its RIGI points or at its nodes; with `inst`, the
+    !> stresses and forces without the thermal strains of AFFE_VARC there (assembly_varc).
+    subroutine plate_cell_values(res, c, u, kind, at_nodes, values, st, inst)
         type(result_concept_t), intent(in) :: res
         integer(i4), intent(in) :: c, kind
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: at_nodes
         real(dp), intent(out) :: values(:)
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: inst
+        logical :: has
         type(plate_cell_t) :: pc
         real(dp) :: xi(2, 4)
         integer(i4) :: np
@@ -187,6 +193,13 @@ contains
             call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': ' // &
                 to_text(size(values)) // ' values expected')
             return
+        end if
+        if (present(inst) .and. (kind == PLATE_STRESS .or. kind == PLATE_FORCES)) then
+            allocate (pc%eps_th(3 * pc%layers, np))
+            call plate_thermal_strains(res%mesh, res%materials, res%cara, c, inst, &
+                xi(:, 1:np), pc%eps_th, has, st)
+            if (st%failed()) return
+            if (.not. has) deallocate (pc%eps_th)
         end if
         call plate_values(pc, kind, xi, np, values)
     end subroutine plate_cell_values
