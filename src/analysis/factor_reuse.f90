@@ -9,7 +9,8 @@ module factor_reuse
     use status, only: status_t
     use strings, only: to_text, real_short
     use direct_solver, only: check_disabled, effective_nprec, DIGITS_ALL_LOST
-    use assembly_system, only: structure_t, assembly_map_t, linear_product
+    use assembly_system, only: structure_t, assembly_map_t, linear_product, gather_free, &
+        scatter_free
     use low_rank_update, only: pcg_work_t, pcg_begin, pcg_continue, pcg_options_t, &
         pcg_report_t, PCG_CONVERGED, PCG_BREAKDOWN
     use analysis_solver, only: pivot_diagnosis_t, report_pivots, solve_held, real_digits, &
@@ -211,11 +212,10 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: b, i, j, m, ei, ej
         real(dp) :: t
-        state%du = 0.0_dp
-        state%du(map%free_to_eq) = p
+        call scatter_free(map, p, state%du)
         call linear_product(s, map, state%linear, state%du, state%work, st)
         if (st%failed()) return
-        q = state%work(map%free_to_eq)
+        call gather_free(map, state%work, q)
         do b = 1, size(closed, kind=i4)
             if (.not. closed(b)) cycle
             m = state%blocks%sizes(b)

@@ -175,6 +175,13 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE.
+    for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
+                       ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
+                       ("ssnl130a_solide", meshes[("a", "aster")])):
+        seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
+                                 "case.mail": mesh}, [],
+                          dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
