@@ -17,6 +17,7 @@ module deck_catalog_data
     use catalog_list_inst, only: describe_list_inst
     use catalog_results, only: describe_outputs
     use catalog_fields, only: describe_fields
+    use catalog_tables, only: describe_tables
     implicit none
     private
     public :: build_catalog
@@ -37,6 +38,7 @@ contains
         call describe_list_inst(cat)
         call describe_outputs(cat)
         call describe_fields(cat)
+        call describe_tables(cat)
     end subroutine build_catalog
 
 end module deck_catalog_data

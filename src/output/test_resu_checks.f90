@@ -156,14 +156,18 @@ contains
     !> Builds the block of a tested value and writes it: to the .resu, each check line in
     !> compact form to the .mess, the verdicts counted in the run context (a skipped check
     !> counts in neither).
-    subroutine write_test_block(ctx, cols, checks, computed)
+    !>  label : in, optional, the command the .mess echo names (default TEST_RESU)
+    subroutine write_test_block(ctx, cols, checks, computed, label)
         type(run_context_t), intent(inout) :: ctx
         type(test_columns_t), intent(in) :: cols
         type(test_check_t), intent(in) :: checks(:)
         real(dp), intent(in) :: computed
+        character(len=*), intent(in), optional :: label
         type(string_t), allocatable :: lines(:)
         integer :: n_ok, n_nook, k
-        character(len=:), allocatable :: id
+        character(len=:), allocatable :: id, command
+        command = 'TEST_RESU'
+        if (present(label)) command = label
         n_ok = 0
         n_nook = 0
         call test_check_block(cols%titles, cols%values, checks, computed, lines, n_ok, n_nook)
@@ -174,7 +178,7 @@ contains
         do k = 4, size(lines)
             if (lines(k)%s(1:4) == ' OK ' .or. lines(k)%s(1:4) == 'NOOK') &
                 call ctx%count_test(lines(k)%s(1:4) == ' OK ')
-            call ctx%write_mess('    TEST_RESU ' // id // ': ' // &
+            call ctx%write_mess('    ' // command // ' ' // id // ': ' // &
                                 listing_safe_text(compact_text(lines(k)%s)))
         end do
     end subroutine write_test_block

@@ -171,6 +171,12 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("fields", {"case.comm": os.path.join(fields, "crea_champ.comm"),
                                  "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.8))
+    seeds.append(Seed("fields_calc", {"case.comm": os.path.join(fields, "plate_moment_dkq.comm"),
+                                      "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.6))
+    seeds.append(Seed("fields_resu", {"case.comm": os.path.join(fields, "crea_resu.comm"),
+                                      "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.4))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
@@ -186,6 +192,17 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # Tables (issue 20): every table command on lists; LIRE_TABLE on mutated table files.
+    tables = os.path.join(SOURCE, "tests", "tables")
+    seeds.append(Seed("tables", {"case.comm": os.path.join(tables, "table_commands.comm")},
+                      [], comm_targets, 1.0))
+    seeds.append(Seed("table_files", {"case.comm": os.path.join(tables, "read_tables.comm"),
+                                      "case.38": os.path.join(tables, "read_tables.38"),
+                                      "case.39": os.path.join(tables, "read_tables.39"),
+                                      "case.40": os.path.join(tables, "read_tables.40")},
+                      ["--unit", "38=case.38", "--unit", "39=case.39", "--unit", "40=case.40"],
+                      dict(comm_targets, **{"case.38": "table", "case.39": "table",
+                                            "case.40": "table"}), 1.0))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
