@@ -170,6 +170,10 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # The deck language's Python: every construct, checked by assert (tests/decks/good).
+    seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                           "python_language.comm")},
+                      [], comm_targets, 1.0))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
