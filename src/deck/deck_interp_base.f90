@@ -27,6 +27,8 @@ module deck_interp_base
     integer, parameter, public :: MAX_TEXT_DEPTH = 100
     !> Items the heap may gain between two collections before one is due (deck_heap).
     integer(i8), parameter, public :: COLLECT_AFTER_ITEMS = 200000_i8
+    !> Math functions beyond deck_math's (math.NAME, or NAME after from math import *).
+    character(len=*), parameter, public :: MATH_EXTRA = ' fabs hypot degrees radians isclose '
     !> ctx%loop_control after break / continue.
     integer, parameter, public :: LOOP_BREAK = 1, LOOP_CONTINUE = 2
 
@@ -44,7 +46,7 @@ module deck_interp_base
     end type frame_t
 
     public :: fail, node_where, node_file, scope_of, empty_kwargs, new_list, check_heap, &
-        count_built, kwarg, only_kwargs, function_value, holds_unknown
+        count_built, kwarg, only_kwargs, function_value, holds_unknown, arity, want_text
 
 contains
 
@@ -222,5 +224,37 @@ contains
         if (holds_unknown .or. .not. allocated(v%tree)) return
         holds_unknown = any(v%tree%kind == VK_UNKNOWN)
     end function holds_unknown
+
+    !> Error unless lo..hi positional arguments and only the keywords `keys`.
+    subroutine arity(ctx, id, what, args, kwargs, lo, hi, keys, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id, lo, hi
+        character(len=*), intent(in) :: what, keys
+        type(value_t), intent(in) :: args(:), kwargs
+        type(status_t), intent(inout) :: st
+        if (size(args) < lo .or. size(args) > hi) then
+            if (lo == hi) then
+                call fail(st, ctx, id, what // '() takes ' // to_text(lo) // ' argument(s), ' &
+                          // 'got ' // to_text(size(args)))
+            else
+                call fail(st, ctx, id, what // '() takes ' // to_text(lo) // ' to ' // &
+                          to_text(hi) // ' arguments, got ' // to_text(size(args)))
+            end if
+            return
+        end if
+        call only_kwargs(ctx, id, what // '()', kwargs, keys, st)
+    end subroutine arity
+
+    !> Error unless v is a string (named `what` in the message).
+    logical function want_text(ctx, id, v, what, st)
+        type(run_context_t), intent(in) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: v
+        character(len=*), intent(in) :: what
+        type(status_t), intent(inout) :: st
+        want_text = v%kind == VK_STR
+        if (.not. want_text) call fail(st, ctx, id, what // ' takes a string, got ' // &
+                                       kind_label(v))
+    end function want_text
 
 end module deck_interp_base

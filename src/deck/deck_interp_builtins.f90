@@ -1,13 +1,11 @@
 !> The deck evaluator (deck_interpreter), its built-in functions, as Python 3 defines them
 !> for the values of the deck language: len str repr int float bool abs round min max sum
 !> sorted reversed enumerate zip range list tuple dict any all map filter isinstance type
-!> getattr hasattr divmod pow chr ord format print callable, the exceptions (for raise),
-!> and the math functions (deck_math's, with fabs hypot degrees radians isclose and log
-!> with a base). Functions Python has and decks must not use (open, eval, exec, input...)
-!> are refused by name.
+!> getattr hasattr divmod pow chr ord format print callable and the exceptions (for raise);
+!> round and the math functions in deck_interp_math. Functions Python has and decks must
+!> not use (open, eval, exec, input...) are refused by name.
 submodule(deck_interpreter) deck_interp_builtins
-    use deck_math
-    use deck_format, only: format_spec_t, format_real
+    use deck_math, only: literal_out_of_range
     implicit none
 
     !> The built-ins of this submodule (deck_math's math functions come on top).
@@ -18,8 +16,6 @@ submodule(deck_interpreter) deck_interp_builtins
         'NotImplementedError ZeroDivisionError NameError open eval exec input set ' // &
         'frozenset iter next compile globals locals vars setattr delattr id hash complex ' // &
         'bytes object super '
-    !> Extra math functions (math.NAME, or NAME after from math import *).
-    character(len=*), parameter :: MATH_EXTRA = ' fabs hypot degrees radians isclose '
 
 contains
 
@@ -74,7 +70,7 @@ contains
         case ('round')
             call want(1, 2, '')
             if (st%failed()) return
-            call round_value()
+            call round_value(ctx, id, args, v, st)
         case ('min', 'max')
             call extreme()
         case ('sum')
@@ -220,7 +216,7 @@ contains
             call fail(st, ctx, id, name // '() is not part of the deck language (sets; a ' // &
                       'list or the keys of a dict can stand for one)')
         case default
-            call math_function()
+            call call_math(ctx, id, name, args, kwargs, v, st)
         end select
     contains
         !> Between lo and hi positional arguments; keyword arguments among `keys`
@@ -433,76 +429,6 @@ contains
                 call fail(st, ctx, id, 'abs() takes a number, got ' // kind_label(args(1)))
             end select
         end subroutine absolute
-
-        !> round(x): the nearest integer, halves to even (Python 3); round(x, n): the real
-        !> nearest to x rounded to n decimals, correctly rounded (deck_format's digits).
-        subroutine round_value()
-            real(dp) :: x0, r, scale
-            integer(i8) :: n
-            type(format_spec_t) :: spec
-            character(len=:), allocatable :: digits, message
-            integer :: ios
-            logical :: to_int
-            if (.not. is_number(args(1))) then
-                call fail(st, ctx, id, 'round() takes a number, got ' // kind_label(args(1)))
-                return
-            end if
-            to_int = size(args) == 1
-            if (.not. to_int) to_int = args(2)%kind == VK_NONE
-            if (to_int) then
-                if (args(1)%kind /= VK_REAL) then
-                    v = int_value(args(1)%i); return
-                end if
-                x0 = args(1)%r
-                if (.not. (abs(x0) < 9.2e18_dp)) then
-                    call fail(st, ctx, id, 'round() of ' // text_of(ctx, args(1), .true.) // &
-                              ' is beyond the integer range'); return
-                end if
-                v = int_value(nint(half_even(x0), i8))
-                return
-            end if
-            if (args(2)%kind /= VK_INT .and. args(2)%kind /= VK_BOOL) then
-                call fail(st, ctx, id, 'round() takes an integer number of decimals'); return
-            end if
-            n = args(2)%i
-            if (args(1)%kind /= VK_REAL) then              ! round(1234, -2) = 1200
-                if (n >= 0) then
-                    v = int_value(args(1)%i); return
-                end if
-                if (n < -18) then
-                    v = int_value(0_i8); return
-                end if
-                r = real(args(1)%i, dp) / 10.0_dp**(-n)
-                v = int_value(nint(half_even(r), i8) * 10_i8**(-n))
-                return
-            end if
-            x0 = args(1)%r
-            if (n >= 0) then
-                spec%type = 'f'; spec%precision = int(min(n, 320_i8))
-                call format_real(x0, spec, digits, message)
-                read (digits, *, iostat=ios) r
-                v = real_value(r)
-            else
-                if (n < -308) then
-                    v = real_value(0.0_dp); return
-                end if
-                scale = 10.0_dp**(-n)
-                v = real_value(half_even(x0 / scale) * scale)
-            end if
-        end subroutine round_value
-
-        !> The integer nearest to y (a real), halves to the even one.
-        pure real(dp) function half_even(y)
-            real(dp), intent(in) :: y
-            real(dp) :: t
-            half_even = anint(y)
-            t = y - aint(y)
-            if (abs(abs(t) - 0.5_dp) < tiny(1.0_dp)) then
-                half_even = aint(y)
-                if (mod(half_even, 2.0_dp) > 0.5_dp .or. mod(half_even, 2.0_dp) < -0.5_dp) &
-                    half_even = half_even + sign(1.0_dp, y)
-            end if
-        end function half_even
 
         !> min(...) / max(...): of the arguments, or of one iterable; key= and default=.
         subroutine extreme()
@@ -850,106 +776,6 @@ contains
             v%kind = VK_NONE
         end subroutine print_values
 
-        !> The math functions: deck_math's (checked: no FP trap) and fabs hypot degrees
-        !> radians isclose, log(x, base).
-        subroutine math_function()
-            real(dp), allocatable :: xs(:)
-            real(dp) :: r, big, small, scale, tol_r, tol_a
-            integer :: b, code, j
-            character(len=:), allocatable :: bare
-            logical :: all_int
-            bare = name
-            if (index(name, 'math.') == 1) bare = name(6:)
-            if (nitems(kwargs) > 0 .and. bare /= 'isclose') then
-                call only_kwargs(ctx, id, bare // '()', kwargs, '', st); return
-            end if
-            allocate (xs(size(args)))
-            all_int = .true.
-            do j = 1, size(args)
-                if (.not. is_number(args(j))) then
-                    call fail(st, ctx, id, bare // '() takes numbers, got ' // &
-                              kind_label(args(j))); return
-                end if
-                xs(j) = as_real(args(j))
-                if (args(j)%kind == VK_REAL) all_int = .false.
-            end do
-            select case (bare)
-            case ('fabs')
-                call want(1, 1, '')
-                if (st%ok()) v = real_value(abs(xs(1)))
-                return
-            case ('degrees', 'radians')
-                call want(1, 1, '')
-                if (st%failed()) return
-                scale = 180.0_dp / PI_VALUE
-                if (bare == 'radians') scale = PI_VALUE / 180.0_dp
-                if (abs(xs(1)) > huge(1.0_dp) / scale) then
-                    call fail(st, ctx, id, math_message(MATH_OVERFLOW, bare // '()')); return
-                end if
-                v = real_value(xs(1) * scale)
-                return
-            case ('hypot')
-                call want(2, 2, '')
-                if (st%failed()) return
-                big = max(abs(xs(1)), abs(xs(2))); small = min(abs(xs(1)), abs(xs(2)))
-                if (big <= 0.0_dp) then
-                    v = real_value(0.0_dp); return
-                end if
-                r = sqrt(1.0_dp + (small / big)**2)
-                if (big > huge(1.0_dp) / r) then
-                    call fail(st, ctx, id, math_message(MATH_OVERFLOW, 'hypot()')); return
-                end if
-                v = real_value(big * r)
-                return
-            case ('isclose')
-                call want(2, 2, 'rel_tol abs_tol')
-                if (st%failed()) return
-                tol_r = 1.0e-9_dp; tol_a = 0.0_dp
-                call kwarg(kwargs, 'rel_tol', v, found)
-                if (found .and. is_number(v)) tol_r = as_real(v)
-                call kwarg(kwargs, 'abs_tol', v, found)
-                if (found .and. is_number(v)) tol_a = as_real(v)
-                if (abs(xs(1)) > huge(1.0_dp) / 2 .or. abs(xs(2)) > huge(1.0_dp) / 2) then
-                    v = bool_value(xs(1) >= xs(2) .and. xs(1) <= xs(2)); return
-                end if
-                v = bool_value(abs(xs(1) - xs(2)) <= max(tol_r * max(abs(xs(1)), &
-                               abs(xs(2))), tol_a))
-                return
-            case ('log')
-                if (size(xs) == 2) then
-                    call checked_call(B_LOG, xs(1:1), 1, r, code)
-                    if (code == MATH_OK) call checked_call(B_LOG, xs(2:2), 1, big, code)
-                    if (code == MATH_OK .and. abs(big) < tiny(1.0_dp)) code = MATH_ZERO_DIVISION
-                    if (code /= MATH_OK) then
-                        call fail(st, ctx, id, math_message(code, 'log()')); return
-                    end if
-                    v = real_value(r / big)
-                    return
-                end if
-            end select
-            b = builtin_id(bare)
-            if (b == 0) then
-                call fail(st, ctx, id, name // ' cannot be called'); return
-            end if
-            if (builtin_arity_of(b) > 0 .and. size(xs) /= builtin_arity_of(b)) then
-                call fail(st, ctx, id, bare // '() takes ' // to_text(int(builtin_arity_of(b), &
-                    i4)) // ' argument(s), got ' // to_text(int(size(xs), i4)))
-                return
-            end if
-            call checked_call(b, xs, size(xs), r, code)
-            if (code /= MATH_OK) then
-                call fail(st, ctx, id, math_message(code, bare // '()')); return
-            end if
-            select case (b)
-            case (B_FLOOR, B_CEIL)
-                if (abs(r) >= 9.2e18_dp) then
-                    call fail(st, ctx, id, bare // '() result out of the integer range'); return
-                end if
-                v = int_value(int(r, i8))
-            case default
-                v = real_value(r)
-            end select
-        end subroutine math_function
     end procedure call_builtin
 
     !> Sorts items in place by Python's order (stable merge sort, O(n log n)): of key(item)

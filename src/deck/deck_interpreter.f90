@@ -8,12 +8,15 @@
 !> then evaluates again and runs each command. Integer/real arithmetic follows Python 3 and
 !> every operation is checked before it is done (no FP trap, located errors instead).
 !>
-!> This module holds the shared declarations; the work is split by concern into submodules:
-!> deck_interp_statements (files, statements, assignment, loops), deck_interp_expressions
-!> (expressions, operators, comparison, subscripts, comprehensions, f-strings, text of
-!> values), deck_interp_calls (calls, def functions, attributes and methods, commands),
-!> deck_interp_builtins (the built-in functions), deck_interp_types (the methods of
-!> strings, lists, dicts and tuples, % formatting) and deck_interp_imports (imports).
+!> This module holds the interfaces (shared declarations in deck_interp_base); the work is
+!> split by concern into submodules: deck_interp_statements (files, statements, assignment,
+!> loops), deck_interp_expressions (expressions, comprehensions, f-strings, slices),
+!> deck_interp_operators (operators, comparisons), deck_interp_values (items, iteration,
+!> truth, text, equality, order), deck_interp_calls (calls, def functions, attributes and
+!> methods, commands), deck_interp_builtins and deck_interp_math (the built-in functions),
+!> deck_interp_strings and deck_interp_formatting (the methods of strings, % and
+!> str.format), deck_interp_types (the methods of lists, dicts, tuples and _F) and
+!> deck_interp_imports (imports).
 module deck_interpreter
     use kinds, only: dp, i4, i8
     use strings, only: string_t, to_text
@@ -176,6 +179,25 @@ module deck_interpreter
             type(status_t), intent(inout) :: st
         end subroutine format_value
 
+        module function characters(s) result(chars)
+            character(len=*), intent(in) :: s
+            type(value_t), allocatable :: chars(:)
+        end function characters
+        module recursive subroutine unary(ctx, id, a, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: a
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine unary
+        module recursive subroutine compare_chain(ctx, id, v, st, frame)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+            type(frame_t), intent(inout), optional, target :: frame
+        end subroutine compare_chain
+
         ! ---- deck_interp_calls ----
         module recursive subroutine eval_call(ctx, id, v, st, frame, target)
             type(run_context_t), intent(inout) :: ctx
@@ -250,6 +272,21 @@ module deck_interpreter
         module pure logical function is_builtin(name)
             character(len=*), intent(in) :: name
         end function is_builtin
+        module subroutine round_value(ctx, id, args, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: args(:)
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine round_value
+        module subroutine call_math(ctx, id, name, args, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: name
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine call_math
         module recursive subroutine sort_items(ctx, id, items, kwargs, st, frame)
             type(run_context_t), intent(inout) :: ctx
             integer, intent(in) :: id
@@ -274,6 +311,22 @@ module deck_interpreter
             integer, intent(in) :: kind
             character(len=*), intent(in) :: name
         end function type_has_method
+        module recursive subroutine str_method(ctx, id, s, name, args, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: s, name
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine str_method
+        module recursive subroutine str_format(ctx, id, template, args, kwargs, text, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: template
+            type(value_t), intent(in) :: args(:), kwargs
+            character(len=:), allocatable, intent(out) :: text
+            type(status_t), intent(inout) :: st
+        end subroutine str_format
         module recursive subroutine percent_format(ctx, id, template, arg, text, st)
             type(run_context_t), intent(inout) :: ctx
             integer, intent(in) :: id

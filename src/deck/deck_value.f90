@@ -57,8 +57,8 @@ module deck_value
     end type value_list_t
 
     public :: int_value, real_value, str_value, bool_value, kind_label, value_text, &
-        is_number, as_real, truth, nitems, item, unpack_value, pack_values, sequence_value, &
-        append_value, append_string, append_values, values_of, joined
+        is_number, as_real, nitems, item, unpack_value, pack_values, sequence_value, &
+        append_value, append_string, values_of, joined
 
 contains
 
@@ -120,16 +120,6 @@ contains
         bigger(n + 1) = v
         call move_alloc(bigger, list)
     end subroutine append_value
-
-    !> Appends every value of more to list.
-    subroutine append_values(list, more)
-        type(value_t), allocatable, intent(inout) :: list(:)
-        type(value_t), intent(in) :: more(:)
-        integer :: k
-        do k = 1, size(more)
-            call append_value(list, more(k))
-        end do
-    end subroutine append_values
 
     !> [a], [a, b] or [a, b, c], built item by item: gfortran 12 leaks the temporaries of
     !> array constructors of types with allocatable components, so no [a, b] of value_t.
@@ -287,25 +277,6 @@ contains
             as_real = 0.0_dp
         end select
     end function as_real
-
-    !> Python truth value.
-    logical function truth(v)
-        type(value_t), intent(in) :: v
-        select case (v%kind)
-        case (VK_INT, VK_BOOL)
-            truth = v%i /= 0
-        case (VK_REAL)
-            truth = v%r > 0.0_dp .or. v%r < 0.0_dp
-        case (VK_STR)
-            truth = len(v%s) > 0
-        case (VK_TUPLE, VK_LIST)
-            truth = nitems(v) > 0
-        case (VK_NONE)
-            truth = .false.
-        case default
-            truth = .true.
-        end select
-    end function truth
 
     !> What kind of value this is, in words, for messages ('a real', 'a string', 'a maillage').
     function kind_label(v) result(text)
