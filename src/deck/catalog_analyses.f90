@@ -47,7 +47,7 @@ contains
         call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
         call c%end_fact()
         call c%fact('INCREMENT', req=.true.)
-        call c%key('LIST_INST', 'listr8', req=.true.)
+        call c%key('LIST_INST', 'listr8|list_inst', req=.true.)    ! DEFI_LIST_REEL, DEFI_LIST_INST
         call c%key('INST_INIT', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%key('INST_FIN', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%key('NUME_INST_INIT', 'I', vmin=0.0_dp)
