@@ -9,8 +9,13 @@ module command_registration
     use test_resu_command, only: run_test_resu
     use impr_resu_command, only: run_impr_resu
     use crea_champ_command, only: run_crea_champ
+    use calc_champ_command, only: run_calc_champ
+    use crea_resu_command, only: run_crea_resu
+    use post_champ_command, only: run_post_champ
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
+    use mesh_modify_commands, only: run_modi_maillage
+    use mesh_create_commands, only: run_crea_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
     use cara_elem_commands, only: run_affe_cara_elem
@@ -48,8 +53,13 @@ contains
         call ctx%register('TEST_RESU', run_test_resu)
         call ctx%register('IMPR_RESU', run_impr_resu)
         call ctx%register('CREA_CHAMP', run_crea_champ)
+        call ctx%register('CALC_CHAMP', run_calc_champ, reuse=.true.)
+        call ctx%register('CREA_RESU', run_crea_resu, reuse=.true.)
+        call ctx%register('POST_CHAMP', run_post_champ)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
+        call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)
+        call ctx%register('CREA_MAILLAGE', run_crea_maillage)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
         call ctx%register('AFFE_MATERIAU', run_affe_materiau)

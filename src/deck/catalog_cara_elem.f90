@@ -21,7 +21,7 @@ contains
         call c%fact('COQUE', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('EPAIS', 'R', req=.true., vmax=MAX_LENGTH, vtiny=MIN_LENGTH)  ! > 0: handler
-        call c%key('COQUE_NCOU', 'I', noop=.true.)
+        call c%key('COQUE_NCOU', 'I', def='1', vmin=1.0_dp, vmax=1000.0_dp)   ! layers
         call c%key('COEF_RIGI_DRZ', 'R', def='1.0E-5', &  ! Code_Aster default
                    vmin=-RATIO_MAX, vmax=RATIO_MAX)
         call c%key('ANGL_REP', 'R', min=2, max=2, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)

@@ -1,13 +1,12 @@
-!> What the mesh commands need to know of a cell type beyond its node count: its dimension,
-!> its vertices (the first nodes, Code_Aster's "sommets"), its mid-edge nodes ("milieux")
-!> and its centre nodes ("centre"), in Code_Aster's node order (vertices first, then one
-!> node per edge, then face and volume centres: SEG3, TRIA6/7, QUAD8/9).
-!>
-!> Decided from the type's name (POI, SEG, TRIA, QUAD, TETRA, PENTA, PYRAM, HEXA), so cell
-!> types added to mesh_types later are covered without a second table to keep in step.
+!> What the mesh commands need to know of a cell's nodes beyond mesh_cell_shapes' tables:
+!> which of them are vertices (Code_Aster's "sommets"), mid-edge nodes ("milieux") or centre
+!> nodes ("centre") in Code_Aster's node order (vertices first, then one node per edge,
+!> then the face centre: SEG3, TRIA6, QUAD8, QUAD9), and whether a type passes a
+!> TYPE_MAILLE filter.
 module mesh_cell_kinds
     use kinds, only: i4
-    use mesh_types, only: CELL_TYPE_NAMES, CELL_TYPE_NODES
+    use mesh_cell_shapes, only: CELL_TYPE_NAMES, CELL_TYPE_NODES, CELL_TYPE_CORNERS, &
+        CELL_TYPE_DIM, cell_edge_count
     implicit none
     private
 
@@ -15,80 +14,26 @@ module mesh_cell_kinds
     integer(i4), parameter, public :: ROLE_ALL = 0, ROLE_VERTEX = 1, ROLE_MID_EDGE = 2, &
         ROLE_CENTRE = 3
 
-    public :: cell_dimension, cell_vertex_count, cell_edge_count, role_range, &
-        type_matches_filter
+    public :: cell_dimension, role_range, type_matches_filter
 
 contains
 
-    !> 0 (POI), 1 (SEG), 2 (TRIA, QUAD) or 3 (volumes) for cell type `ctype`.
+    !> 0 (POI), 1 (SEG), 2 (TRIA, QUAD) for cell type `ctype`.
     pure integer(i4) function cell_dimension(ctype) result(d)
         integer(i4), intent(in) :: ctype
-        select case (family(ctype))
-        case ('POI')
-            d = 0
-        case ('SEG')
-            d = 1
-        case ('TRIA', 'QUAD')
-            d = 2
-        case default
-            d = 3
-        end select
+        d = CELL_TYPE_DIM(ctype)
     end function cell_dimension
-
-    !> Number of vertices (corner nodes) of a cell of type `ctype`.
-    pure integer(i4) function cell_vertex_count(ctype) result(n)
-        integer(i4), intent(in) :: ctype
-        select case (family(ctype))
-        case ('POI')
-            n = 1
-        case ('SEG')
-            n = 2
-        case ('TRIA')
-            n = 3
-        case ('QUAD', 'TETRA')
-            n = 4
-        case ('PYRAM')
-            n = 5
-        case ('PENTA')
-            n = 6
-        case default
-            n = 8
-        end select
-        n = min(n, CELL_TYPE_NODES(ctype))
-    end function cell_vertex_count
-
-    !> Number of edges of a cell of type `ctype` (0 for POI1).
-    pure integer(i4) function cell_edge_count(ctype) result(n)
-        integer(i4), intent(in) :: ctype
-        select case (family(ctype))
-        case ('POI')
-            n = 0
-        case ('SEG')
-            n = 1
-        case ('TRIA')
-            n = 3
-        case ('QUAD')
-            n = 4
-        case ('TETRA')
-            n = 6
-        case ('PYRAM')
-            n = 8
-        case ('PENTA')
-            n = 9
-        case default
-            n = 12
-        end select
-    end function cell_edge_count
 
     !> The positions first..last (1-based, in the cell's node list) of the nodes of `role`
     !> in a cell of type `ctype`; first > last when it has none (a linear cell has no
-    !> mid-edge node).
+    !> mid-edge node). A line's one edge is the line itself: SEG3's third node is its middle.
     pure subroutine role_range(ctype, role, first, last)
         integer(i4), intent(in) :: ctype, role
         integer(i4), intent(out) :: first, last
         integer(i4) :: nv, ne, nn
-        nv = cell_vertex_count(ctype)
+        nv = CELL_TYPE_CORNERS(ctype)
         ne = cell_edge_count(ctype)
+        if (CELL_TYPE_DIM(ctype) == 1) ne = 1
         nn = CELL_TYPE_NODES(ctype)
         select case (role)
         case (ROLE_VERTEX)
@@ -97,10 +42,8 @@ contains
         case (ROLE_MID_EDGE)
             first = nv + 1
             last = min(nv + ne, nn)
-            if (family(ctype) == 'SEG') last = min(nv + 1, nn)
         case (ROLE_CENTRE)
             first = nv + ne + 1
-            if (family(ctype) == 'SEG') first = nn + 1   ! SEG3's third node is a mid node
             last = nn
         case default
             first = 1
@@ -117,24 +60,14 @@ contains
         case ('TOUT')
             ok = .true.
         case ('1D')
-            ok = cell_dimension(ctype) == 1
+            ok = CELL_TYPE_DIM(ctype) == 1
         case ('2D')
-            ok = cell_dimension(ctype) == 2
+            ok = CELL_TYPE_DIM(ctype) == 2
         case ('3D')
-            ok = cell_dimension(ctype) == 3
+            ok = CELL_TYPE_DIM(ctype) == 3
         case default
             ok = trim(CELL_TYPE_NAMES(ctype)) == filter
         end select
     end function type_matches_filter
-
-    ! 'POI', 'SEG', 'TRIA', ... : the type name without its node count.
-    pure function family(ctype) result(name)
-        integer(i4), intent(in) :: ctype
-        character(len=:), allocatable :: name
-        integer :: k
-        name = trim(CELL_TYPE_NAMES(ctype))
-        k = scan(name, '0123456789')
-        if (k > 1) name = name(1:k - 1)
-    end function family
 
 end module mesh_cell_kinds

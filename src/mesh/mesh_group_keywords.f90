@@ -137,14 +137,16 @@ contains
 
     !> The cells named by keyword `key` (MAILLE), in the order given; a cell named twice is
     !> kept once with a warning naming the group being made (SOUSTRUC_32).
-    subroutine read_named_cells(ctx, occ, key, mesh, group, cells, st)
+    !>  quiet : optional, no warning for a cell named twice (selections that are sets)
+    subroutine read_named_cells(ctx, occ, key, mesh, group, cells, st, quiet)
         type(run_context_t), intent(in) :: ctx
         type(keyword_set_t), intent(in) :: occ
         character(len=*), intent(in) :: key, group
         type(mesh_t), intent(in) :: mesh
         integer(i4), allocatable, intent(out) :: cells(:)
         type(status_t), intent(out) :: st
-        call read_named(ctx, occ, key, mesh, group, .true., cells, st)
+        logical, intent(in), optional :: quiet
+        call read_named(ctx, occ, key, mesh, group, .true., cells, st, quiet)
     end subroutine read_named_cells
 
     !> The nodes named by keyword `key` (NOEUD), as read_named_cells (SOUSTRUC_39).
@@ -159,7 +161,7 @@ contains
     end subroutine read_named_nodes
 
     ! Named cells (cells) or nodes, each kept once.
-    subroutine read_named(ctx, occ, key, mesh, group, cells, numbers, st)
+    subroutine read_named(ctx, occ, key, mesh, group, cells, numbers, st, quiet)
         type(run_context_t), intent(in) :: ctx
         type(keyword_set_t), intent(in) :: occ
         character(len=*), intent(in) :: key, group
@@ -167,6 +169,7 @@ contains
         logical, intent(in) :: cells
         integer(i4), allocatable, intent(out) :: numbers(:)
         type(status_t), intent(out) :: st
+        logical, intent(in), optional :: quiet
         type(string_t), allocatable :: names(:)
         integer(i4), allocatable :: given(:), repeated(:)
         integer(i4) :: i
@@ -186,6 +189,9 @@ contains
         end do
         call first_occurrences(given, merge(mesh%n_cells, mesh%n_nodes, cells), numbers, &
                                repeated)
+        if (present(quiet)) then
+            if (quiet) return
+        end if
         do i = 1, size(repeated, kind=i4)
             call warn_at(ctx, occ, key, trim(merge('cell', 'node', cells)) // ' ' // &
                 names(repeated(i))%s // ' is given twice for ' // group // ': it is kept once')

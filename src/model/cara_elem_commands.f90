@@ -90,8 +90,9 @@ contains
         type(status_t), intent(out) :: st
         type(string_t), allocatable :: names(:)
         integer(i4), allocatable :: groups(:)
-        real(dp) :: epais, drz
-        integer(i4) :: g
+        real(dp) :: epais, drz, direction(3)
+        real(dp), allocatable :: values(:)
+        integer(i4) :: g, layers
         call occ%get_real('EPAIS', epais, st)
         if (st%failed()) return
         if (epais <= 0.0_dp) then
@@ -101,11 +102,35 @@ contains
         end if
         call occ%get_real('COEF_RIGI_DRZ', drz, st)
         if (st%failed()) return
+        ! the x axis of the plates' user frame (Code_Aster U4.42.01 COQUE ANGL_REP: angles
+        ! alpha, beta in degrees of the direction (cos b cos a, cos b sin a, -sin b), as its
+        ! coqrep; VECTEUR: the direction itself)
+        direction = [1.0_dp, 0.0_dp, 0.0_dp]
+        if (occ%has('ANGL_REP')) then
+            call occ%get_reals('ANGL_REP', values, st)
+            if (st%failed()) return
+            values = values * (acos(-1.0_dp) / 180.0_dp)
+            direction = [cos(values(2)) * cos(values(1)), cos(values(2)) * sin(values(1)), &
+                -sin(values(2))]
+        else if (occ%has('VECTEUR')) then
+            call occ%get_reals('VECTEUR', values, st)
+            if (st%failed()) return
+            if (.not. norm2(values) > 0.0_dp) then
+                call occ%error_at('VECTEUR', 'the direction of the plates'' frame must ' // &
+                    'not be zero', st, code=STATUS_MODEL_ERROR)
+                return
+            end if
+            direction = values / norm2(values)
+        end if
+        layers = 1
+        if (occ%has('COQUE_NCOU')) call occ%get_int('COQUE_NCOU', layers, st)
+        if (st%failed()) return
         call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
         if (st%failed()) return
         do g = 1, size(groups)
             call assign_coque(cc%cara, mc%model, mc%mesh, cells_of_group(mc%mesh, groups(g)), &
-                              epais, st, coef_rigi_drz=drz, group=names(g)%s)
+                              epais, st, coef_rigi_drz=drz, group=names(g)%s, &
+                              direction=direction, layers=layers)
             call relocate_error(occ, 'GROUP_MA', st)
             if (st%failed()) return
         end do

@@ -29,6 +29,10 @@ module model_cara_elem
         logical, allocatable :: has_coque(:)
         real(dp), allocatable :: thickness(:)          !< COQUE/EPAIS
         real(dp), allocatable :: coef_rigi_drz(:)      !< COQUE/COEF_RIGI_DRZ
+        !> COQUE/ANGL_REP or VECTEUR: the direction whose projection on a plate cell is the
+        !> x axis of its user frame (results are given in it); global X by default
+        real(dp), allocatable :: coque_direction(:, :) !< (3, n_cells)
+        integer(i4), allocatable :: coque_layers(:)    !< COQUE/COQUE_NCOU (default 1)
         integer(i4), allocatable :: discrete_cara(:)   !< CARA_* per cell
         integer(i4), allocatable :: discrete_repere(:) !< REPERE_GLOBAL / REPERE_LOCAL
         real(dp), allocatable :: discrete_values(:, :) !< (6, n_cells); first n used
@@ -49,6 +53,9 @@ contains
         n = mesh%n_cells
         allocate (cara%has_coque(n), source=.false.)
         allocate (cara%thickness(n), cara%coef_rigi_drz(n), source=0.0_dp)
+        allocate (cara%coque_direction(3, n), source=0.0_dp)
+        cara%coque_direction(1, :) = 1.0_dp
+        allocate (cara%coque_layers(n), source=1_i4)
         allocate (cara%discrete_cara(n), source=CARA_NONE)
         allocate (cara%discrete_repere(n), source=REPERE_GLOBAL)
         allocate (cara%discrete_values(6, n), source=0.0_dp)
@@ -60,7 +67,10 @@ contains
     !>  cells : in, cells of the occurrence; each must carry a DKT/DKQ element
     !>  epais : in, thickness > 0;  coef_rigi_drz : in, optional (default 1e-5)
     !>  st    : out, STATUS_MODEL_ERROR for EPAIS <= 0 or a cell that is not a plate
-    subroutine assign_coque(cara, model, mesh, cells, epais, st, coef_rigi_drz, group)
+    !>  direction : in, optional, ANGL_REP / VECTEUR as a direction (default global X)
+    !>  layers : in, optional, COQUE_NCOU (default 1)
+    subroutine assign_coque(cara, model, mesh, cells, epais, st, coef_rigi_drz, group, &
+                            direction, layers)
         type(cara_elem_t), intent(inout) :: cara
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
@@ -69,6 +79,8 @@ contains
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: coef_rigi_drz
         character(len=*), intent(in), optional :: group
+        real(dp), intent(in), optional :: direction(3)
+        integer(i4), intent(in), optional :: layers
         integer(i4) :: i
         if (epais <= 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, 'EPAIS must be > 0, got ' // to_text(epais))
@@ -86,6 +98,12 @@ contains
         cara%thickness(cells) = epais
         cara%coef_rigi_drz(cells) = DEFAULT_COEF_RIGI_DRZ
         if (present(coef_rigi_drz)) cara%coef_rigi_drz(cells) = coef_rigi_drz
+        do i = 1, size(cells)
+            cara%coque_direction(:, cells(i)) = [1.0_dp, 0.0_dp, 0.0_dp]
+            if (present(direction)) cara%coque_direction(:, cells(i)) = direction
+        end do
+        cara%coque_layers(cells) = 1
+        if (present(layers)) cara%coque_layers(cells) = layers
     end subroutine assign_coque
 
     !> CARA code of a name (CARA_NONE if unknown), case-insensitive.

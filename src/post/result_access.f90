@@ -4,7 +4,8 @@
 !> results"). The fields an analysis provides this way are those Code_Aster's MECA_STATIQUE
 !> and STAT_NON_LINE store:
 !>   DEPL       NOEU_DEPL_R, the components each node's elements use;
-!>   SIEF_ELGA  ELGA_SIEF_R, the discrete springs' forces N VY VZ (element_spring_fields);
+!>   SIEF_ELGA  ELGA_SIEF_R, the state of stress (element_fields): plates' stresses at
+!>              their layer sub-points, the discrete springs' forces N VY VZ;
 !>   VARI_ELGA  ELGA_VARI_R, the DIS_CHOC internal variables V1 .. V10;
 !> and the nodal forces parasol's analyses compute anyway (Code_Aster's CALC_CHAMP FORCE
 !> options give the same fields): FORC_NODA and REAC_NODA, NOEU_DEPL_R.
@@ -23,6 +24,7 @@ module result_access
     use result_fields, only: result_fields_t, result_field_index, result_put_field, &
         result_stored_names
     use analysis_result, only: result_concept_t
+    use element_fields, only: state_sief_elga
     implicit none
     private
 
@@ -147,7 +149,9 @@ contains
             call result_nodal_from_state(res, res%forc_noda(:, at), f, st)
         case ('REAC_NODA')
             call result_nodal_from_state(res, res%reac_noda(:, at), f, st)
-        case ('SIEF_ELGA', 'VARI_ELGA')
+        case ('SIEF_ELGA')
+            call state_sief_elga(res, at, f, st)
+        case ('VARI_ELGA')
             call spring_field(res, at, name, f, st)
         end select
     end subroutine field_from_state

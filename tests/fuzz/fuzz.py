@@ -174,6 +174,12 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("fields", {"case.comm": os.path.join(fields, "crea_champ.comm"),
                                  "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.8))
+    seeds.append(Seed("fields_calc", {"case.comm": os.path.join(fields, "plate_moment_dkq.comm"),
+                                      "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.6))
+    seeds.append(Seed("fields_resu", {"case.comm": os.path.join(fields, "crea_resu.comm"),
+                                      "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.4))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],

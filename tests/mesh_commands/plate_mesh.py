@@ -8,8 +8,9 @@ Node (i, j) (0 <= i, j <= N) is N(j*(N+1)+i+1) at (i, j); cell Q(j*N+i+1) has no
 (i,j) (i+1,j) (i+1,j+1) (i,j+1), counterclockwise. Sides: BAS (y = 0, going +x), DROITE
 (x = N, going +y), HAUT (y = N), GAUCHE (x = 0), each SEG2 counterclockwise round the
 plate (outward normal by Code_Aster's (dy, -dx)), except HAUT with --flip-top, whose
-edges go the other way (inward normal: what ORIE_PEAU must turn round). GROUP_MA PLAQUE
-(the quads), BORD (the four sides); GROUP_NO A (0, 0), B (N, 0), C (N, N), D (0, N).
+edges go the other way (inward normal: what ORIE_PEAU must turn round); MILIEU, the SEG2
+of the inner line x = N/2 (N even), between two columns of quads. GROUP_MA PLAQUE (the
+quads), BORD (the four sides); GROUP_NO A (0, 0), B (N, 0), C (N, N), D (0, N).
 """
 import sys
 
@@ -50,11 +51,17 @@ def main(argv):
         k += 1
         out.append("S%d N%d N%d" % (k, node(0, j), node(0, j - 1)))
         sides["GAUCHE"].append(k)
+    sides["MILIEU"] = []
+    nsides = k
+    for j in range(n):
+        k += 1
+        out.append("S%d N%d N%d" % (k, node(n // 2, j), node(n // 2, j + 1)))
+        sides["MILIEU"].append(k)
     out.append("FINSF")
     out += ["GROUP_MA NOM=PLAQUE"] + ["Q%d" % c for c in range(1, n * n + 1)] + ["FINSF"]
     for name, cells in sides.items():
         out += ["GROUP_MA NOM=%s" % name] + ["S%d" % c for c in cells] + ["FINSF"]
-    out += ["GROUP_MA NOM=BORD"] + ["S%d" % c for c in range(1, k + 1)] + ["FINSF"]
+    out += ["GROUP_MA NOM=BORD"] + ["S%d" % c for c in range(1, nsides + 1)] + ["FINSF"]
     for name, (i, j) in (("A", (0, 0)), ("B", (n, 0)), ("C", (n, n)), ("D", (0, n))):
         out += ["GROUP_NO NOM=%s" % name, "N%d" % node(i, j), "FINSF"]
     out.append("FIN")
