@@ -169,6 +169,26 @@ def make_seeds(parasol, work, wanted):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": os.path.join(verif, name + ".mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # The plane family on its five cell types (an export file binding five meshes, curved
+    # quadratic cells) and the discrete elements with rotations and full matrices (issue 21).
+    plane = os.path.join(SOURCE, "tests", "plane")
+    files = {"case.export": os.path.join(plane, "patch_plane.export"),
+             "patch_plane.comm": os.path.join(plane, "patch_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["patch_%s.mail" % cell] = os.path.join(plane, "patch_%s.mail" % cell)
+    seeds.append(Seed("plane_patch", files, [],
+                      {"case.export": "export", "patch_plane.comm": "deck",
+                       "patch_tria6.mail": "mail", "patch_quad8.mail": "mail",
+                       "patch_quad9.mail": "mail"}, 1.0))
+    discrete = os.path.join(SOURCE, "tests", "discrete")
+    seeds.append(Seed("discrete", {"case.export": os.path.join(discrete, "discrete.export"),
+                                   "discrete.comm": os.path.join(discrete, "discrete.comm"),
+                                   "discrete_3d.mail": os.path.join(discrete,
+                                                                    "discrete_3d.mail"),
+                                   "discrete_2d.mail": os.path.join(discrete,
+                                                                    "discrete_2d.mail")},
+                      [], {"case.export": "export", "discrete.comm": "deck",
+                           "discrete_3d.mail": "mail", "discrete_2d.mail": "mail"}, 0.8))
     # Fields: CREA_CHAMP (AFFE, EXTR, ASSE, COMB, EVAL) and TEST_RESU on field concepts.
     fields = os.path.join(SOURCE, "tests", "fields")
     seeds.append(Seed("fields", {"case.comm": os.path.join(fields, "crea_champ.comm"),
