@@ -62,6 +62,9 @@ NOT_FINITE = re.compile(r"(?i)(?<![A-Za-z_])(nan|[-+]?inf(inity)?)(?![A-Za-z_0-9
 LISTING_NOT_FINITE = re.compile(r"NON_FINI|[-+]INFINI(?!%)")
 ECHO = re.compile(r"^\s*\d+ \| ", re.M)
 QUOTES = re.compile(r"\"[^\"\n]*\"|'[^'\n]*'")
+# The values a keyword allows, listed or suggested by a validation error (CRITERE: SUP,
+# INF).
+ALLOWED = re.compile(r"\((allowed: |did you mean )[^)\n]*\)")
 ADDRESS_SPACE = 4 << 30
 MUTATE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mutate.py")
 EXPORT_TIME_LIMIT = 20      # seconds, the P time_limit of the cases run through an export
@@ -220,6 +223,9 @@ def make_seeds(parasol, work, wanted):
                       ["--unit", "38=case.38", "--unit", "39=case.39", "--unit", "40=case.40"],
                       dict(comm_targets, **{"case.38": "table", "case.39": "table",
                                             "case.40": "table"}), 1.0))
+    # Functions by points: CALC_FONCTION's operations, TEST_FONCTION, IMPR_FONCTION.
+    seeds.append(Seed("functions", {"case.comm": os.path.join(tables, "functions.comm")},
+                      [], comm_targets, 1.0))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
@@ -385,18 +391,23 @@ def input_words(folder):
 
 def scan_not_finite(text, quoted=frozenset()):
     """NaN/Inf tokens in a listing, leaving out echoed deck lines, quoted input, and in
-    error and warning lines the spellings that the input itself contains (`quoted`)."""
+    error and warning lines the spellings that the input itself contains (`quoted`); so
+    too, in any line, an all-capitals INF or NAN the input contains (a legend or a name
+    copied from the deck: no number is ever written that way)."""
     hits = []
     for line in text.splitlines():
         if ECHO.match(line):
             continue
         line = QUOTES.sub("", line)
         message = "error: " in line or "warning: " in line
+        if message:
+            line = ALLOWED.sub("", line)
         if LISTING_NOT_FINITE.search(line):
             hits.append(line.strip()[:160])
             continue
         for m in NOT_FINITE.finditer(line):
-            if message and m.group(0).lower().lstrip("+-") in quoted:
+            if (message or m.group(0).lstrip("+-") in ("INF", "NAN")) and \
+                    m.group(0).lower().lstrip("+-") in quoted:
                 continue
             hits.append(line.strip()[:160])
             break
