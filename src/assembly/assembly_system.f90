@@ -11,18 +11,21 @@ module assembly_system
     use strings, only: to_text
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, MAX_CELL_NODES
     use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
-        is_discrete_2d, is_plane_strain, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, &
+        is_discrete_2d, is_plane_strain, is_discrete_rotational, ELEM_NONE, ELEM_DIS_T_SEG2, &
+        ELEM_2D_DIS_T_SEG2, &
         ELEM_DIS_T_POI1, ELEM_2D_DIS_T_POI1, ELEMENT_NAMES
     use model_material, only: material_field_t, material_t, material_of_cell, elastic_behaviour
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
-        ORIENT_ANGL_NAUT
+        ORIENT_ANGL_NAUT, cara_is_diagonal, cara_is_rotational
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
         rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
         expand_plate_blocks
     use element_plane, only: plane_elasticity_matrix, plane_stiffness
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
-        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
+        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness, discrete_local_matrix, &
+        discrete_rotate_to_global, plane_rotation, segment_rotation, segment_rotation_2d, &
+        nautical_rotation
     use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_line_seg2, &
         choc_line_t
     use element_dis_contact, only: dis_contact_seg2, dis_contact_start
@@ -156,6 +159,12 @@ contains
                         what = law // ' but no material (AFFE_MATERIAU with DIS_CONTACT)'
                     else if (.not. s%materials%materials(m)%has_dis_contact) then
                         what = law // ' but no DIS_CONTACT in its material'
+                    else if (is_discrete_rotational(kind)) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
+                            cell_label(s%mesh, c, group_of) // ' (' // &
+                            trim(ELEMENT_NAMES(kind)) // ') is not built; use DIS_T or ' // &
+                            '2D_DIS_T springs')
+                        return
                     else if (s%mesh%cell_type(c) == CELL_POI1) then
                         call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
                             cell_label(s%mesh, c, group_of) // ' (POI1) is not built; ' // &
@@ -481,26 +490,36 @@ contains
         if (allocated(s%dis_contact)) is_dis_contact = s%dis_contact(c)
     end function is_dis_contact
 
-    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation).
+    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation:
+    !> ORIENTATION's angles are degrees, as Code_Aster's). Diagonal translational ones
+    !> (K_T_D_*) through the DIS_T kernels; the others (DIS_TR, full matrices) through
+    !> discrete_local_matrix / discrete_rotate_to_global (element_discrete).
     subroutine discrete_matrix(s, c, x, n, ke, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
         real(dp), intent(in) :: x(:, :)
         real(dp), intent(out) :: ke(n, n)
         type(status_t), intent(out) :: st
-        integer(i4) :: kind
+        real(dp), parameter :: DEGREE = acos(-1.0_dp) / 180.0_dp
+        integer(i4) :: kind, code
         real(dp) :: kv(6), angles(3), k6(6, 6), k4(4, 4), c3(3, 2), c2(2, 2)
         logical :: global
         kind = s%model%element(c)
-        c3 = x(:, 1:2)
+        code = s%cara%discrete_cara(c)
+        c3 = x(1:3, 1:2)
         c2 = x(1:2, 1:2)
         kv = s%cara%discrete_values(:, c)
         global = s%cara%discrete_repere(c) == REPERE_GLOBAL
         angles = 0.0_dp
         if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
-            s%cara%orientation_values(1, c)
-        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
+            s%cara%orientation_values(1, c) * DEGREE
+        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = &
+            s%cara%orientation_values(:, c) * DEGREE
         ke = 0.0_dp
+        if (.not. (cara_is_diagonal(code) .and. .not. cara_is_rotational(code))) then
+            call general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
+            return
+        end if
         select case (kind)
         case (ELEM_DIS_T_SEG2)
             call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
@@ -514,6 +533,50 @@ contains
             call dis_2d_t_poi1_stiffness(kv(1:2), global, angles(1), ke)
         end select
     end subroutine discrete_matrix
+
+    ! A DIS_TR / 2D_DIS_TR discrete, or a full matrix (K_T_N, K_T_L, K_TR_N, K_TR_L): the
+    ! matrix in the discrete's frame, turned to the global one unless REPERE='GLOBAL'. The
+    ! frame: a SEG2's (local x along it, ANGL_VRIL), a POI1's ORIENTATION (2D: its first
+    ! angle about Z).
+    subroutine general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(:, :), kv(6), angles(3)
+        logical, intent(in) :: global
+        real(dp), intent(out) :: ke(n, n)
+        type(status_t), intent(out) :: st
+        integer(i4) :: kind, n_nodes, node_dofs, id
+        real(dp) :: kl(n, n), r(3, 3), r2(2, 2)
+        logical :: two_d
+        kind = s%model%element(c)
+        two_d = is_discrete_2d(kind)
+        n_nodes = merge(1_i4, 2_i4, s%mesh%cell_type(c) == CELL_POI1)
+        node_dofs = n / n_nodes
+        id = s%cara%discrete_matrix(c)
+        if (id > 0) then
+            kl = s%cara%matrices(id)%k
+        else
+            call discrete_local_matrix(kv(1:node_dofs), n_nodes, kl)
+        end if
+        if (global) then
+            ke = kl
+            return
+        end if
+        if (n_nodes == 2 .and. two_d) then
+            call segment_rotation_2d(x(1:2, 1), x(1:2, 2), r2, st)
+            r = 0.0_dp
+            r(1:2, 1:2) = r2
+            r(3, 3) = 1.0_dp
+        else if (n_nodes == 2) then
+            call segment_rotation(x(1:3, 1), x(1:3, 2), angles(3), r, st)
+        else if (two_d) then
+            r = plane_rotation(angles(1))
+        else
+            call nautical_rotation(angles, r)
+        end if
+        if (st%failed()) return
+        call discrete_rotate_to_global(kl, n_nodes, node_dofs, two_d, r, ke)
+    end subroutine general_discrete_matrix
 
     !> DIS_CONTACT on a SEG2 (element_dis_contact), from the spring's state at the start of
     !> the step (history) or, without one, the state before the first step.
