@@ -5,7 +5,7 @@
 !> contact_newton) and write its lines to the .mess. The result is a result_concept_t.
 module analysis_commands
     use kinds, only: dp, i4, i8
-    use status, only: status_t, clear_status, STATUS_MODEL_ERROR
+    use status, only: status_t, clear_status, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
@@ -20,6 +20,7 @@ module analysis_commands
     use load_commands, only: char_meca_concept_t
     use function_concept, only: function_concept_t
     use real_list, only: real_list_t
+    use time_stepping, only: list_inst_concept_t, step_cutting_t, step_cutting_for
     use assembly_system, only: structure_t, structure_check
     use assembly_loads, only: check_imposed_owners, record_imposed
     use model_loads, only: load_item_where
@@ -29,7 +30,7 @@ module analysis_commands
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
-    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION
+    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION, result_set_structure
     use analysis_log, only: analysis_log_t, log_stream, log_flush
     implicit none
     private
@@ -59,13 +60,15 @@ contains
         type(result_concept_t), allocatable :: res
         type(analysis_log_t) :: log
         type(newton_summary_t) :: summary
+        type(step_cutting_t) :: cutting
         real(dp), allocatable :: times(:)
         call gather_structure(cmd, s, st)
         if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_behaviour(cmd, s, st)
-        if (st%ok()) call read_increment(cmd, times, st)
+        if (st%ok()) call read_increment(cmd, times, cutting, st)
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
+        options%cutting = cutting
         options%deadline = ctx%deadline            ! polled between Newton iterations
         options%progress => ctx%progress           ! a line per step, work under way
         call structure_check(s, st)
@@ -90,6 +93,7 @@ contains
             to_text(sum(summary%damped)) // ' correction(s) damped by the line search')
         call ctx%write_mess('    ' // solver_diagnostics_line(summary, options%factor%nprec, &
             options%factor%method))
+        call keep_structure(cmd, s, res)
         call move_alloc(res, result)
     end subroutine run_stat_non_line
 
@@ -133,8 +137,26 @@ contains
         call meca_statique(s, excit, times, options%factor, res, log, st, ctx%progress)
         call log_flush(log)
         if (st%failed()) return
+        call keep_structure(cmd, s, res)
         call move_alloc(res, result)
     end subroutine run_meca_statique
+
+    !> Gives the result the structure it was computed on (CALC_CHAMP computes on it) and the
+    !> name of its MODELE.
+    subroutine keep_structure(cmd, s, res)
+        type(command_t), intent(in) :: cmd
+        type(structure_t), intent(in) :: s
+        type(result_concept_t), intent(inout) :: res
+        class(concept_t), pointer :: p
+        type(status_t) :: st
+        character(len=:), allocatable :: name
+        name = ''
+        call cmd%get_concept('MODELE', p, st)
+        if (st%ok()) then
+            if (allocated(p%name)) name = p%name
+        end if
+        call result_set_structure(res, s%model, s%materials, s%cara, s%choc, name)
+    end subroutine keep_structure
 
     !> Refuses, before anything is allocated, an analysis whose records would take more
     !> than MAX_RECORD_BYTES: n_inst instants of 3 fields of n_eq equations and n_springs
@@ -354,11 +376,16 @@ contains
         end do
     end subroutine read_behaviour
 
-    !> INCREMENT: LIST_INST restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices
+    !> INCREMENT: LIST_INST (a DEFI_LIST_REEL, or a DEFI_LIST_INST with what a failed step
+    !> does: time_stepping) restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices
     !> from 0). times(1) is the initial instant.
-    subroutine read_increment(cmd, times, st)
+    !>  cutting : out, the list's ECHEC policy (off for a DEFI_LIST_REEL)
+    !>  st      : out, located at INCREMENT/LIST_INST: an empty selection; what the
+    !>            DEFI_LIST_INST asks for that parasol does not build
+    subroutine read_increment(cmd, times, cutting, st)
         type(command_t), intent(in) :: cmd
         real(dp), allocatable, intent(out) :: times(:)
+        type(step_cutting_t), intent(out) :: cutting
         type(status_t), intent(out) :: st
         type(keyword_set_t) :: occ
         class(concept_t), pointer :: p
@@ -370,8 +397,16 @@ contains
         select type (p)
         type is (real_list_t)
             times = p%values
+        type is (list_inst_concept_t)
+            times = p%instants
+            call step_cutting_for(p, cutting, st)
+            if (st%failed()) then
+                call occ%error_at('LIST_INST', st%message, st, code=STATUS_NOT_IMPLEMENTED)
+                return
+            end if
         class default
-            call occ%error_at('LIST_INST', 'expected a list of reals (DEFI_LIST_REEL)', st)
+            call occ%error_at('LIST_INST', 'expected a list of instants (DEFI_LIST_REEL, ' // &
+                'DEFI_LIST_INST)', st)
             return
         end select
         i0 = 1

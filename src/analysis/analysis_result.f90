@@ -1,42 +1,57 @@
 !> The result of an analysis (concepts `evol_elas` of MECA_STATIQUE and `evol_noli` of
-!> STAT_NON_LINE): the fields stored per instant, read by TEST_RESU and IMPR_RESU.
+!> STAT_NON_LINE): the analysis's raw state per stored instant, the structure it was computed
+!> on, and (inherited from result_fields_t) the fields stored per instant by later commands
+!> (CALC_CHAMP, ...). doc/architecture.md, "Fields and results".
 !>
 !> Storage follows Code_Aster: NUME_ORDRE 0 is the initial state (INST_INIT), then one
-!> stored instant per converged step. Nodal fields are kept as equation vectors of the DOF
-!> numbering (before renumbering), so a node has exactly the components its elements use.
-!>   DEPL      displacements (imposed values included);
-!>   FORC_NODA nodal internal forces f_int(u);
-!>   REAC_NODA reactions f_int(u) - f_ext on the imposed equations, 0 elsewhere.
+!> stored instant per converged step. The raw state is kept as equation vectors of the DOF
+!> numbering (before renumbering), so a node has exactly the components its elements use:
+!>   depl      displacements (imposed values included);
+!>   forc_noda nodal internal forces f_int(u);
+!>   reac_noda reactions f_int(u) - f_ext on the imposed equations, 0 elsewhere.
 !> Spring (discrete) results, for DIS_CHOC: per spring cell, the contact status and the
 !> normal force (negative in compression) per stored instant, and Code_Aster's element
 !> fields (element_spring_fields):
 !>   SIEF_ELGA discrete forces in the element frame, N VY VZ (N VY in 2D), POINT 1 and 2;
 !>   VARI_ELGA the DIS_CHOC internal variables V1 .. V10 (V4: 0 in contact, 2 open).
 !> Both points of a spring hold the same values (as Code_Aster's DIS_CHOC), stored once.
+!> The fields DEPL, FORC_NODA, REAC_NODA, SIEF_ELGA and VARI_ELGA are made from this state
+!> by the post layer when a command asks for them (result_access); fields computed later
+!> are stored in the inherited field store.
+!>
+!> The structure (model, materials, element characteristics, the behaviour of each cell) is
+!> a copy, kept so that CALC_CHAMP computes on what the analysis used.
 module analysis_result
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
-    use deck_concept, only: concept_t
-    use mesh_types, only: mesh_t
+    use mesh_types, only: mesh_t, mesh_release
     use model_dof_numbering, only: dof_numbering_t, component_index
     use mesh_types, only: cell_name
+    use model_types, only: model_t
+    use model_material, only: material_field_t
+    use model_cara_elem, only: cara_elem_t
     use element_spring_fields, only: SPRING_POINTS, DIS_CHOC_N_VARI, sief_component_index, &
         vari_component_index
+    use result_fields, only: result_fields_t, result_fields_init, result_add_instant, &
+        result_find, RESULT_INST_PRECISION
     implicit none
     private
 
-    !> Relative tolerance for matching a requested INST to a stored one (Code_Aster's
-    !> TEST_RESU/IMPR_RESU default PRECISION for instants, CRITERE='RELATIF': 1e-6).
-    real(dp), parameter, public :: RESULT_INST_PRECISION = 1.0e-6_dp
+    public :: RESULT_INST_PRECISION, result_find
 
-    type, extends(concept_t), public :: result_concept_t
-        character(len=:), allocatable :: kind          !< 'evol_elas' or 'evol_noli'
+    type, extends(result_fields_t), public :: result_concept_t
         type(mesh_t) :: mesh                           !< the mesh the fields live on
         type(dof_numbering_t) :: dofs                  !< equation of (component, node)
-        integer(i4) :: n_stored = 0                    !< instants stored so far
-        integer(i4), allocatable :: nume_ordre(:)      !< (capacity) NUME_ORDRE of each
-        real(dp), allocatable :: inst(:)               !< (capacity) INST of each
+        !> The structure of the analysis (copies): CALC_CHAMP computes on it.
+        logical :: has_structure = .false.
+        type(model_t) :: model
+        type(material_field_t) :: materials
+        type(cara_elem_t) :: cara
+        logical, allocatable :: choc(:)                !< (n_cells) a contact law
+        character(len=:), allocatable :: model_name    !< the MODELE concept, for messages
+        !> The raw state (see the module header); allocated by result_init only.
+        logical :: has_state = .false.
         real(dp), allocatable :: depl(:, :)            !< (n_equations, capacity)
         real(dp), allocatable :: forc_noda(:, :)       !< (n_equations, capacity)
         real(dp), allocatable :: reac_noda(:, :)       !< (n_equations, capacity)
@@ -47,21 +62,22 @@ module analysis_result
         real(dp), allocatable :: spring_sief(:, :, :)  !< (3, n_springs, capacity) N VY VZ
         real(dp), allocatable :: spring_vari(:, :, :)  !< (DIS_CHOC_N_VARI, n_springs, capacity)
     contains
-        procedure :: type_name => result_type_name
         procedure :: summary => result_summary
+        final :: result_concept_final
     end type result_concept_t
 
-    public :: result_init, result_store, result_find, result_node_value, &
-        result_store_spring_fields, result_cell_value, is_cell_field
+    public :: result_init, result_reserve, result_store, result_node_value, &
+        result_store_spring_fields, result_cell_value, is_cell_field, result_set_structure
 
 contains
 
-    function result_type_name(self) result(name)
-        class(result_concept_t), intent(in) :: self
-        character(len=:), allocatable :: name
-        name = 'evol_noli'
-        if (allocated(self%kind)) name = self%kind
-    end function result_type_name
+    !> Frees the mesh explicitly: the finalization gfortran 12 generates for this type
+    !> leaves part of mesh_t (its name indexes) allocated, as for mesh_concept_t (see there);
+    !> found by valgrind (CTest valgrind.*).
+    subroutine result_concept_final(self)
+        type(result_concept_t), intent(inout) :: self
+        call mesh_release(self%mesh)
+    end subroutine result_concept_final
 
     !> One line for the .mess: kind, instants stored, equations.
     function result_summary(self) result(text)
@@ -72,6 +88,25 @@ contains
         if (self%n_stored > 0) text = text // ', INST ' // real_e13(self%inst(1)) // &
             ' to ' // real_e13(self%inst(self%n_stored))
     end function result_summary
+
+    !> Records the structure an analysis ran on (copies of the model, materials, element
+    !> characteristics and contact-law cells): CALC_CHAMP computes on it.
+    !>  choc       : in, (n_cells) cells with a contact law (DIS_CHOC, DIS_CONTACT)
+    !>  model_name : in, the MODELE concept's name, for messages
+    subroutine result_set_structure(res, model, materials, cara, choc, model_name)
+        type(result_concept_t), intent(inout) :: res
+        type(model_t), intent(in) :: model
+        type(material_field_t), intent(in) :: materials
+        type(cara_elem_t), intent(in) :: cara
+        logical, intent(in) :: choc(:)
+        character(len=*), intent(in) :: model_name
+        res%has_structure = .true.
+        res%model = model
+        res%materials = materials
+        res%cara = cara
+        res%choc = choc
+        res%model_name = model_name
+    end subroutine result_set_structure
 
     !> Prepares an empty result for `capacity` instants.
     !>  res      : out, the result
@@ -88,10 +123,10 @@ contains
         integer(i4), intent(in) :: capacity
         integer(i4), intent(in), optional :: spring_cell(:)
         integer(i4) :: n_springs
-        res%kind = kind
+        call result_fields_init(res, kind, capacity)
         res%mesh = mesh
         res%dofs = dofs
-        allocate (res%nume_ordre(capacity), res%inst(capacity))
+        res%has_state = .true.
         allocate (res%depl(dofs%n_equations, capacity), res%forc_noda(dofs%n_equations, &
             capacity), res%reac_noda(dofs%n_equations, capacity))
         n_springs = 0
@@ -102,6 +137,46 @@ contains
             res%spring_vari(DIS_CHOC_N_VARI, n_springs, capacity), source=0.0_dp)
         if (present(spring_cell)) res%spring_cell = spring_cell
     end subroutine result_init
+
+    !> Makes room for `capacity` instants in the raw state (the instants a STAT_NON_LINE step
+    !> cut by DEFI_LIST_INST/ECHEC adds; the stored instants grow by themselves,
+    !> result_add_instant); what is stored is kept.
+    subroutine result_reserve(res, capacity)
+        type(result_concept_t), intent(inout) :: res
+        integer(i4), intent(in) :: capacity
+        integer(i4) :: n
+        if (capacity <= size(res%depl, 2)) return
+        n = res%n_stored
+        call grow_r2(res%depl)
+        call grow_r2(res%forc_noda)
+        call grow_r2(res%reac_noda)
+        call grow_l2(res%spring_closed)
+        call grow_r2(res%spring_force)
+        call grow_r3(res%spring_sief)
+        call grow_r3(res%spring_vari)
+    contains
+        subroutine grow_r2(a)
+            real(dp), allocatable, intent(inout) :: a(:, :)
+            real(dp), allocatable :: b(:, :)
+            allocate (b(size(a, 1), capacity))
+            b(:, 1:n) = a(:, 1:n)
+            call move_alloc(b, a)
+        end subroutine grow_r2
+        subroutine grow_l2(a)
+            logical, allocatable, intent(inout) :: a(:, :)
+            logical, allocatable :: b(:, :)
+            allocate (b(size(a, 1), capacity))
+            b(:, 1:n) = a(:, 1:n)
+            call move_alloc(b, a)
+        end subroutine grow_l2
+        subroutine grow_r3(a)
+            real(dp), allocatable, intent(inout) :: a(:, :, :)
+            real(dp), allocatable :: b(:, :, :)
+            allocate (b(size(a, 1), size(a, 2), capacity), source=0.0_dp)
+            b(:, :, 1:n) = a(:, :, 1:n)
+            call move_alloc(b, a)
+        end subroutine grow_r3
+    end subroutine result_reserve
 
     !> Stores one instant (the next NUME_ORDRE).
     !>  depl, forc_noda, reac_noda : in, (n_equations) fields at this instant
@@ -115,57 +190,13 @@ contains
         logical, intent(in), optional :: spring_closed(:)
         real(dp), intent(in), optional :: spring_force(:)
         integer(i4) :: k
-        res%n_stored = res%n_stored + 1
-        k = res%n_stored
-        res%nume_ordre(k) = nume_ordre
-        res%inst(k) = inst
+        call result_add_instant(res, nume_ordre, inst, k)
         res%depl(:, k) = depl
         res%forc_noda(:, k) = forc_noda
         res%reac_noda(:, k) = reac_noda
         if (present(spring_closed)) res%spring_closed(:, k) = spring_closed
         if (present(spring_force)) res%spring_force(:, k) = spring_force
     end subroutine result_store
-
-    !> Index (1..n_stored) of the stored instant asked for by INST (within
-    !> RESULT_INST_PRECISION, relative, absolute near 0) or by NUME_ORDRE.
-    !>  st : STATUS_MODEL_ERROR naming the instant and listing what is stored
-    subroutine result_find(res, index, st, inst, nume_ordre)
-        type(result_concept_t), intent(in) :: res
-        integer(i4), intent(out) :: index
-        type(status_t), intent(out) :: st
-        real(dp), intent(in), optional :: inst
-        integer(i4), intent(in), optional :: nume_ordre
-        integer(i4) :: k
-        character(len=:), allocatable :: stored
-        index = 0
-        do k = 1, res%n_stored
-            if (present(inst)) then
-                if (abs(res%inst(k) - inst) <= RESULT_INST_PRECISION * max(abs(inst), &
-                    1.0_dp)) index = k
-            else if (present(nume_ordre)) then
-                if (res%nume_ordre(k) == nume_ordre) index = k
-            end if
-            if (index /= 0) return
-        end do
-        stored = ''
-        do k = 1, res%n_stored
-            if (k > 1) stored = stored // ', '
-            if (present(inst)) then
-                stored = stored // real_e13(res%inst(k))
-            else
-                stored = stored // to_text(res%nume_ordre(k))
-            end if
-        end do
-        if (present(inst)) then
-            call set_error(st, STATUS_MODEL_ERROR, 'INST ' // real_e13(inst) // &
-                ' is not stored in the result (stored: ' // stored // ')')
-        else if (present(nume_ordre)) then
-            call set_error(st, STATUS_MODEL_ERROR, 'NUME_ORDRE ' // to_text(nume_ordre) // &
-                ' is not stored in the result (stored: ' // stored // ')')
-        else
-            call set_error(st, STATUS_MODEL_ERROR, 'give INST or NUME_ORDRE')
-        end if
-    end subroutine result_find
 
     !> Value of component `component` (e.g. 'DZ') of field `field` ('DEPL', 'FORC_NODA',
     !> 'REAC_NODA') at node `node` for stored instant `index`.

@@ -46,19 +46,21 @@
 !> newton_log (the .mess rows), analysis_solver (the solver as the analyses use it).
 module contact_newton
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_NO_CONVERGENCE
+    use status, only: status_t, set_error, clear_status, STATUS_NO_CONVERGENCE, &
+        STATUS_NO_EQUILIBRIUM
     use strings, only: to_text, real_e13, real_short
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         internal_forces_incremental, contact_history_start, contact_history_update, &
-        is_dis_contact, spring_matrices
+        is_dis_contact, spring_matrices, contact_history_t
     use sparse_matrix, only: sym_move
     use solver_factory, only: assembly_renum
     use low_rank_update, only: block_set_init, factor_cost_in_solves
     use assembly_loads, only: mark_imposed
-    use analysis_result, only: result_concept_t, result_init, result_store
+    use analysis_result, only: result_concept_t, result_init, result_store, result_reserve
     use spring_results, only: store_spring_fields
     use analysis_log, only: analysis_log_t, log_add, log_flush
-    use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line
+    use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
+        solve_held, answer_digits, real_digits
     use analysis_excitation, only: excitation_t, loads_at
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
         step_pivots_t, residual_measures, criteria_met, absolute_tol, prediction_is_elastic, &
@@ -70,10 +72,27 @@ module contact_newton
     use factor_reuse, only: correction, judge_converged_tangent
     use contact_globalisation, only: line_search, check_no_equilibrium
     use newton_log, only: history_text, step_line, seconds_text, iteration_row
+    use two_level_solver, only: from_hat, hat_body_part
     use progress, only: wall_seconds, progress_note, progress_update, progress_done, &
         progress_context
     implicit none
     private
+
+    !> The state a failed step is taken back to (DEFI_LIST_INST/ECHEC DECOUPE): the
+    !> displacements and forces (the plate/plane forces accumulated by increments
+    !> included), the contact statuses and the DIS_CONTACT history. The factor and what it
+    !> holds stay as they are: they describe the one matrix, whatever the step.
+    type :: step_start_t
+        real(dp), allocatable :: u(:), fint(:), fext(:), flin(:), fn(:)
+        logical, allocatable :: closed(:)
+        type(contact_history_t) :: history
+    end type step_start_t
+
+    !> Most steps an analysis may have once failed steps are cut (DEFI_LIST_INST/ECHEC):
+    !> SUBD_PAS and SUBD_NIVEAU are the deck's, and nested cuts of failing steps multiply;
+    !> beyond this the step is not cut and its error stops the run (issue 13: no count
+    !> read from a deck may grow an allocation or a run without bound).
+    integer(i4), parameter :: MAX_CUT_STEPS = 100000
 
     public :: stat_non_line, newton_options_t, newton_summary_t, excitation_t, loads_at, &
         residual_measures, solver_diagnostics_line, DEFAULT_RESI_GLOB_RELA, &
@@ -103,6 +122,10 @@ contains
         type(newton_state_t) :: state
         logical, allocatable :: imposed(:)
         integer(i4) :: k, step, n_eq
+        real(dp), allocatable :: targets(:)
+        integer(i4), allocatable :: levels(:)
+        real(dp) :: t_prev
+        type(step_start_t) :: saved
         n_eq = s%dofs%n_equations
         call progress_note(options%progress, 'STAT_NON_LINE: ' // to_text(n_eq) // &
             ' equations, ' // to_text(count(s%choc, kind=i4)) // ' DIS_CHOC springs, ' // &
@@ -117,7 +140,7 @@ contains
         if (st%failed()) return
         call log_numbering(map, options%factor, log)
         call sym_move(map%pattern, state%matrix)
-        call open_solver(options%factor, state%matrix, state%solver, log, st)
+        call open_solver(s, map, options%factor, state%matrix, state%solver, log, st)
         if (st%failed()) return
         state%solver%progress => options%progress
         call log_add(log, to_text(size(map%springs)) // ' ' // spring_law(s, map) // ' springs')
@@ -156,19 +179,139 @@ contains
         call store_spring_fields(s, state%u, res, st)      ! SIEF_ELGA, VARI_ELGA
         if (st%failed()) return
         n_eq = int(size(times), i4) - 1
-        allocate (summary%inst(n_eq), summary%iterations(n_eq), summary%factorizations(n_eq), &
-            summary%resi_rela(n_eq), summary%resi_maxi(n_eq), summary%solves(n_eq), &
-            summary%updated(n_eq), summary%damped(n_eq))
-        do step = 1, int(size(times), i4) - 1
-            call newton_step(s, map, excit, times(step + 1), step, options, state, log, &
+        call grow_summary(summary, n_eq)
+        ! the steps to the instants of the list; a step that fails is cut into shorter ones
+        ! when the list says so (DEFI_LIST_INST/ECHEC DECOUPE: cut_failed_step)
+        targets = times(2:)
+        levels = [(0_i4, k = 1, size(targets))]
+        t_prev = times(1)
+        k = 1
+        step = 0
+        do while (k <= size(targets))
+            call keep_step_start(state, saved)
+            call grow_summary(summary, step + 1 + size(targets, kind=i4) - k)
+            call newton_step(s, map, excit, targets(k), step + 1, options, state, log, &
                 summary, st)
-            if (st%failed()) return
-            call result_store(res, step, times(step + 1), state%u, state%fint, &
+            if (st%failed()) then
+                call cut_failed_step(options, t_prev, k, targets, levels, log, st)
+                if (st%failed()) return
+                call restore_step_start(saved, state)
+                cycle
+            end if
+            step = step + 1
+            call result_reserve(res, step + 1 + size(targets, kind=i4) - k)
+            call result_store(res, step, targets(k), state%u, state%fint, &
                 reactions(map, state), state%closed, state%fn)
             call store_spring_fields(s, state%u, res, st)
             if (st%failed()) return
+            t_prev = targets(k)
+            k = k + 1
         end do
     end subroutine stat_non_line
+
+    !> A step to targets(k) from t_prev failed with status st. When the list of instants
+    !> cuts failed steps (DEFI_LIST_INST, ECHEC EVENEMENT='ERREUR', ACTION='DECOUPE'), the
+    !> failure is a Newton one (no convergence, no equilibrium), the step's level of
+    !> subdivision is below SUBD_NIVEAU and its SUBD_PAS parts are at least SUBD_PAS_MINI
+    !> (and above round-off), the step is replaced by SUBD_PAS equal steps one level deeper
+    !> (Code_Aster nmdecm, nmdecv) and st is cleared; otherwise st is kept, with why the step
+    !> could not be cut when cutting was on.
+    subroutine cut_failed_step(options, t_prev, k, targets, levels, log, st)
+        type(newton_options_t), intent(in) :: options
+        real(dp), intent(in) :: t_prev
+        integer(i4), intent(in) :: k
+        real(dp), allocatable, intent(inout) :: targets(:)
+        integer(i4), allocatable, intent(inout) :: levels(:)
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(inout) :: st
+        real(dp) :: dt
+        integer(i4) :: n, i
+        character(len=:), allocatable :: why
+        if (.not. options%cutting%enabled) return
+        if (st%code /= STATUS_NO_CONVERGENCE .and. st%code /= STATUS_NO_EQUILIBRIUM) return
+        n = options%cutting%subd_pas
+        dt = (targets(k) - t_prev) / real(n, dp)
+        why = ''
+        if (levels(k) >= options%cutting%subd_niveau) then
+            why = 'SUBD_NIVEAU = ' // to_text(options%cutting%subd_niveau) // ' reached'
+        else if (size(targets) + n - 1 > MAX_CUT_STEPS) then
+            why = 'the analysis would have more than ' // to_text(MAX_CUT_STEPS) // ' steps'
+        else if (dt < options%cutting%subd_pas_mini .or. &
+                 .not. dt > epsilon(1.0_dp) * max(abs(targets(k)), abs(t_prev))) then
+            why = 'a step of ' // real_e13(dt) // ' would be below SUBD_PAS_MINI = ' // &
+                real_e13(options%cutting%subd_pas_mini) // ' or the round-off of INST'
+        end if
+        if (len(why) > 0) then
+            st%message = st%message // ' (DEFI_LIST_INST/ECHEC: the step from INST ' // &
+                real_e13(t_prev) // ' could not be cut further: ' // why // ')'
+            return
+        end if
+        call log_add(log, '  step to INST ' // real_e13(targets(k)) // ' failed (' // &
+            st%message // '): cut into ' // to_text(n) // ' steps of ' // real_e13(dt) // &
+            ' (subdivision level ' // to_text(levels(k) + 1) // ' of SUBD_NIVEAU = ' // &
+            to_text(options%cutting%subd_niveau) // ', DEFI_LIST_INST/ECHEC DECOUPE)')
+        targets = [targets(1:k - 1), [(t_prev + dt * real(i, dp), i = 1, n - 1)], &
+            targets(k:)]
+        levels = [levels(1:k - 1), spread(levels(k) + 1, 1, n), levels(k + 1:)]
+        call clear_status(st)
+    end subroutine cut_failed_step
+
+    !> The state at the start of a step that a failed step is taken back to.
+    subroutine keep_step_start(state, saved)
+        type(newton_state_t), intent(in) :: state
+        type(step_start_t), intent(out) :: saved
+        saved%u = state%u
+        saved%fint = state%fint
+        saved%fext = state%fext
+        saved%flin = state%flin
+        saved%fn = state%fn
+        saved%closed = state%closed
+        if (allocated(state%history%fn0)) saved%history = state%history
+    end subroutine keep_step_start
+
+    subroutine restore_step_start(saved, state)
+        type(step_start_t), intent(in) :: saved
+        type(newton_state_t), intent(inout) :: state
+        state%u = saved%u
+        state%fint = saved%fint
+        state%fext = saved%fext
+        state%flin = saved%flin
+        state%fn = saved%fn
+        state%closed = saved%closed
+        if (allocated(saved%history%fn0)) state%history = saved%history
+    end subroutine restore_step_start
+
+    !> Room for n steps in the summary (kept values kept).
+    subroutine grow_summary(summary, n)
+        type(newton_summary_t), intent(inout) :: summary
+        integer(i4), intent(in) :: n
+        if (allocated(summary%inst)) then
+            if (size(summary%inst) >= n) return
+        end if
+        call grow_r(summary%inst)
+        call grow_r(summary%resi_rela)
+        call grow_r(summary%resi_maxi)
+        call grow_i(summary%iterations)
+        call grow_i(summary%factorizations)
+        call grow_i(summary%solves)
+        call grow_i(summary%updated)
+        call grow_i(summary%damped)
+    contains
+        subroutine grow_r(a)
+            real(dp), allocatable, intent(inout) :: a(:)
+            real(dp), allocatable :: b(:)
+            allocate (b(n), source=0.0_dp)
+            if (allocated(a)) b(1:size(a)) = a
+            call move_alloc(b, a)
+        end subroutine grow_r
+        subroutine grow_i(a)
+            integer(i4), allocatable, intent(inout) :: a(:)
+            integer(i4), allocatable :: b(:)
+            allocate (b(n), source=0_i4)
+            if (allocated(a)) b(1:size(a)) = a
+            call move_alloc(b, a)
+        end subroutine grow_i
+    end subroutine grow_summary
 
     !> Reactions f_int - f_ext on the imposed equations, 0 elsewhere.
     pure function reactions(map, state) result(reac)
@@ -191,7 +334,7 @@ contains
         type(newton_summary_t), intent(inout) :: summary
         type(status_t), intent(out) :: st
         logical, allocatable :: start(:), history(:, :), full(:), tight(:)
-        real(dp), allocatable :: r(:), b(:), resi_history(:)
+        real(dp), allocatable :: r(:), b(:), x(:), du_body(:), resi_history(:)
         real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start, alpha
         integer(i4) :: iter, changed, use, mode
         logical :: zero_load, converged, said_zero, settled, solve_tightly, searchable
@@ -208,7 +351,8 @@ contains
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
             full(0:options%iter_glob_maxi), tight(0:options%iter_glob_maxi), &
-            resi_history(0:options%iter_glob_maxi), r(map%n_free))
+            resi_history(0:options%iter_glob_maxi), r(map%n_free), x(map%n_free), &
+            du_body(size(state%u)))
         state%factorizations = 0
         state%solves = 0
         state%updated = 0
@@ -256,12 +400,20 @@ contains
                 call line_search(s, map, state, b, r, log, alpha, full(iter), st)
             if (st%failed()) return
             call progress_update(options%progress, 'internal forces')
+            ! the correction r is in the solver's hat coordinates (two_level_solver): the
+            ! displacements move by all of it, the plates and plane solids see only the
+            ! part that deforms them (their forces on the rigid modes are zero)
+            call from_hat(state%solver, r, x)
             state%du = 0.0_dp
-            state%du(map%free_to_eq) = alpha * r
+            state%du(map%free_to_eq) = alpha * x
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + state%du(map%free_to_eq)
+            call hat_body_part(state%solver, r, x)
+            du_body = 0.0_dp
+            du_body(map%free_to_eq) = alpha * x
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st, state%linear, history=state%history)
+                state%fint, state%closed, state%fn, st, state%linear, history=state%history, &
+                du_body=du_body)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
@@ -304,6 +456,8 @@ contains
         end if
         call judge_converged_tangent(s, map, state, options, piv, t, log, st)
         if (st%failed()) return
+        call log_answer_digits(s, map, state, t, log, st)
+        if (st%failed()) return
         call contact_history_update(s, map, state%u, state%fn, state%history)
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
@@ -338,6 +492,33 @@ contains
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
+
+    !> The .mess line on the digits the converged answer holds: one solve with the factor
+    !> for the final residual (computed from the increments, element by element: without
+    !> the contrast's cancellation) estimates the answer's error (answer_digits). Nothing
+    !> when no factor is usable (a loaded held equation, check off).
+    subroutine log_answer_digits(s, map, state, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: r(:), e(:)
+        character(len=:), allocatable :: loaded_at
+        if (.not. state%fac_valid .or. map%n_free == 0) return
+        r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
+        allocate (e(size(r)))
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st, &
+            loaded_at)
+        if (st%failed() .or. allocated(loaded_at)) return
+        state%solves = state%solves + 1
+        call from_hat(state%solver, r, e)
+        call log_add(log, '  the answer holds ' // real_digits(answer_digits(e, &
+            state%u(map%free_to_eq))) // ' significant digits (correction for the final ' // &
+            'residual ' // real_short(maxval(abs(e))) // ' against the largest ' // &
+            'displacement ' // real_short(maxval(abs(state%u))) // ')')
+    end subroutine log_answer_digits
 
     !> Which matrix iteration `iter` of step `step` uses; marks a tangent to rebuild by
     !> dropping it (factor_and_diagnose then assembles and factors). With DIS_CHOC springs

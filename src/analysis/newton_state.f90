@@ -15,6 +15,7 @@ module newton_state
     use run_deadline, only: deadline_t
     use number_limits, only: product_fits
     use progress, only: progress_t
+    use time_stepping, only: step_cutting_t
     implicit none
     private
 
@@ -41,6 +42,8 @@ module newton_state
         logical :: use_maxi = .false.              !< RESI_GLOB_MAXI given
         real(dp) :: resi_glob_maxi = 0.0_dp
         integer(i4) :: iter_glob_maxi = DEFAULT_ITER_GLOB_MAXI
+        !> what a step that fails does (DEFI_LIST_INST/ECHEC; off: the analysis stops)
+        type(step_cutting_t) :: cutting
         type(solver_options_t) :: factor           !< SOLVEUR: METHODE, RENUM, NPREC ...
         type(deadline_t) :: deadline               !< the run's time limit, polled per iteration
         !> the run's reporter: a line per step, the work under way (null: nobody listens)

@@ -16,7 +16,7 @@ module assembly_loads
         LOAD_KIND_NAMES, load_locate, load_slot_name
     use number_limits, only: product_fits
     use element_loads, only: plate_nodal_pressure, plate_nodal_forces, edge_load_points, &
-        edge_line_forces, EDGE_POINT_COUNT
+        edge_line_forces, edge_points_t, MAX_EDGE_POINTS, MAX_EDGE_NODES
     use assembly_system, only: structure_t
     implicit none
     private
@@ -332,7 +332,8 @@ contains
         end do
     end subroutine plate_cell_forces
 
-    !> FORCE_CONTOUR FX, FY on one SEG2 edge of a plane model (per unit length, unit depth).
+    !> FORCE_CONTOUR FX, FY on one SEG2 / SEG3 edge of a plane model (per unit length, unit
+    !> depth).
     subroutine edge_cell_forces(s, item, c, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
@@ -340,34 +341,35 @@ contains
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        real(dp) :: x(2, 2), xg(2, EDGE_POINT_COUNT), wg(EDGE_POINT_COUNT)
-        real(dp) :: q(2, EDGE_POINT_COUNT), fe(4)
-        integer(i4) :: g, a, comp, p0, eq
+        real(dp) :: x(2, MAX_EDGE_NODES), q(2, MAX_EDGE_POINTS), fe(2 * MAX_EDGE_NODES)
+        type(edge_points_t) :: pts
+        integer(i4) :: g, a, comp, p0, eq, nn
         if (.not. is_plane_edge(s%model%element(c))) then
-            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_CONTOUR applies to SEG2 edges ' // &
-                'of a D_PLAN/C_PLAN model, not to ' // cell_label(s%mesh, c, item%group))
+            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_CONTOUR applies to SEG2 and SEG3 ' &
+                // 'edges of a D_PLAN/C_PLAN model, not to ' // cell_label(s%mesh, c, &
+                item%group))
             return
         end if
         p0 = s%mesh%cell_ptr(c)
-        x = s%mesh%coords(1:2, s%mesh%cell_nodes(p0:p0 + 1))
-        call edge_load_points(x, xg, wg, st)
+        nn = s%mesh%cell_ptr(c + 1) - p0
+        x(:, 1:nn) = s%mesh%coords(1:2, s%mesh%cell_nodes(p0:p0 + nn - 1))
+        call edge_load_points(s%mesh%cell_type(c), x(:, 1:nn), pts, st)
         if (st%failed()) return
         q = 0.0_dp
-        do g = 1, EDGE_POINT_COUNT
+        do g = 1, pts%n
             do comp = 1, 2
                 if (.not. item%values(comp)%given) cycle
                 call load_value_at(item%values(comp), item%kind, comp, t, &
-                    [xg(1, g), xg(2, g), 0.0_dp], q(comp, g), st)
-                if (st%ok()) call check_factor(wg(g), q(comp, g), item%kind, comp, st)
-                if (st%ok()) call check_factor(factor, q(comp, g) * wg(g), item%kind, comp, &
-                                               st)
+                    [pts%x(1, g), pts%x(2, g), 0.0_dp], q(comp, g), st)
+                if (st%ok()) call check_factor(pts%w(g), q(comp, g), item%kind, comp, st)
+                if (st%ok()) call check_factor(factor, q(comp, g) * pts%w(g), item%kind, &
+                                               comp, st)
                 call load_locate(item, comp, st)
                 if (st%failed()) return
             end do
         end do
-        call edge_line_forces(x, q, fe, st)
-        if (st%failed()) return
-        do a = 1, 2
+        call edge_line_forces(pts, q(:, 1:pts%n), fe(1:2 * nn))
+        do a = 1, nn
             do comp = 1, 2
                 eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
                 if (eq > 0) fext(eq) = fext(eq) + factor * fe(2 * (a - 1) + comp)

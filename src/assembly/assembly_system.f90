@@ -9,20 +9,23 @@ module assembly_system
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text
-    use mesh_types, only: mesh_t, cell_label, CELL_POI1
+    use mesh_types, only: mesh_t, cell_label, CELL_POI1, MAX_CELL_NODES
     use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
-        is_discrete_2d, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, ELEM_DIS_T_POI1, &
-        ELEM_2D_DIS_T_POI1, ELEM_D_PLAN_QUAD4, ELEMENT_NAMES
-    use model_material, only: material_field_t, material_t, material_of_cell
+        is_discrete_2d, is_plane_strain, is_discrete_rotational, ELEM_NONE, ELEM_DIS_T_SEG2, &
+        ELEM_2D_DIS_T_SEG2, &
+        ELEM_DIS_T_POI1, ELEM_2D_DIS_T_POI1, ELEMENT_NAMES
+    use model_material, only: material_field_t, material_t, material_of_cell, elastic_behaviour
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
-        ORIENT_ANGL_NAUT
+        ORIENT_ANGL_NAUT, cara_is_diagonal, cara_is_rotational
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
         rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
         expand_plate_blocks
-    use element_plane_quad4, only: plane_quad4_stiffness, plane_quad4_internal_forces
+    use element_plane, only: plane_elasticity_matrix, plane_stiffness
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
-        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
+        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness, discrete_local_matrix, &
+        discrete_rotate_to_global, plane_rotation, segment_rotation, segment_rotation_2d, &
+        nautical_rotation
     use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_line_seg2, &
         choc_line_t
     use element_dis_contact, only: dis_contact_seg2, dis_contact_start
@@ -72,20 +75,20 @@ module assembly_system
     !> built once per analysis by the first internal_forces_incremental call that passes
     !> it: the element equations, node coordinates and the element matrix (plates: local
     !> frame and local matrix by blocks (membrane, bending, drilling: plate_local_blocks),
-    !> plane QUAD4: the 8x8 matrix). An iteration then costs one small matrix-vector
+    !> plane solids: the 2nn x 2nn matrix). An iteration then costs one small matrix-vector
     !> product per cell instead of a rebuilt element stiffness (doc/performance.md,
-    !> "SSNL130 decks"); the forces are bit for bit the same. Memory: 212 reals (1.7 kB)
+    !> "SSNL130 decks"); the forces are bit for bit the same. Memory: 227 reals (1.8 kB)
     !> per DKQ cell.
     type, public :: linear_cache_t
         logical :: ready = .false.
         integer(i4), allocatable :: slot(:)         !< (size(map%cells)) cached index, 0 = none
         integer(i4), allocatable :: n(:)            !< (n_cached) element equations
         integer(i4), allocatable :: nn(:)           !< (n_cached) nodes
-        logical, allocatable :: plate(:)            !< (n_cached) DKT/DKQ, else plane QUAD4
+        logical, allocatable :: plate(:)            !< (n_cached) DKT/DKQ, else plane solid
         integer(i4), allocatable :: eqs(:, :)       !< (MAX_ELEMENT_DOFS, n_cached)
         integer(i8), allocatable :: k_ptr(:)        !< (n_cached + 1) matrix start in k
         real(dp), allocatable :: k(:)               !< the matrices, column-major
-        real(dp), allocatable :: x(:, :, :)         !< (3, 4, n_cached) node coordinates
+        real(dp), allocatable :: x(:, :, :)         !< (3, MAX_CELL_NODES, n_cached) nodes
         real(dp), allocatable :: rot(:, :, :)       !< (3, 3, n_cached) plate local frame
         real(dp), allocatable :: xy(:, :, :)        !< (2, 4, n_cached) plate local coords
     end type linear_cache_t
@@ -100,7 +103,8 @@ module assembly_system
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
-        spring_lines, linear_product
+        spring_lines, linear_product, body_product, support_product, is_body_cell, &
+        cell_response
 
 contains
 
@@ -125,6 +129,14 @@ contains
                     what = 'no material (AFFE_MATERIAU)'
                 else if (.not. s%materials%materials(m)%has_elas) then
                     what = 'no ELAS in its material'
+                    law = elastic_behaviour(s%materials%materials(m))
+                    if (len(law) > 0) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c, &
+                            group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
+                            'material gives ' // law // ', which parasol''s element does ' // &
+                            'not build yet (it takes ELAS: E, NU)')
+                        return
+                    end if
                 end if
                 if (is_plate(kind) .and. .not. s%cara%has_coque(c)) &
                     what = 'no COQUE thickness (AFFE_CARA_ELEM)'
@@ -137,6 +149,12 @@ contains
                         what = law // ' but no material (AFFE_MATERIAU with DIS_CONTACT)'
                     else if (.not. s%materials%materials(m)%has_dis_contact) then
                         what = law // ' but no DIS_CONTACT in its material'
+                    else if (is_discrete_rotational(kind)) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
+                            cell_label(s%mesh, c, group_of) // ' (' // &
+                            trim(ELEMENT_NAMES(kind)) // ') is not built; use DIS_T or ' // &
+                            '2D_DIS_T springs')
+                        return
                     else if (s%mesh%cell_type(c) == CELL_POI1) then
                         call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
                             cell_label(s%mesh, c, group_of) // ' (POI1) is not built; ' // &
@@ -355,7 +373,7 @@ contains
         type(assembly_map_t), intent(in), optional :: map
         type(contact_history_t), intent(in), optional :: history
         integer(i4) :: kind, m, nn, p0
-        real(dp) :: x(3, 4), x2(2, 4), k8(8, 8), d8(8)
+        real(dp) :: x(3, MAX_CELL_NODES), x2(2, MAX_CELL_NODES), d3(3, 3), ud(MAX_ELEMENT_DOFS)
         kind = s%model%element(c)
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
@@ -378,14 +396,14 @@ contains
             end associate
         else if (is_plane_solid(kind)) then
             associate (e => s%materials%materials(m)%elas)
-                x2 = x(1:2, 1:4)
-                call plane_quad4_stiffness(x2, e%e, e%nu, kind == ELEM_D_PLAN_QUAD4, k8, st)
-                ke = k8
-                if (.not. want_matrix) then
+                x2(:, 1:nn) = x(1:2, 1:nn)
+                call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(kind), d3, st)
+                if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), d3, ke, st)
+                if (.not. want_matrix .and. st%ok()) then
                     ! the deformation in a variable of its own: matmul of a function result,
                     ! inlined by the front end, read an uninitialised temporary (valgrind)
-                    d8 = plane_deformation(x2, ue)
-                    fe = matmul(k8, d8)
+                    call remove_plane_rigid_motion(x2(:, 1:nn), nn, ue, ud(1:n))
+                    fe = matmul(ke, ud(1:n))
                 end if
             end associate
         else if (is_dis_contact(s, c)) then
@@ -406,26 +424,36 @@ contains
         if (allocated(s%dis_contact)) is_dis_contact = s%dis_contact(c)
     end function is_dis_contact
 
-    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation).
+    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation:
+    !> ORIENTATION's angles are degrees, as Code_Aster's). Diagonal translational ones
+    !> (K_T_D_*) through the DIS_T kernels; the others (DIS_TR, full matrices) through
+    !> discrete_local_matrix / discrete_rotate_to_global (element_discrete).
     subroutine discrete_matrix(s, c, x, n, ke, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4)
+        real(dp), intent(in) :: x(:, :)
         real(dp), intent(out) :: ke(n, n)
         type(status_t), intent(out) :: st
-        integer(i4) :: kind
+        real(dp), parameter :: DEGREE = acos(-1.0_dp) / 180.0_dp
+        integer(i4) :: kind, code
         real(dp) :: kv(6), angles(3), k6(6, 6), k4(4, 4), c3(3, 2), c2(2, 2)
         logical :: global
         kind = s%model%element(c)
-        c3 = x(:, 1:2)
+        code = s%cara%discrete_cara(c)
+        c3 = x(1:3, 1:2)
         c2 = x(1:2, 1:2)
         kv = s%cara%discrete_values(:, c)
         global = s%cara%discrete_repere(c) == REPERE_GLOBAL
         angles = 0.0_dp
         if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
-            s%cara%orientation_values(1, c)
-        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
+            s%cara%orientation_values(1, c) * DEGREE
+        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = &
+            s%cara%orientation_values(:, c) * DEGREE
         ke = 0.0_dp
+        if (.not. (cara_is_diagonal(code) .and. .not. cara_is_rotational(code))) then
+            call general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
+            return
+        end if
         select case (kind)
         case (ELEM_DIS_T_SEG2)
             call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
@@ -440,13 +468,57 @@ contains
         end select
     end subroutine discrete_matrix
 
+    ! A DIS_TR / 2D_DIS_TR discrete, or a full matrix (K_T_N, K_T_L, K_TR_N, K_TR_L): the
+    ! matrix in the discrete's frame, turned to the global one unless REPERE='GLOBAL'. The
+    ! frame: a SEG2's (local x along it, ANGL_VRIL), a POI1's ORIENTATION (2D: its first
+    ! angle about Z).
+    subroutine general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(:, :), kv(6), angles(3)
+        logical, intent(in) :: global
+        real(dp), intent(out) :: ke(n, n)
+        type(status_t), intent(out) :: st
+        integer(i4) :: kind, n_nodes, node_dofs, id
+        real(dp) :: kl(n, n), r(3, 3), r2(2, 2)
+        logical :: two_d
+        kind = s%model%element(c)
+        two_d = is_discrete_2d(kind)
+        n_nodes = merge(1_i4, 2_i4, s%mesh%cell_type(c) == CELL_POI1)
+        node_dofs = n / n_nodes
+        id = s%cara%discrete_matrix(c)
+        if (id > 0) then
+            kl = s%cara%matrices(id)%k
+        else
+            call discrete_local_matrix(kv(1:node_dofs), n_nodes, kl)
+        end if
+        if (global) then
+            ke = kl
+            return
+        end if
+        if (n_nodes == 2 .and. two_d) then
+            call segment_rotation_2d(x(1:2, 1), x(1:2, 2), r2, st)
+            r = 0.0_dp
+            r(1:2, 1:2) = r2
+            r(3, 3) = 1.0_dp
+        else if (n_nodes == 2) then
+            call segment_rotation(x(1:3, 1), x(1:3, 2), angles(3), r, st)
+        else if (two_d) then
+            r = plane_rotation(angles(1))
+        else
+            call nautical_rotation(angles, r)
+        end if
+        if (st%failed()) return
+        call discrete_rotate_to_global(kl, n_nodes, node_dofs, two_d, r, ke)
+    end subroutine general_discrete_matrix
+
     !> DIS_CONTACT on a SEG2 (element_dis_contact), from the spring's state at the start of
     !> the step (history) or, without one, the state before the first step.
     subroutine dis_contact_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st, map, &
                                     history)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4), ue(n)
+        real(dp), intent(in) :: x(:, :), ue(n)
         logical, intent(in) :: elastic
         real(dp), intent(out) :: ke(n, n), fe(n), fn
         logical, intent(out) :: closed
@@ -561,7 +633,7 @@ contains
     subroutine discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
-        real(dp), intent(in) :: x(3, 4), ue(n)
+        real(dp), intent(in) :: x(:, :), ue(n)
         logical, intent(in) :: elastic
         real(dp), intent(out) :: ke(n, n), fe(n), fn
         logical, intent(out) :: closed
@@ -604,38 +676,42 @@ contains
         end associate
     end subroutine discrete_response
 
-    !> Plane QUAD4 displacements minus their rigid motion (mean translation and the
-    !> rotation about Z fitted about the centroid). K times a rigid motion is zero, so f_int
-    !> is unchanged, but the round-off of K u no longer scales with the (large) rigid part:
-    !> in SSNL130 the slab is ~1e8 times stiffer than the springs and moves ~3.5e-3 rigidly.
-    pure function plane_deformation(x, ue) result(ud)
-        real(dp), intent(in) :: x(2, 4), ue(8)
-        real(dp) :: ud(8), xc(2), uc(2), d(2), num, den, omega
+    !> Plane displacements minus their rigid motion (mean translation and the rotation
+    !> about Z fitted about the centroid of the nodes). K times a rigid motion is zero, so
+    !> f_int is unchanged, but the round-off of K u no longer scales with the (large) rigid
+    !> part: in SSNL130 the slab is ~1e8 times stiffer than the springs and moves ~3.5e-3
+    !> rigidly.
+    !>  x : in, x(2, nn) node coordinates; ue : in, ue(2 nn); ud : out, ud(2 nn)
+    pure subroutine remove_plane_rigid_motion(x, nn, ue, ud)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: x(2, nn), ue(2 * nn)
+        real(dp), intent(out) :: ud(2 * nn)
+        real(dp) :: xc(2), uc(2), d(2), num, den, omega
         integer(i4) :: i
-        xc = sum(x, dim=2) / 4.0_dp
-        uc = [sum(ue(1:7:2)), sum(ue(2:8:2))] / 4.0_dp
+        xc = sum(x, dim=2) / real(nn, dp)
+        uc = [sum(ue(1:2 * nn - 1:2)), sum(ue(2:2 * nn:2))] / real(nn, dp)
         num = 0.0_dp
         den = 0.0_dp
-        do i = 1, 4
+        do i = 1, nn
             d = x(:, i) - xc
             num = num + d(1) * (ue(2 * i) - uc(2)) - d(2) * (ue(2 * i - 1) - uc(1))
             den = den + d(1)**2 + d(2)**2
         end do
         omega = 0.0_dp
         if (den > 0.0_dp) omega = num / den
-        do i = 1, 4
+        do i = 1, nn
             d = x(:, i) - xc
             ud(2 * i - 1) = ue(2 * i - 1) - uc(1) + omega * d(2)
             ud(2 * i) = ue(2 * i) - uc(2) - omega * d(1)
         end do
-    end function plane_deformation
+    end subroutine remove_plane_rigid_motion
 
     !> Plate (DX..DRZ per node) displacements minus a rigid motion: the mean translation
     !> and the mean rotation about the in-plane axes (u = t + w x P(x - xc), P the
     !> projection on the cell's mean plane, theta = w,
     !> w normal to the plate). That motion has zero energy in DKT/DKQ (a rotation about the
     !> normal would load the fictitious DRZ stiffness, so it is left in); removing it keeps
-    !> the round-off of K u proportional to the deformation (see plane_deformation).
+    !> the round-off of K u proportional to the deformation (see remove_plane_rigid_motion).
     pure function plate_deformation(x, nn, ue) result(ud)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: x(3, nn), ue(6 * nn)
@@ -769,7 +845,10 @@ contains
     !>  closed : out, (size(map%springs)) status of each DIS_CHOC spring
     !>  fn     : out, (size(map%springs)) normal force of each (<= 0 when closed)
     !>  history: in, optional, DIS_CONTACT state at the start of the step
-    subroutine internal_forces(s, map, u, fint, closed, fn, st, history)
+    !>  u_body : in, optional, (n_equations) what the plates and plane solids see: u minus
+    !>           the rigid modes the analysis keeps apart (their forces are zero, and
+    !>           leaving them out keeps the round-off of the stiff bodies' forces off them)
+    subroutine internal_forces(s, map, u, fint, closed, fn, st, history, u_body)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -777,18 +856,26 @@ contains
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
         type(contact_history_t), intent(in), optional :: history
+        real(dp), intent(in), optional :: u_body(:)
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: f
-        logical :: is_closed
+        logical :: is_closed, body
         fint = 0.0_dp
         i_spring = 0
         do k = 1, size(map%cells)
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st, map, history)
+            body = .false.
+            if (present(u_body)) body = is_body_cell(s, c)
+            if (body) then
+                call cell_response(s, c, gather(u_body, eqs, n), n, .false., .false., ke, &
+                    fe, is_closed, f, st, map, history)
+            else
+                call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
+                    is_closed, f, st, map, history)
+            end if
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
@@ -820,8 +907,11 @@ contains
     !>           tangent matrix at u_ref, and closed/fn are their state at u_ref. This is
     !>           the force of Code_Aster's prediction with imposed-value increments (the
     !>           second member of nsassp: the increments enter through the matrix).
+    !>  du_body: in, optional, (n_equations) the increment the plates and plane solids see:
+    !>           du minus the rigid modes the analysis keeps apart (K_lin R = 0; leaving
+    !>           them out keeps their round-off off f_lin)
     subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st, cache, &
-                                           u_ref, elastic_ref, history)
+                                           u_ref, elastic_ref, history, du_body)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:), du(:)
@@ -833,6 +923,7 @@ contains
         real(dp), intent(in), optional :: u_ref(:)
         logical, intent(in), optional :: elastic_ref
         type(contact_history_t), intent(in), optional :: history
+        real(dp), intent(in), optional :: du_body(:)
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: ue(MAX_ELEMENT_DOFS), ur(MAX_ELEMENT_DOFS)
@@ -842,7 +933,11 @@ contains
         if (present(cache)) then
             if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
             if (st%failed()) return
-            call add_cached_linear_forces(cache, du, flin)
+            if (present(du_body)) then
+                call add_cached_linear_forces(cache, du_body, flin)
+            else
+                call add_cached_linear_forces(cache, du, flin)
+            end if
         else
             do k = 1, size(map%cells)
                 c = map%cells(k)
@@ -850,8 +945,13 @@ contains
                 if (.not. linear) cycle
                 call element_equations(s, c, eqs, n)
                 call size_element_arrays(n, ke, fe)
-                call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, fe, &
-                    is_closed, f, st)
+                if (present(du_body)) then
+                    call cell_response(s, c, gather(du_body, eqs, n), n, .false., .false., &
+                        ke, fe, is_closed, f, st)
+                else
+                    call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, &
+                        fe, is_closed, f, st)
+                end if
                 if (st%failed()) return
                 do j = 1, n
                     if (eqs(j) > 0) flin(eqs(j)) = flin(eqs(j)) + fe(j)
@@ -990,21 +1090,26 @@ contains
     !>  cache : inout, the linear cells' matrices (built on the first call if needed)
     !>  du    : in, (n_equations); f : out, (n_equations)
     !>  st    : out, element failures, naming the cell
-    subroutine linear_product(s, map, cache, du, f, st)
+    !>  support_only : in, optional, .true.: leave the plates and plane solids (the cached
+    !>          cells, body_product) out
+    subroutine linear_product(s, map, cache, du, f, st, support_only)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(linear_cache_t), intent(inout) :: cache
         real(dp), intent(in) :: du(:)
         real(dp), intent(out) :: f(:)
         type(status_t), intent(out) :: st
+        logical, intent(in), optional :: support_only
         integer(i4) :: k, c, n, j, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: ue(MAX_ELEMENT_DOFS), fn
-        logical :: closed
+        logical :: closed, body
         if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
         if (st%failed()) return
         f = 0.0_dp
-        call add_cached_linear_forces(cache, du, f)
+        body = .true.
+        if (present(support_only)) body = .not. support_only
+        if (body) call add_cached_linear_forces(cache, du, f)
         do k = 1, size(map%cells)
             c = map%cells(k)
             if (cache%slot(k) > 0 .or. s%choc(c)) cycle
@@ -1018,6 +1123,72 @@ contains
             end do
         end do
     end subroutine linear_product
+
+    !> f = K_b du: the product of the plates and plane solids (the bodies' cells, cached)
+    !> with du, element by element with each cell's rigid motion removed first (as the
+    !> incremental forces).
+    !>  du, f : (n_equations)
+    !>  st    : out, element failures while the cache is built, naming the cell
+    subroutine body_product(s, map, cache, du, f, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        real(dp), intent(in) :: du(:)
+        real(dp), intent(out) :: f(:)
+        type(status_t), intent(out) :: st
+        if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
+        if (st%failed()) return
+        f = 0.0_dp
+        call add_cached_linear_forces(cache, du, f)
+    end subroutine body_product
+
+    !> y = K_s x for several vectors on the free equations: K_s the stiffness of every cell
+    !> but the plates and plane solids (springs, discrete elements), as assemble_stiffness
+    !> builds it at u (elastic or at the springs' status there). What the rigid modes of
+    !> spring-held bodies need (K_s R): the bodies' own cells give K_b R = 0.
+    !>  u       : in, (n_equations) the displacements the matrix is assembled at
+    !>  elastic : in, as assemble_stiffness
+    !>  x       : in, (n_free, m); y : out, (n_free, m)
+    !>  st      : out, element failures, naming the cell
+    !>  history : in, optional, DIS_CONTACT state at the start of the step
+    subroutine support_product(s, map, u, elastic, x, y, st, history)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), x(:, :)
+        logical, intent(in) :: elastic
+        real(dp), intent(out) :: y(:, :)
+        type(status_t), intent(out) :: st
+        type(contact_history_t), intent(in), optional :: history
+        integer(i4) :: k, c, n, i, j, eqs(MAX_ELEMENT_DOFS), free(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
+        logical :: closed
+        y = 0.0_dp
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            if (is_body_cell(s, c)) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
+                fn, st, map, history)
+            if (st%failed()) return
+            free(1:n) = free_of(map, eqs(1:n))
+            do i = 1, n
+                if (free(i) == 0) cycle
+                do j = 1, n
+                    if (free(j) > 0) y(free(i), :) = y(free(i), :) + ke(i, j) * x(free(j), :)
+                end do
+            end do
+        end do
+    end subroutine support_product
+
+    !> Plates and plane solids: the cells whose rigid motions have zero energy (the bodies
+    !> of analysis rigid_bodies; the linear cells of the cache).
+    pure logical function is_body_cell(s, c)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        is_body_cell = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+    end function is_body_cell
 
     !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
     !>  st : out, element failures (material, geometry), naming the cell
@@ -1035,7 +1206,8 @@ contains
         nc = count(linear, kind=i4)
         allocate (cache%n(nc), cache%nn(nc), cache%plate(nc), cache%k_ptr(nc + 1), &
             cache%eqs(MAX_ELEMENT_DOFS, nc))
-        allocate (cache%x(3, 4, nc), cache%rot(3, 3, nc), cache%xy(2, 4, nc), source=0.0_dp)
+        allocate (cache%x(3, MAX_CELL_NODES, nc), cache%rot(3, 3, nc), cache%xy(2, 4, nc), &
+            source=0.0_dp)
         i = 0
         cache%k_ptr(1) = 1
         do k = 1, size(map%cells)
@@ -1073,8 +1245,8 @@ contains
     end subroutine build_linear_cache
 
     !> Element matrix of cached cell i (mesh cell c): plates keep their local frame and
-    !> local matrix (plate_internal_forces works in the local frame), plane QUAD4 the
-    !> global 8x8 matrix (as cell_response).
+    !> local matrix (plate_internal_forces works in the local frame), plane solids the
+    !> global matrix (as cell_response).
     subroutine cache_cell_matrix(s, c, cache, i, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, i
@@ -1082,7 +1254,7 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: m, nn
         integer(i8) :: p, q
-        real(dp) :: x2(2, 4)
+        real(dp) :: x2(2, MAX_CELL_NODES), d3(3, 3), kp(2 * MAX_CELL_NODES, 2 * MAX_CELL_NODES)
         m = material_of_cell(s%materials, c)
         nn = cache%nn(i)
         p = cache%k_ptr(i)
@@ -1095,9 +1267,12 @@ contains
                 call plate_local_blocks(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
                     s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             else
-                x2 = cache%x(1:2, 1:4, i)    ! contiguous copy: no array temporary
-                call plane_quad4_stiffness(x2, e%e, e%nu, &
-                    s%model%element(c) == ELEM_D_PLAN_QUAD4, cache%k(p:q), st)
+                x2(:, 1:nn) = cache%x(1:2, 1:nn, i)    ! contiguous copy: no array temporary
+                call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(s%model%element(c)), &
+                    d3, st)
+                if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), d3, &
+                    kp(1:2 * nn, 1:2 * nn), st)
+                cache%k(p:q) = reshape(kp(1:2 * nn, 1:2 * nn), [4 * nn * nn])
             end if
         end associate
     end subroutine cache_cell_matrix
@@ -1110,7 +1285,8 @@ contains
         real(dp), intent(inout) :: flin(:)
         integer(i4) :: i, j, n, nn
         integer(i8) :: p, q
-        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS), x2(2, 4)
+        real(dp) :: fe(MAX_ELEMENT_DOFS), ue(MAX_ELEMENT_DOFS), ud(MAX_ELEMENT_DOFS)
+        real(dp) :: x2(2, MAX_CELL_NODES)
         do i = 1, size(cache%n)
             n = cache%n(i)
             nn = cache%nn(i)
@@ -1125,8 +1301,8 @@ contains
                 call plate_forces_from_blocks(cache%rot(:, :, i), cache%xy(:, 1:nn, i), nn, &
                     cache%k(p:q), ud(1:n), fe(1:n))
             else
-                x2 = cache%x(1:2, 1:4, i)
-                call plane_forces(cache%k(p:q), x2, ue(1:8), fe(1:8))
+                x2(:, 1:nn) = cache%x(1:2, 1:nn, i)
+                call plane_forces(cache%k(p:q), x2(:, 1:nn), nn, ue(1:n), fe(1:n))
             end if
             do j = 1, n
                 if (cache%eqs(j, i) > 0) flin(cache%eqs(j, i)) = flin(cache%eqs(j, i)) + fe(j)
@@ -1134,7 +1310,7 @@ contains
         end do
     end subroutine add_cached_linear_forces
 
-    !> Global matrix of cached cell i, as plate_stiffness / plane_quad4_stiffness give it.
+    !> Global matrix of cached cell i, as plate_stiffness / plane_stiffness give it.
     subroutine cached_global_matrix(cache, i, ke)
         type(linear_cache_t), intent(in) :: cache
         integer(i4), intent(in) :: i
@@ -1150,17 +1326,18 @@ contains
             call expand_plate_blocks(3_i4, cache%k(p:q), k18)
             call rotate_to_global(cache%rot(:, :, i), 6_i4, k18, ke)
         else
-            ke = reshape(cache%k(p:q), [8, 8])
+            ke = reshape(cache%k(p:q), [cache%n(i), cache%n(i)])
         end if
     end subroutine cached_global_matrix
 
-    !> Plane QUAD4 forces K u of the deformation part of ue (see plane_deformation).
-    pure subroutine plane_forces(k8, x2, ue, fe)
-        real(dp), intent(in) :: k8(8, 8), x2(2, 4), ue(8)
-        real(dp), intent(out) :: fe(8)
-        real(dp) :: d8(8)
-        d8 = plane_deformation(x2, ue)    ! not inline in matmul: see cell_response
-        fe = matmul(k8, d8)
+    !> Plane forces K u of the deformation part of ue (see remove_plane_rigid_motion).
+    pure subroutine plane_forces(k, x2, nn, ue, fe)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: k(2 * nn, 2 * nn), x2(2, nn), ue(2 * nn)
+        real(dp), intent(out) :: fe(2 * nn)
+        real(dp) :: ud(2 * nn)
+        call remove_plane_rigid_motion(x2, nn, ue, ud)    ! not inline in matmul
+        fe = matmul(k, ud)
     end subroutine plane_forces
 
     !> The response of one SEG2 spring (DIS_T, 2D_DIS_T; DIS_CHOC or linear) at u: its

@@ -324,7 +324,17 @@ contains
                 ' command files are valid (' // to_text(int(ctx%ncommand, i4)) // &
                 ' commands checked)'
         end if
+        if (ctx%check_stopped) write (output_unit, '(a)') check_horizon(ctx)
     end subroutine say_valid
+
+    !> Where a check pass stopped early, in words (doc/deck-language.md, "The check pass").
+    function check_horizon(ctx) result(text)
+        type(run_context_t), intent(in) :: ctx
+        character(len=:), allocatable :: text
+        text = 'checked up to ' // ctx%check_stop_file // ':' // &
+            to_text(int(ctx%check_stop_line, i4)) // ': from there the deck depends on ' // &
+            'values known when it runs (each command is validated before it runs)'
+    end function check_horizon
 
     !> The line that ends a run of a given deck (not with --quiet): what ran, the TEST_RESU
     !> tally, the listings and the wall time, e.g.
@@ -499,6 +509,7 @@ contains
         if (st%failed()) return
         call ctx%write_mess('check pass: the deck is valid (' // &
                             to_text(int(ctx%ncommand, i4)) // ' commands)')
+        if (ctx%check_stopped) call ctx%write_mess('check pass: ' // check_horizon(ctx))
     end subroutine check_pass
 
     subroutine run_pass(ctx, st)

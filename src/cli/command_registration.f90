@@ -8,13 +8,30 @@ module command_registration
         run_defi_list_reel
     use test_resu_command, only: run_test_resu
     use impr_resu_command, only: run_impr_resu
+    use crea_champ_command, only: run_crea_champ
+    use calc_champ_command, only: run_calc_champ
+    use crea_resu_command, only: run_crea_resu
+    use post_champ_command, only: run_post_champ
     use mesh_commands, only: run_lire_maillage
+    use mesh_group_commands, only: run_defi_group
+    use mesh_modify_commands, only: run_modi_maillage
+    use mesh_create_commands, only: run_crea_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
     use cara_elem_commands, only: run_affe_cara_elem
     use load_commands, only: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, &
         run_affe_char_cine_f
     use analysis_commands, only: run_stat_non_line, run_meca_statique
+    use time_stepping, only: run_defi_list_inst
+    use crea_table_command, only: run_crea_table
+    use calc_table_command, only: run_calc_table
+    use lire_table_command, only: run_lire_table
+    use recu_fonction_command, only: run_recu_fonction
+    use calc_fonction_command, only: run_calc_fonction
+    use test_fonction_command, only: run_test_fonction
+    use impr_fonction_command, only: run_impr_fonction
+    use test_table_command, only: run_test_table
+    use impr_table_command, only: run_impr_table
     implicit none
     private
     public :: register_commands
@@ -35,7 +52,14 @@ contains
         call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
         call ctx%register('TEST_RESU', run_test_resu)
         call ctx%register('IMPR_RESU', run_impr_resu)
+        call ctx%register('CREA_CHAMP', run_crea_champ)
+        call ctx%register('CALC_CHAMP', run_calc_champ, reuse=.true.)
+        call ctx%register('CREA_RESU', run_crea_resu, reuse=.true.)
+        call ctx%register('POST_CHAMP', run_post_champ)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
+        call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
+        call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)
+        call ctx%register('CREA_MAILLAGE', run_crea_maillage)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
         call ctx%register('AFFE_MATERIAU', run_affe_materiau)
@@ -46,6 +70,17 @@ contains
         call ctx%register('AFFE_CHAR_CINE_F', run_affe_char_cine_f)
         call ctx%register('MECA_STATIQUE', run_meca_statique)
         call ctx%register('STAT_NON_LINE', run_stat_non_line)
+        call ctx%register('DEFI_LIST_INST', run_defi_list_inst)
+        ! tables (issue 20)
+        call ctx%register('CREA_TABLE', run_crea_table)
+        call ctx%register('CALC_TABLE', run_calc_table)
+        call ctx%register('LIRE_TABLE', run_lire_table)
+        call ctx%register('RECU_FONCTION', run_recu_fonction)
+        call ctx%register('CALC_FONCTION', run_calc_fonction)
+        call ctx%register('TEST_FONCTION', run_test_fonction)
+        call ctx%register('IMPR_FONCTION', run_impr_fonction)
+        call ctx%register('TEST_TABLE', run_test_table)
+        call ctx%register('IMPR_TABLE', run_impr_table)
     end subroutine register_commands
 
 end module command_registration

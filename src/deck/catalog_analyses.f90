@@ -14,7 +14,7 @@ contains
 
     subroutine describe_analyses(c)
         type(catalog_t), intent(inout) :: c
-        call c%command('MECA_STATIQUE', 'evol_elas')
+        call c%command('MECA_STATIQUE', 'evol_elas', reentrant='f:RESULTAT')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('CHAM_MATER', 'cham_mater')
         call c%key('CARA_ELEM', 'cara_elem')
@@ -30,7 +30,7 @@ contains
         call c%key('OPTION', 'TXM', noop=.true.)
         call c%key('TITRE', 'TXM', max=MANY, noop=.true.)
 
-        call c%command('STAT_NON_LINE', 'evol_noli')
+        call c%command('STAT_NON_LINE', 'evol_noli', reentrant='f:RESULTAT')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('CHAM_MATER', 'cham_mater', req=.true.)
         call c%key('CARA_ELEM', 'cara_elem')
@@ -47,7 +47,7 @@ contains
         call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
         call c%end_fact()
         call c%fact('INCREMENT', req=.true.)
-        call c%key('LIST_INST', 'listr8', req=.true.)
+        call c%key('LIST_INST', 'listr8|list_inst', req=.true.)    ! DEFI_LIST_REEL, DEFI_LIST_INST
         call c%key('INST_INIT', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%key('INST_FIN', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
         call c%key('NUME_INST_INIT', 'I', vmin=0.0_dp)

@@ -15,13 +15,13 @@ contains
         type(catalog_t), intent(inout) :: c
         character(len=*), parameter :: PROL = 'EXCLU CONSTANT LINEAIRE'
         call c%command('DEFI_CONSTANTE', 'fonction')
-        call c%key('NOM_RESU', 'TXM', def='TOUTRESU', noop=.true.)
+        call c%key('NOM_RESU', 'TXM', def='TOUTRESU')
         call c%key('VALE', 'R', req=.true.)
 
         call c%command('DEFI_FONCTION', 'fonction')
         call c%key('NOM_PARA', 'TXM', req=.true., &
                    into='INST X Y Z ABSC EPSI SIGM TEMP DX DY DZ FREQ PULS')
-        call c%key('NOM_RESU', 'TXM', def='TOUTRESU', noop=.true.)
+        call c%key('NOM_RESU', 'TXM', def='TOUTRESU')
         call c%key('VALE', 'R', min=2, max=MANY)
         call c%key('ABSCISSE', 'R', max=MANY)
         call c%key('ORDONNEE', 'R', max=MANY)

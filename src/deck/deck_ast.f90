@@ -28,7 +28,8 @@ module deck_ast
     !>   N_ASSIGN(target) [value];  N_EXPR [value];  N_RETURN [value]
     !>   N_DEF(name) [N_NAME parameters..., N_BLOCK body];  N_IF [condition, then, else?]
     !>   N_MODULE / N_BLOCK [statements...]
-    !>   N_INDEX [sequence, index];  N_ATTR(attribute) [object] (only as a callee: L.append)
+    !>   N_INDEX [sequence, index];  N_ATTR(attribute) [object] (obj.name, a concept's
+    !>     method or attribute; as a callee, obj.name(...); L.append as a statement)
     !>   N_SLICE(parts) [sequence, start?, stop?, step?]: parts is 3 characters, '1' where
     !>     start, stop, step are written ('010' for s[:j]), the written ones are the children
     !>   N_FOR(variable) [sequence, N_BLOCK body];  N_BREAK;  N_CONTINUE

@@ -66,10 +66,13 @@ module deck_command
     !> A validated command. Its own keywords are the command-level scope; factor keywords
     !> are reached through count() and occurrence(). `source` is the deck text of the
     !> statement (for the .mess echo); `result_type` the catalog type of its result.
+    !> `reuse`: the concept given as reuse=... (a reentrant command modifies it in place;
+    !> doc/architecture.md, "reuse"), null when none.
     type, extends(keyword_set_t), public :: command_t
         character(len=:), allocatable :: name, result_type, source
         type(factor_value_t), allocatable :: factors(:)
         integer :: nfactor = 0
+        class(concept_t), pointer :: reuse => null()
     contains
         procedure :: count => command_count
         procedure :: occurrence => command_occurrence

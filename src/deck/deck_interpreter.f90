@@ -17,13 +17,13 @@ module deck_interpreter
     use deck_ast
     use deck_parser, only: parse_deck
     use deck_value
-    use deck_concept, only: concept_t, placeholder_concept_t
+    use deck_concept, only: concept_t, placeholder_concept_t, concept_display_name
     use deck_command, only: command_t
     use deck_validate, only: validate_command
     use deck_math
     use deck_suggest, only: did_you_mean
     use deck_sequence, only: sequence_item, sequence_slice, sequence_length, range_steps
-    use run_context, only: run_context_t, SCOPE_SESSION
+    use run_context, only: run_context_t, method_call_t, SCOPE_SESSION
     implicit none
     private
 
@@ -159,7 +159,7 @@ contains
                     // to_text(int(ctx%ncommand_file, i4)) // ': ' // ctx%deck_name)
             end if
             call evaluate_deck(ctx, st)
-            if (st%failed()) return
+            if (st%failed() .or. ctx%check_stopped) return
             if (k < ctx%ncommand_file .and. .not. ctx%finished) call ctx%write_mess( &
                 'warning: ' // ctx%deck_name // ' has no FIN(); the next file starts')
         end do
@@ -209,9 +209,21 @@ contains
             end if
             ctx%statement = stmt
             call exec_statement(ctx, stmt, st)
-            if (st%failed()) return
+            if (st%failed() .or. ctx%check_stopped) return
         end do
     end subroutine evaluate_deck
+
+    !> Ends the check pass at statement or expression `id`: the flow of the deck depends
+    !> there on a value known only when it runs (a condition or a loop on a table's cell).
+    !> The rest is validated as it runs (every command is validated before it runs).
+    subroutine stop_check(ctx, id)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        if (.not. ctx%checking .or. ctx%check_stopped) return
+        ctx%check_stopped = .true.
+        ctx%check_stop_file = node_file(ctx, id)
+        ctx%check_stop_line = ctx%ast%nodes(id)%line
+    end subroutine stop_check
 
     ! ---- statements -------------------------------------------------------------------------
 
@@ -223,6 +235,7 @@ contains
         type(value_t) :: v
         integer :: k
         type(node_t) :: node
+        if (ctx%check_stopped) return
         node = ctx%ast%nodes(id)       ! a copy: evaluation may grow the AST (FORMULE VALE)
         block
             select case (node%kind)
@@ -251,6 +264,9 @@ contains
             case (N_IF)
                 call eval(ctx, node%kids(1), v, st, frame)
                 if (st%failed()) return
+                if (v%kind == VK_UNKNOWN) then
+                    call stop_check(ctx, id); return
+                end if
                 if (truth(v)) then
                     call exec_block(ctx, node%kids(2), st, frame)
                 else if (size(node%kids) > 2) then
@@ -283,7 +299,7 @@ contains
         integer :: k
         do k = 1, ctx%ast%nkids(block)
             call exec_statement(ctx, ctx%ast%kid(block, k), st, frame)
-            if (st%failed()) return
+            if (st%failed() .or. ctx%check_stopped) return
             if (ctx%loop_control /= 0) return         ! break/continue: the loop decides
             if (present(frame)) then
                 if (frame%returned) return
@@ -352,6 +368,9 @@ contains
         end if
         call eval(ctx, seq, v, st, frame)
         if (st%failed()) return
+        if (v%kind == VK_UNKNOWN) then
+            call stop_check(ctx, id); return
+        end if
         if (v%kind /= VK_TUPLE .and. v%kind /= VK_LIST) then
             call fail(st, ctx, seq, 'a for loop walks a tuple, a list or range(...), got ' // &
                       kind_label(v)); return
@@ -391,7 +410,7 @@ contains
         type(status_t), intent(inout) :: st
         type(frame_t), intent(inout), optional :: frame
         call exec_block(ctx, body, st, frame)
-        done = st%failed() .or. ctx%loop_control == LOOP_BREAK
+        done = st%failed() .or. ctx%loop_control == LOOP_BREAK .or. ctx%check_stopped
         ctx%loop_control = 0
         if (present(frame)) done = done .or. frame%returned
     end function loop_body_done
@@ -446,6 +465,9 @@ contains
                       'range(start, stop) or range(start, stop, step)'); return
         end if
         do k = 1, size(args)
+            if (args(k)%kind == VK_UNKNOWN) then
+                call stop_check(ctx, seq); return
+            end if
             if (args(k)%kind /= VK_INT) then
                 call fail(st, ctx, seq, 'range() takes integers, got ' // &
                           kind_label(args(k)) // ' (use int(...))'); return
@@ -490,9 +512,13 @@ contains
     logical function is_append(ctx, e)
         type(run_context_t), intent(in) :: ctx
         integer, intent(in) :: e
+        integer :: attr
         is_append = .false.
         if (ctx%ast%nodes(e)%kind /= N_CALL) return
-        is_append = ctx%ast%nodes(ctx%ast%kid(e, 1))%kind == N_ATTR
+        attr = ctx%ast%kid(e, 1)
+        if (ctx%ast%nodes(attr)%kind /= N_ATTR) return
+        is_append = ctx%ast%nodes(attr)%text == 'append' .and. &
+            ctx%ast%nodes(ctx%ast%kid(attr, 1))%kind == N_NAME
     end function is_append
 
     !> NAME.append(VALUE) as a statement. Python lists are shared between the names bound
@@ -522,6 +548,10 @@ contains
         name = ctx%ast%nodes(target_node)%text
         call eval(ctx, target_node, old, st, frame)
         if (st%failed()) return
+        if (old%kind == VK_CONCEPT .or. old%kind == VK_UNKNOWN) then
+            call eval(ctx, e, x, st, frame)        ! a concept's own append method
+            return
+        end if
         if (old%kind /= VK_LIST) then
             call fail(st, ctx, attr, name // ' is ' // kind_label(old) // ', append needs ' // &
                       'a list (a tuple cannot grow: build a list [ ... ])'); return
@@ -606,6 +636,14 @@ contains
         if (n > 0) v%tree(1:n) = list%tree
         v%tree(n + 1:) = one%tree
     end function appended
+
+    !> True when v is, or holds at any depth, a value known only when the deck runs.
+    pure logical function holds_unknown(v)
+        type(value_t), intent(in) :: v
+        holds_unknown = v%kind == VK_UNKNOWN
+        if (holds_unknown .or. .not. allocated(v%tree)) return
+        holds_unknown = any(v%tree%kind == VK_UNKNOWN)
+    end function holds_unknown
 
     !> True when composite v holds, at any depth, the list of identity `id`.
     pure logical function holds_list(v, id)
@@ -879,7 +917,8 @@ contains
         type(status_t), intent(inout) :: st
         type(frame_t), intent(inout), optional :: frame
         character(len=*), intent(in), optional :: target
-        type(value_t) :: a, b
+        type(value_t) :: a, b, kwargs
+        type(value_t), allocatable :: args(:)
         type(value_list_t) :: list
         integer :: k, nk, ios
         select case (ctx%ast%nodes(id)%kind)
@@ -920,8 +959,10 @@ contains
         case (N_INDEX, N_SLICE)
             call eval_subscript(ctx, id, v, st, frame)
         case (N_ATTR)
-            call fail(st, ctx, id, 'LIST.append(VALUE) is a statement of its own (it ' // &
-                      'returns None)')
+            call eval(ctx, ctx%ast%kid(id, 1), a, st, frame)
+            if (st%failed()) return
+            allocate (args(0))
+            call use_attribute(ctx, id, a, ctx%ast%nodes(id)%text, .false., args, kwargs, v, st)
         case (N_UNARY)
             call eval(ctx, ctx%ast%kid(id, 1), a, st, frame)
             if (st%failed()) return
@@ -938,12 +979,15 @@ contains
             do k = 1, ctx%ast%nkids(id)
                 call eval(ctx, ctx%ast%kid(id, k), v, st, frame)
                 if (st%failed()) return
+                if (v%kind == VK_UNKNOWN) exit
                 if (truth(v) .eqv. (ctx%ast%nodes(id)%kind == N_OR)) exit
             end do
         case (N_IFEXP)
             call eval(ctx, ctx%ast%kid(id, 2), a, st, frame)
             if (st%failed()) return
-            if (truth(a)) then
+            if (a%kind == VK_UNKNOWN) then
+                v = a
+            else if (truth(a)) then
                 call eval(ctx, ctx%ast%kid(id, 1), v, st, frame)
             else
                 call eval(ctx, ctx%ast%kid(id, 3), v, st, frame)
@@ -974,6 +1018,15 @@ contains
         integer :: k, j
         call eval(ctx, ctx%ast%kid(id, 1), seq, st, frame)
         if (st%failed()) return
+        if (seq%kind == VK_CONCEPT .or. seq%kind == VK_UNKNOWN) then
+            if (ctx%ast%nodes(id)%kind /= N_INDEX) then
+                call fail(st, ctx, id, kind_label(seq) // ' cannot be sliced'); return
+            end if
+            call eval(ctx, ctx%ast%kid(id, 2), b, st, frame)
+            if (st%failed()) return
+            call use_attribute(ctx, id, seq, '__getitem__', .true., [b], empty_kwargs(), v, st)
+            return
+        end if
         given = .false.; bounds = 0
         if (ctx%ast%nodes(id)%kind == N_INDEX) then
             parts = '100'
@@ -987,6 +1040,9 @@ contains
             call eval(ctx, ctx%ast%kid(id, j), b, st, frame)
             if (st%failed()) return
             if (b%kind == VK_NONE .and. ctx%ast%nodes(id)%kind == N_SLICE) cycle
+            if (b%kind == VK_UNKNOWN) then
+                v = b; return
+            end if
             if (b%kind /= VK_INT) then
                 call fail(st, ctx, ctx%ast%kid(id, j), 'an index must be an integer, got ' // &
                           kind_label(b) // ' (use int(...))'); return
@@ -1157,6 +1213,15 @@ contains
                 end if
             end block
         end if
+        if (ctx%ast%nodes(callee)%kind == N_ATTR) then
+            call eval(ctx, ctx%ast%kid(callee, 1), f, st, frame)
+            if (st%failed()) return
+            call eval_arguments(ctx, id, args, kwargs, st, frame)
+            if (st%failed()) return
+            call use_attribute(ctx, callee, f, ctx%ast%nodes(callee)%text, .true., args, &
+                               kwargs, v, st)
+            return
+        end if
         call eval(ctx, callee, f, st, frame)
         if (st%failed()) return
         call eval_arguments(ctx, id, args, kwargs, st, frame)
@@ -1164,6 +1229,9 @@ contains
         if (nitems(kwargs) > 0 .and. f%kind /= VK_NONE) then
             call fail(st, ctx, id, 'keyword arguments are only for commands and _F')
             return
+        end if
+        if (f%kind == VK_UNKNOWN .or. any(args%kind == VK_UNKNOWN)) then
+            v%kind = VK_UNKNOWN; return
         end if
         select case (f%kind)
         case (VK_BUILTIN)
@@ -1197,17 +1265,23 @@ contains
     end function shadowed
 
     !> len(x) of a tuple, a list or a string.
-    subroutine call_len(ctx, id, args, v, st)
-        type(run_context_t), intent(in) :: ctx
+    recursive subroutine call_len(ctx, id, args, v, st)
+        type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
         type(value_t), intent(in) :: args(:)
         type(value_t), intent(out) :: v
         type(status_t), intent(inout) :: st
         integer(i8) :: n
         character(len=:), allocatable :: message
+        type(value_t), allocatable :: none(:)
         if (size(args) /= 1) then
             call fail(st, ctx, id, 'len() takes 1 argument, got ' // &
                       to_text(int(size(args), i4))); return
+        end if
+        if (args(1)%kind == VK_CONCEPT) then
+            allocate (none(0))
+            call use_attribute(ctx, id, args(1), '__len__', .true., none, empty_kwargs(), v, st)
+            return
         end if
         call sequence_length(args(1), n, message)
         if (len(message) > 0) then
@@ -1438,12 +1512,29 @@ contains
         call ctx%check_listings(ctx%catalog%cmds(icmd)%name // ' at ' // &
                                 node_where(ctx, name_node), st)
         if (st%failed()) return
-        call validate_command(ctx%catalog, icmd, kwargs, file, line, col, cmd, st)
-        if (st%failed()) return
+        if (ctx%checking .and. holds_unknown(kwargs)) then
+            ! A keyword takes a value known only when the deck runs (a table's cell): the
+            ! command is validated then; here it stands in with a placeholder.
+            cmd%name = ctx%catalog%cmds(icmd)%name
+            cmd%result_type = ctx%catalog%cmds(icmd)%result_type
+        else
+            call validate_command(ctx%catalog, icmd, kwargs, file, line, col, cmd, st)
+            if (st%failed()) return
+        end if
         cmd%source = statement_source(ctx)
         h = ctx%find_handler(cmd%name)
+        if (h > 0 .and. associated(cmd%reuse)) then
+            if (.not. ctx%handlers(h)%reuse) then
+                call cmd%error_at('reuse', cmd%name // '(reuse=...), which modifies ' // &
+                    concept_display_name(cmd%reuse) // ' in place, is not built yet in ' // &
+                    'parasol (leave reuse out and give the result a new name)', st, &
+                    STATUS_NOT_IMPLEMENTED)
+                return
+            end if
+        end if
         run_it = h > 0
-        if (ctx%checking .and. h > 0) run_it = ctx%handlers(h)%at_check
+        if (ctx%checking .and. h > 0) run_it = ctx%handlers(h)%at_check .and. &
+            .not. holds_unknown(kwargs)
         if (.not. ctx%checking) then
             call echo_statement(ctx, cmd%name, line)
             if (h == 0) then
@@ -1463,7 +1554,7 @@ contains
                     return
                 end if
             end block
-        else if (len(cmd%result_type) > 0) then
+        else if (len(cmd%result_type) > 0 .and. .not. associated(cmd%reuse)) then
             allocate (placeholder_concept_t :: result)
             select type (result)
             type is (placeholder_concept_t)
@@ -1472,6 +1563,16 @@ contains
         end if
         ctx%ncommand = ctx%ncommand + 1
         if (cmd%name == 'FIN') ctx%finished = .true.
+        if (.not. allocated(result) .and. associated(cmd%reuse)) then
+            ! reuse=X: the command modified X in place; the result is X itself (as in
+            ! Code_Aster, where the command's result is the reused object)
+            v%kind = VK_CONCEPT
+            v%obj => cmd%reuse
+            v%s = cmd%reuse%type_name()
+            v%line = line; v%col = col
+            call ctx%write_mess('    -> ' // cmd%reuse%summary() // ', modified in place (reuse)')
+            return
+        end if
         if (.not. allocated(result)) then
             if (len(cmd%result_type) > 0) call set_error(st, STATUS_INTERNAL, cmd%name // &
                 ' produced no result', file=file, line=line, column=col)
@@ -1523,14 +1624,187 @@ contains
         end do
     end function statement_source
 
+    ! ---- concept methods (doc/architecture.md, "Concept methods") -----------------------------
+
+    !> obj.name, obj.name(args...), obj[index], operators and len() on a concept: the
+    !> handler registered for its type (ctx%register_method). In the check pass a
+    !> placeholder concept stands for what a command will make: the value is known only
+    !> when the deck runs (VK_UNKNOWN). Other values have no attributes in the deck
+    !> language but those of lists (append).
+    !>  id : the AST node the use is located at;  called : obj.name(...) rather than obj.name
+    recursive subroutine use_attribute(ctx, id, obj, name, called, args, kwargs, v, st)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: id
+        type(value_t), intent(in) :: obj
+        character(len=*), intent(in) :: name
+        logical, intent(in) :: called
+        type(value_t), intent(in) :: args(:), kwargs
+        type(value_t), intent(out) :: v
+        type(status_t), intent(inout) :: st
+        type(method_call_t) :: call
+        type(status_t) :: hst
+        class(concept_t), pointer :: ptr
+        integer :: k
+        character(len=:), allocatable :: what
+        if (obj%kind == VK_UNKNOWN) then
+            v%kind = VK_UNKNOWN; return
+        end if
+        what = name
+        if (called .and. name(1:min(2, len(name))) /= '__') what = name // '()'
+        if (obj%kind == VK_LIST .and. name == 'append') then
+            call fail(st, ctx, id, 'LIST.append(VALUE) is a statement of its own (it ' // &
+                      'returns None)'); return
+        end if
+        if (obj%kind /= VK_CONCEPT .or. .not. associated(obj%obj)) then
+            call fail(st, ctx, id, kind_label(obj) // ' has no attribute ' // name // &
+                ' in the deck language'); return
+        end if
+        ptr => obj%obj
+        select type (ptr)
+        type is (placeholder_concept_t)
+            v%kind = VK_UNKNOWN; return           ! check pass: made when the deck runs
+        end select
+        k = ctx%find_method(ptr%type_name(), name, called)
+        if (k == 0) then
+            call fail(st, ctx, id, 'a concept of type ' // ptr%type_name() // ' (' // &
+                concept_display_name(ptr) // ') has no ' // method_word(name) // ' ' // what &
+                // ' in parasol' // did_you_mean(name, ctx%method_names(ptr%type_name())) // &
+                provided(ctx%method_names(ptr%type_name()))); return
+        end if
+        call%name = name
+        call%called = called
+        call%args = args
+        call%kwargs = kwargs
+        call ctx%methods(k)%run(ctx, ptr, call, v, hst)
+        if (hst%failed()) then
+            call fail(st, ctx, id, ptr%type_name() // ' ' // what // ': ' // hst%message)
+            return
+        end if
+        if (v%line == 0) then
+            v%line = ctx%ast%nodes(id)%line; v%col = ctx%ast%nodes(id)%col
+        end if
+    contains
+        pure function method_word(n) result(word)
+            character(len=*), intent(in) :: n
+            character(len=:), allocatable :: word
+            word = 'attribute'
+            if (called) word = 'method'
+            if (n(1:min(2, len(n))) == '__') word = 'operation'
+        end function method_word
+        function provided(names) result(text)
+            type(string_t), intent(in) :: names(:)
+            character(len=:), allocatable :: text
+            integer :: j
+            text = ' (it has none)'
+            if (size(names) == 0) return
+            text = ' (it has: '
+            do j = 1, size(names)
+                if (j > 1) text = text // ', '
+                text = text // names(j)%s
+            end do
+            text = text // ')'
+        end function provided
+    end subroutine use_attribute
+
+    !> True when value v is a concept (not a placeholder) with a handler for `name`.
+    logical function has_method(ctx, v, name)
+        type(run_context_t), intent(in) :: ctx
+        type(value_t), intent(in) :: v
+        character(len=*), intent(in) :: name
+        has_method = .false.
+        if (v%kind /= VK_CONCEPT .or. .not. associated(v%obj)) return
+        has_method = ctx%find_method(v%obj%type_name(), name, .true.) > 0
+    end function has_method
+
+    !> Python's special name of a binary operator ('+' -> '__add__', reflected '__radd__').
+    pure function operator_name(op, reflected) result(name)
+        character(len=*), intent(in) :: op
+        logical, intent(in) :: reflected
+        character(len=:), allocatable :: name
+        select case (op)
+        case ('+')
+            name = 'add'
+        case ('-')
+            name = 'sub'
+        case ('*')
+            name = 'mul'
+        case ('/')
+            name = 'truediv'
+        case ('//')
+            name = 'floordiv'
+        case ('%')
+            name = 'mod'
+        case ('**')
+            name = 'pow'
+        case default
+            name = 'op'
+        end select
+        if (reflected) name = 'r' // name
+        name = '__' // name // '__'
+    end function operator_name
+
+    !> Python's special name of a comparison; reflected: the one the right operand answers
+    !> (a < b is b > a).
+    pure function compare_name(op, reflected) result(name)
+        character(len=*), intent(in) :: op
+        logical, intent(in) :: reflected
+        character(len=:), allocatable :: name
+        character(len=:), allocatable :: o
+        o = op
+        if (reflected) then
+            select case (op)
+            case ('<')
+                o = '>'
+            case ('<=')
+                o = '>='
+            case ('>')
+                o = '<'
+            case ('>=')
+                o = '<='
+            end select
+        end if
+        select case (o)
+        case ('<')
+            name = '__lt__'
+        case ('<=')
+            name = '__le__'
+        case ('>')
+            name = '__gt__'
+        case ('>=')
+            name = '__ge__'
+        case ('==')
+            name = '__eq__'
+        case ('!=')
+            name = '__ne__'
+        case default
+            name = '__cmp__'
+        end select
+    end function compare_name
+
+    !> No keyword arguments (a VK_FACTOR without items).
+    pure function empty_kwargs() result(v)
+        type(value_t) :: v
+        v%kind = VK_FACTOR
+    end function empty_kwargs
+
     ! ---- operators --------------------------------------------------------------------------
 
-    subroutine unary(ctx, id, a, v, st)
-        type(run_context_t), intent(in) :: ctx
+    recursive subroutine unary(ctx, id, a, v, st)
+        type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
         type(value_t), intent(in) :: a
         type(value_t), intent(out) :: v
         type(status_t), intent(inout) :: st
+        type(value_t), allocatable :: none(:)
+        if (a%kind == VK_UNKNOWN) then
+            v = a; return
+        end if
+        if (a%kind == VK_CONCEPT .and. ctx%ast%nodes(id)%text /= 'not') then
+            allocate (none(0))
+            call use_attribute(ctx, id, a, merge('__neg__', '__pos__', &
+                ctx%ast%nodes(id)%text == '-'), .true., none, empty_kwargs(), v, st)
+            return
+        end if
         select case (ctx%ast%nodes(id)%text)
         case ('not')
             v = bool_value(.not. truth(a))
@@ -1549,7 +1823,7 @@ contains
         end select
     end subroutine unary
 
-    subroutine binary(ctx, id, op, a, b, v, st)
+    recursive subroutine binary(ctx, id, op, a, b, v, st)
         type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
         character(len=*), intent(in) :: op
@@ -1559,6 +1833,19 @@ contains
         real(dp) :: r
         integer :: code
         type(value_list_t) :: la, lb
+        if (a%kind == VK_UNKNOWN .or. b%kind == VK_UNKNOWN) then
+            v%kind = VK_UNKNOWN; return
+        end if
+        if (a%kind == VK_CONCEPT .or. b%kind == VK_CONCEPT) then
+            ! a - b on concepts (fields, tables): their __sub__, else b's __rsub__
+            if (has_method(ctx, a, operator_name(op, .false.))) then
+                call use_attribute(ctx, id, a, operator_name(op, .false.), .true., [b], &
+                                   empty_kwargs(), v, st); return
+            else if (has_method(ctx, b, operator_name(op, .true.))) then
+                call use_attribute(ctx, id, b, operator_name(op, .true.), .true., [a], &
+                                   empty_kwargs(), v, st); return
+            end if
+        end if
         if (is_number(a) .and. is_number(b)) then
             if (a%kind /= VK_REAL .and. b%kind /= VK_REAL .and. op /= '/') then
                 call int_binary(ctx, id, op, a%i, b%i, v, st)
@@ -1715,7 +2002,7 @@ contains
         type(value_t), intent(out) :: v
         type(status_t), intent(inout) :: st
         type(frame_t), intent(inout), optional :: frame
-        type(value_t) :: a, b
+        type(value_t) :: a, b, r
         type(string_t), allocatable :: ops(:)
         integer :: k, i, j
         character(len=:), allocatable :: text
@@ -1733,6 +2020,33 @@ contains
         do k = 1, size(ops)
             call eval(ctx, ctx%ast%kid(id, k + 1), b, st, frame)
             if (st%failed()) return
+            if (a%kind == VK_UNKNOWN .or. b%kind == VK_UNKNOWN) then
+                v%kind = VK_UNKNOWN; return
+            end if
+            if (a%kind == VK_CONCEPT .or. b%kind == VK_CONCEPT) then
+                ! tab.NOM == 'START' on a table: its __eq__ (here a filtered table)
+                if (has_method(ctx, a, compare_name(ops(k)%s, .false.))) then
+                    call use_attribute(ctx, id, a, compare_name(ops(k)%s, .false.), .true., &
+                                       [b], empty_kwargs(), r, st)
+                else if (has_method(ctx, b, compare_name(ops(k)%s, .true.))) then
+                    call use_attribute(ctx, id, b, compare_name(ops(k)%s, .true.), .true., &
+                                       [a], empty_kwargs(), r, st)
+                else
+                    r = bool_value(compare(ctx, id, ops(k)%s, a, b, st))
+                end if
+                if (st%failed()) return
+                if (size(ops) == 1) then
+                    v = r; return
+                end if
+                if (r%kind == VK_UNKNOWN) then
+                    v = r; return
+                end if
+                if (.not. truth(r)) then
+                    v = bool_value(.false.); return
+                end if
+                a = b
+                cycle
+            end if
             if (.not. compare(ctx, id, ops(k)%s, a, b, st)) then
                 v = bool_value(.false.)
                 return

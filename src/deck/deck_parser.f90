@@ -758,19 +758,19 @@ contains
                     p%pos = p%pos + 2
                     cycle
                 end if
-                if (peek_kind_at(p, p%pos + 1) == TOK_NAME .and. is_op_at(p, p%pos + 2, '(')) &
-                    then
-                    if (p%toks(p%pos + 1)%text == 'append') then
-                        call_node = ast%add(N_ATTR, 'append', p%toks(p%pos + 1)%line, &
-                                            p%toks(p%pos + 1)%col)
-                        call ast%add_kid(call_node, e)
-                        e = call_node
-                        p%pos = p%pos + 2
-                        cycle
-                    end if
+                if (peek_kind_at(p, p%pos + 1) /= TOK_NAME) then
+                    p%pos = p%pos + 1
+                    call fail_at(p, st, 'expected an attribute name after "."'); return
                 end if
-                call fail_at(p, st, 'attribute access "." is not part of the deck language ' &
-                             // '(only math.NAME and LIST.append(VALUE))'); return
+                call enter(p, st)                ! a.b.c... chains as deep as it is long
+                if (st%failed()) return
+                chain = chain + 1
+                call_node = ast%add(N_ATTR, p%toks(p%pos + 1)%text, p%toks(p%pos + 1)%line, &
+                                    p%toks(p%pos + 1)%col)
+                call ast%add_kid(call_node, e)
+                e = call_node
+                p%pos = p%pos + 2
+                cycle
             end if
             if (.not. (is_op(p, '(') .or. is_op(p, '['))) exit
             call enter(p, st)                    ! f()()... and x[0][0]... chain as deep
@@ -809,6 +809,22 @@ contains
             call parse_expr(p, ast, part(1), st)
             if (st%failed()) return
             parts(1:1) = '1'
+            if (is_op(p, ',')) then              ! x[i, j]: the index is the tuple (i, j)
+                node = ast%add(N_TUPLE, '', ast%nodes(part(1))%line, ast%nodes(part(1))%col)
+                call ast%add_kid(node, part(1))
+                do while (is_op(p, ','))
+                    p%pos = p%pos + 1
+                    if (is_op(p, ']')) exit
+                    call parse_expr(p, ast, k, st)
+                    if (st%failed()) return
+                    call ast%add_kid(node, k)
+                end do
+                part(1) = node
+                if (.not. is_op(p, ']')) then
+                    call fail_at(p, st, 'expected "]" after the index, got "' // &
+                                 peek_text(p) // '" (a slice has no ",")'); return
+                end if
+            end if
             if (is_op(p, ']')) then
                 p%pos = p%pos + 1
                 node = ast%add(N_INDEX, '[]', line, col)

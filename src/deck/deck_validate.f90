@@ -1,14 +1,20 @@
 !> Validation of one command call against its catalog entry (deck_catalog_data): unknown
 !> keywords (with "did you mean"), types, cardinality, allowed values, mandatory keywords,
-!> exclusive/one-of rules, then defaults. Produces the command_t handlers receive.
+!> rules (EXCLUS, UN_PARMI, AU_MOINS_UN, PRESENT_PRESENT, PRESENT_ABSENT, ENSEMBLE), then
+!> defaults. Conditional blocks (Code_Aster's BLOC) are decided first in each scope from
+!> the keywords written there: a keyword of an inactive block is refused with the condition
+!> it needs; the mandatory keywords, rules and defaults of inactive blocks do not apply.
+!> Produces the command_t handlers receive.
 module deck_validate
     use kinds, only: dp, i8
     use strings, only: string_t, to_text, join_words
     use status, only: status_t, set_error, STATUS_DECK_ERROR
     use deck_value
     use deck_catalog, only: catalog_t, cmd_def_t, kw_def_t, find_keyword, split_words, MANY, &
-        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+        RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, &
+        RULE_ENSEMBLE, rule_t
     use deck_command, only: command_t, keyword_set_t, kw_value_t, factor_value_t
+    use deck_concept, only: concept_display_name
     use deck_suggest, only: did_you_mean
     use deck_math, only: same_real
     implicit none
@@ -33,6 +39,7 @@ contains
         integer :: j, k
         type(factor_value_t) :: factor
         type(value_list_t) :: a
+        logical, allocatable :: active(:)
         a = unpack_value(args)
         associate (def => cat%cmds(icmd))
             cmd%name = def%name
@@ -40,10 +47,16 @@ contains
             cmd%file = file; cmd%command = def%name; cmd%scope = ''
             cmd%line = line; cmd%col = col
             allocate (cmd%items(8))
-            call check_scope(def, 0, a, file, st)
+            active = active_blocs(def, 0, a)
+            call check_scope(def, 0, a, active, file, st)
             if (st%failed()) return
             do j = 1, size(a%keys)
-                k = find_keyword(def, 0, a%keys(j)%s)
+                if (a%keys(j)%s == 'reuse') then
+                    call check_reuse(def, a, j, file, cmd, st)
+                    if (st%failed()) return
+                    cycle
+                end if
+                k = find_active(def, 0, a%keys(j)%s, active)
                 if (k > 0) then
                     if (def%kws(k)%is_factor) then
                         call build_factor(def, k, a%items(j), file, a%key_line(j), &
@@ -56,29 +69,257 @@ contains
                 call add_simple(def, k, a, j, file, cmd, st)
                 if (st%failed()) return
             end do
-            call check_required(def, 0, a, file, line, col, st)
+            call check_required(def, 0, a, active, file, line, col, st)
             if (st%failed()) return
-            call fill_defaults(def, 0, cmd)
+            call fill_defaults(def, 0, active, cmd)
+            if (associated(cmd%reuse)) call check_reused_keywords(def, cmd, st)
+            cmd%result_type = call_result_type(def%result_type, cmd)
         end associate
     end subroutine validate_command
 
-    !> Unknown and repeated keywords of one scope (checked before the values).
-    subroutine check_scope(def, parent, args, file, st)
+    !> The result type of one call. A catalog result type that depends on the call (Code_Aster's
+    !> sd_prod functions) is written '@KEY': '@TYPE_CHAM' (CREA_CHAMP: NOEU_* cham_no_sdaster,
+    !> CART_* carte_sdaster, EL*_* cham_elem), '@TYPE_RESU' (CREA_RESU: the lower-case
+    !> TYPE_RESU), '@RESULTAT' (CALC_CHAMP, POST_CHAMP: the type of the RESULTAT concept).
+    function call_result_type(declared, cmd) result(type_name)
+        character(len=*), intent(in) :: declared
+        type(command_t), intent(in) :: cmd
+        character(len=:), allocatable :: type_name
+        type(value_t) :: v
+        character(len=:), allocatable :: text
+        integer :: i
+        type_name = declared
+        if (len(declared) < 2) return
+        if (declared(1:1) /= '@') return
+        v = cmd%get_value(declared(2:))
+        select case (declared)
+        case ('@TYPE_CHAM')
+            if (v%kind /= VK_STR) return
+            text = v%s
+            if (len(text) < 4) return
+            type_name = 'cham_elem'
+            if (text(1:4) == 'NOEU') type_name = 'cham_no_sdaster'
+            if (text(1:4) == 'CART') type_name = 'carte_sdaster'
+        case ('@TYPE_RESU')
+            if (v%kind /= VK_STR) return
+            type_name = v%s
+            do i = 1, len(type_name)
+                if (type_name(i:i) >= 'A' .and. type_name(i:i) <= 'Z') type_name(i:i) = &
+                    achar(iachar(type_name(i:i)) + 32)
+            end do
+        case ('@RESULTAT')
+            if (v%kind == VK_CONCEPT) type_name = v%s
+        end select
+    end function call_result_type
+
+    !> Which conditional blocks of scope `parent` are active for the keywords `args` written
+    !> there (blocks of other scopes: false). A block is active when its enclosing block is
+    !> and its condition holds (bloc_t); a value condition reads the written value, else the
+    !> default of the keyword in force (blocks are decided in catalog order, enclosing
+    !> blocks first).
+    function active_blocs(def, parent, args) result(active)
         type(cmd_def_t), intent(in) :: def
         integer, intent(in) :: parent
         type(value_list_t), intent(in) :: args
+        logical, allocatable :: active(:)
+        integer :: b, i, k
+        character(len=:), allocatable :: value
+        logical :: found
+        allocate (active(def%nbloc), source=.false.)
+        do b = 1, def%nbloc
+            associate (bl => def%blocs(b))
+                if (bl%parent /= parent) cycle
+                if (bl%outer > 0) then
+                    if (.not. active(bl%outer)) cycle
+                end if
+                if (any([(.not. given(args, bl%present(i)%s), i = 1, size(bl%present))])) cycle
+                if (any([(given(args, bl%absent(i)%s), i = 1, size(bl%absent))])) cycle
+                if (len(bl%key) > 0) then
+                    call scope_value_text(args, bl%key, value, found)
+                    if (.not. found) then
+                        k = find_active(def, parent, bl%key, active)
+                        if (k == 0) cycle
+                        if (len(def%kws(k)%default) == 0) cycle
+                        value = def%kws(k)%default
+                    end if
+                    if (.not. any([(bl%values(i)%s == value, i = 1, size(bl%values))])) cycle
+                end if
+                active(b) = .true.
+            end associate
+        end do
+    end function active_blocs
+
+    ! The text of the single value written for `name` in args (a text, or an integer's
+    ! digits); found = false when the keyword is absent or not a single text or integer.
+    subroutine scope_value_text(args, name, text, found)
+        type(value_list_t), intent(in) :: args
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable, intent(out) :: text
+        logical, intent(out) :: found
+        type(value_t) :: v
+        integer :: j
+        found = .false.
+        text = ''
+        do j = 1, size(args%keys)
+            if (args%keys(j)%s /= name) cycle
+            v = args%items(j)
+            if ((v%kind == VK_TUPLE .or. v%kind == VK_LIST) .and. nitems(v) == 1) v = item(v, 1)
+            if (v%kind == VK_STR) then
+                text = v%s
+                found = .true.
+            else if (v%kind == VK_INT) then
+                text = to_text(v%i)
+                found = .true.
+            end if
+            return
+        end do
+    end subroutine scope_value_text
+
+    !> Index of keyword `name` of scope `parent` that is in force: outside any block or in an
+    !> active one; 0 if none.
+    pure integer function find_active(def, parent, name, active) result(k)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        character(len=*), intent(in) :: name
+        logical, intent(in) :: active(:)
+        do k = 1, def%nkw
+            if (def%kws(k)%parent /= parent .or. def%kws(k)%name /= name) cycle
+            if (in_force(def%kws(k)%bloc, active)) return
+        end do
+        k = 0
+    end function find_active
+
+    !> True for block 0 (none) or an active block.
+    pure logical function in_force(bloc, active)
+        integer, intent(in) :: bloc
+        logical, intent(in) :: active(:)
+        in_force = bloc == 0
+        if (bloc > 0) in_force = active(bloc)
+    end function in_force
+
+    ! "OPTION='SPHERE'" or "OPTION='SPHERE' (or OPTION='CYLINDRE')": the conditions of the
+    ! blocks where keyword `name` of scope `parent` is valid.
+    function bloc_conditions(def, parent, name) result(text)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: text
+        integer :: k, n
+        text = ''
+        n = 0
+        do k = 1, def%nkw
+            if (def%kws(k)%parent /= parent .or. def%kws(k)%name /= name) cycle
+            if (def%kws(k)%bloc == 0) cycle
+            n = n + 1
+            if (n == 2) text = text // ' (or '
+            if (n > 2) text = text // ', or '
+            text = text // def%blocs(def%kws(k)%bloc)%text
+        end do
+        if (n > 1) text = text // ')'
+    end function bloc_conditions
+
+    !> reuse=CONCEPT (Code_Aster's catalog attribute `reentrant`, cmd_def_t): allowed when
+    !> the command modifies a concept in place ('o' or 'f'); the concept must be of the
+    !> command's result type. Sets cmd%reuse and keeps the keyword (cmd%has('reuse')).
+    subroutine check_reuse(def, args, j, file, cmd, st)
+        type(cmd_def_t), intent(in) :: def
+        type(value_list_t), intent(in) :: args
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: file
+        type(command_t), intent(inout) :: cmd
+        type(status_t), intent(inout) :: st
+        type(kw_value_t) :: item
+        associate (v => args%items(j))
+            if (index('of', def%reentrant(1:1)) == 0 .or. len(def%result_type) == 0) then
+                call fail('reuse is not allowed: ' // def%name // ' makes a new concept, it ' &
+                    // 'does not modify one in place (Code_Aster''s catalog: reentrant=''n'')')
+                return
+            end if
+            if (v%kind /= VK_CONCEPT .or. .not. associated(v%obj)) then
+                call fail('expected the concept to modify in place (a concept of type ' // &
+                    type_words(def%result_type) // '), got ' // describe(v)); return
+            end if
+            if (.not. type_accepts(def%result_type, v)) then
+                call fail('expected ' // type_words(def%result_type) // ' (what ' // &
+                    def%name // ' makes), got ' // describe(v)); return
+            end if
+            cmd%reuse => v%obj
+            item%name = 'reuse'
+            item%line = args%key_line(j); item%col = args%key_col(j)
+            item%value = v
+            call cmd%add(item)
+        end associate
+    contains
+        subroutine fail(message)
+            character(len=*), intent(in) :: message
+            call set_error(st, STATUS_DECK_ERROR, message, file=file, &
+                line=vline(args%items(j), args%key_line(j)), &
+                column=vcol(args%items(j), args%key_col(j)), command=def%name, keyword='reuse')
+        end subroutine fail
+    end subroutine check_reuse
+
+    !> The keywords Code_Aster's `reentrant` names after ':' ('o:MAILLAGE|GRILLE') give the
+    !> concept the command reads and modifies: when one is given, it must be the reused one
+    !> (DEFI_GROUP(reuse=MA, MAILLAGE=MA)), else the command would change one concept with
+    !> what it computed on another.
+    subroutine check_reused_keywords(def, cmd, st)
+        type(cmd_def_t), intent(in) :: def
+        type(command_t), intent(in) :: cmd
+        type(status_t), intent(inout) :: st
+        type(string_t), allocatable :: names(:)
+        type(value_t) :: v
+        character(len=:), allocatable :: spec
+        integer :: i, colon
+        colon = index(def%reentrant, ':')
+        if (colon == 0) return
+        spec = def%reentrant(colon + 1:)
+        do i = 1, len(spec)
+            if (spec(i:i) == '|') spec(i:i) = ' '
+        end do
+        call split_words(spec, names)
+        do i = 1, size(names)
+            if (.not. cmd%given(names(i)%s)) cycle
+            v = cmd%get_value(names(i)%s)
+            if (v%kind /= VK_CONCEPT) cycle
+            if (associated(v%obj, cmd%reuse)) cycle
+            call cmd%error_at('reuse', 'reuse names ' // concept_display_name(cmd%reuse) // &
+                ' but ' // names(i)%s // ' gives ' // concept_display_name(v%obj) // ': ' // &
+                def%name // ' modifies in place the concept it reads (write reuse=' // &
+                concept_display_name(v%obj) // ', or leave reuse out for a new concept)', st)
+            return
+        end do
+    end subroutine check_reused_keywords
+
+    !> Unknown and repeated keywords of one scope (checked before the values), and keywords
+    !> of a conditional block whose condition does not hold.
+    subroutine check_scope(def, parent, args, active, file, st)
+        type(cmd_def_t), intent(in) :: def
+        integer, intent(in) :: parent
+        type(value_list_t), intent(in) :: args
+        logical, intent(in) :: active(:)
         character(len=*), intent(in) :: file
         type(status_t), intent(inout) :: st
         integer :: j, i, k
         do j = 1, size(args%keys)
             k = find_keyword(def, parent, args%keys(j)%s)
+            if (parent == 0 .and. args%keys(j)%s == 'reuse') k = -1   ! check_reuse
             if (k == 0 .and. .not. (def%open_keywords .and. parent == 0)) then
                 call set_error(st, STATUS_DECK_ERROR, 'unknown keyword ' // args%keys(j)%s // &
-                    did_you_mean(args%keys(j)%s, scope_names(def, parent)) // &
-                    ' (valid here: ' // join_words(scope_names(def, parent), ', ') // ')', &
-                    file=file, line=args%key_line(j), column=args%key_col(j), command=def%name, &
-                    keyword=path(def, parent, args%keys(j)%s))
+                    did_you_mean(args%keys(j)%s, scope_names(def, parent, active)) // &
+                    ' (valid here: ' // join_words(scope_names(def, parent, active), ', ') // &
+                    ')', file=file, line=args%key_line(j), column=args%key_col(j), &
+                    command=def%name, keyword=path(def, parent, args%keys(j)%s))
                 return
+            end if
+            if (k > 0) then
+                if (find_active(def, parent, args%keys(j)%s, active) == 0) then
+                    call set_error(st, STATUS_DECK_ERROR, 'keyword ' // args%keys(j)%s // &
+                        ' is not valid here: it goes with ' // bloc_conditions(def, parent, &
+                        args%keys(j)%s), file=file, line=args%key_line(j), &
+                        column=args%key_col(j), command=def%name, &
+                        keyword=path(def, parent, args%keys(j)%s))
+                    return
+                end if
             end if
             do i = 1, j - 1
                 if (args%keys(i)%s == args%keys(j)%s) then
@@ -93,15 +334,17 @@ contains
 
     !> Mandatory keywords and rules of one scope (checked after the values, so a wrong
     !> value is reported at its keyword first).
-    subroutine check_required(def, parent, args, file, line, col, st)
+    subroutine check_required(def, parent, args, active, file, line, col, st)
         type(cmd_def_t), intent(in) :: def
         integer, intent(in) :: parent, line, col
         type(value_list_t), intent(in) :: args
+        logical, intent(in) :: active(:)
         character(len=*), intent(in) :: file
         type(status_t), intent(inout) :: st
         integer :: k
         do k = 1, def%nkw
             if (def%kws(k)%parent /= parent .or. .not. def%kws(k)%mandatory) cycle
+            if (.not. in_force(def%kws(k)%bloc, active)) cycle
             if (.not. given(args, def%kws(k)%name)) then
                 call set_error(st, STATUS_DECK_ERROR, 'missing mandatory keyword ' // &
                     def%kws(k)%name, file=file, line=line, column=col, command=def%name, &
@@ -109,19 +352,21 @@ contains
                 return
             end if
         end do
-        call check_rules(def, parent, args, file, line, col, st)
+        call check_rules(def, parent, args, active, file, line, col, st)
     end subroutine check_required
 
-    subroutine check_rules(def, parent, args, file, line, col, st)
+    subroutine check_rules(def, parent, args, active, file, line, col, st)
         type(cmd_def_t), intent(in) :: def
         integer, intent(in) :: parent, line, col
         type(value_list_t), intent(in) :: args
+        logical, intent(in) :: active(:)
         character(len=*), intent(in) :: file
         type(status_t), intent(inout) :: st
         integer :: r, i, count, last
         character(len=:), allocatable :: names, what
         do r = 1, def%nrule
             if (def%rules(r)%parent /= parent) cycle
+            if (.not. in_force(def%rules(r)%bloc, active)) cycle
             count = 0; last = 0; names = ''
             do i = 1, size(def%rules(r)%names)
                 if (i > 1) names = names // ' | '
@@ -141,6 +386,8 @@ contains
                 if (count == 0) what = 'missing keyword: give exactly one of ' // names
             case (RULE_AU_MOINS_UN)
                 if (count == 0) what = 'missing keyword: give at least one of ' // names
+            case (RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, RULE_ENSEMBLE)
+                call conditional_rule(def%rules(r), args, what, last)
             end select
             if (len(what) == 0) cycle
             if (last > 0) then
@@ -156,6 +403,61 @@ contains
         end do
     end subroutine check_rules
 
+    !> PRESENT_PRESENT (the first keyword given needs every other), PRESENT_ABSENT (the first
+    !> given forbids every other) and ENSEMBLE (all or none): the message, '' when the rule
+    !> holds, and the keyword to locate it at (index in the rule, 0 = the scope).
+    subroutine conditional_rule(rule, args, what, at)
+        type(rule_t), intent(in) :: rule
+        type(value_list_t), intent(in) :: args
+        character(len=:), allocatable, intent(out) :: what
+        integer, intent(out) :: at
+        logical :: here(size(rule%names))
+        integer :: i
+        character(len=:), allocatable :: first
+        what = ''
+        at = 0
+        do i = 1, size(rule%names)
+            here(i) = given(args, rule%names(i)%s)
+        end do
+        first = rule%names(1)%s
+        select case (rule%kind)
+        case (RULE_PRESENT_PRESENT)
+            if (.not. here(1)) return
+            do i = 2, size(rule%names)
+                if (here(i)) cycle
+                what = first // ' needs ' // rule%names(i)%s // ' (give it too)'
+                at = 1
+                return
+            end do
+        case (RULE_PRESENT_ABSENT)
+            if (.not. here(1)) return
+            do i = 2, size(rule%names)
+                if (.not. here(i)) cycle
+                what = first // ' and ' // rule%names(i)%s // ' exclude each other ' // &
+                    '(give only one)'
+                at = i
+                return
+            end do
+        case (RULE_ENSEMBLE)
+            if (all(here) .or. .not. any(here)) return
+            at = findloc(here, .true., dim=1)
+            what = 'keywords ' // join_names(rule) // ' go together: give all or none ' // &
+                '(missing ' // rule%names(findloc(here, .false., dim=1))%s // ')'
+        end select
+    end subroutine conditional_rule
+
+    ! 'A | B | C'
+    function join_names(rule) result(text)
+        type(rule_t), intent(in) :: rule
+        character(len=:), allocatable :: text
+        integer :: i
+        text = ''
+        do i = 1, size(rule%names)
+            if (i > 1) text = text // ' | '
+            text = text // rule%names(i)%s
+        end do
+    end function join_names
+
     !> Occurrences of factor keyword k: a _F, or a tuple/list of _F.
     subroutine build_factor(def, k, v, file, line, col, factor, st)
         type(cmd_def_t), intent(in) :: def
@@ -166,6 +468,7 @@ contains
         type(status_t), intent(inout) :: st
         type(value_t), allocatable :: occs(:)
         type(value_list_t) :: list
+        logical, allocatable :: active(:)
         integer :: i, j, kw
         factor%name = def%kws(k)%name
         factor%line = line; factor%col = col
@@ -200,16 +503,17 @@ contains
                 occ%line = vline(occs(i), line); occ%col = vcol(occs(i), col)
                 allocate (occ%items(8))
                 list = unpack_value(occs(i))
-                call check_scope(def, k, list, file, st)
+                active = active_blocs(def, k, list)
+                call check_scope(def, k, list, active, file, st)
                 if (st%failed()) return
                 do j = 1, size(list%keys)
-                    kw = find_keyword(def, k, list%keys(j)%s)
+                    kw = find_active(def, k, list%keys(j)%s, active)
                     call add_simple(def, kw, list, j, file, occ, st)
                     if (st%failed()) return
                 end do
-                call check_required(def, k, list, file, occ%line, occ%col, st)
+                call check_required(def, k, list, active, file, occ%line, occ%col, st)
                 if (st%failed()) return
-                call fill_defaults(def, k, occ)
+                call fill_defaults(def, k, active, occ)
             end associate
         end do
     end subroutine build_factor
@@ -381,16 +685,19 @@ contains
               ' (allowed: ' // join_words(kw%into, ', ') // ')'
     end function check_into
 
-    !> Adds catalog defaults for keywords of scope `parent` that were not given.
-    subroutine fill_defaults(def, parent, set)
+    !> Adds catalog defaults for keywords of scope `parent` that were not given (those of
+    !> active blocks and outside blocks).
+    subroutine fill_defaults(def, parent, active, set)
         type(cmd_def_t), intent(in) :: def
         integer, intent(in) :: parent
+        logical, intent(in) :: active(:)
         class(keyword_set_t), intent(inout) :: set
         integer :: k
         type(kw_value_t) :: item
         do k = 1, def%nkw
             associate (kw => def%kws(k))
                 if (kw%parent /= parent .or. kw%is_factor .or. len(kw%default) == 0) cycle
+                if (.not. in_force(kw%bloc, active)) cycle
                 if (set%has(kw%name)) cycle
                 item%name = kw%name
                 item%value = default_value(kw)
@@ -468,8 +775,10 @@ contains
             select case (words(i)%s)
             case ('FUNC')
                 out = out // ' fonction formule'
-            case ('RESU')
-                out = out // ' evol_elas evol_noli'
+            case ('RESU', '@TYPE_RESU', '@RESULTAT')
+                out = out // ' evol_elas evol_noli evol_ther evol_sech evol_varc evol_char'
+            case ('CHAM_GD', '@TYPE_CHAM')   ! Code_Aster's cham_gd_sdaster: any field
+                out = out // ' cham_no_sdaster cham_elem carte_sdaster'
             case default
                 out = out // ' ' // words(i)%s
             end select
@@ -531,14 +840,18 @@ contains
         end if
     end function count_text
 
-    function scope_names(def, parent) result(names)
+    ! The keywords in force in a scope (outside blocks or in active ones), each once.
+    function scope_names(def, parent, active) result(names)
         type(cmd_def_t), intent(in) :: def
         integer, intent(in) :: parent
+        logical, intent(in) :: active(:)
         type(string_t), allocatable :: names(:)
-        integer :: k
+        integer :: k, i
         allocate (names(0))
         do k = 1, def%nkw
-            if (def%kws(k)%parent == parent) call append_string(names, def%kws(k)%name)
+            if (def%kws(k)%parent /= parent .or. .not. in_force(def%kws(k)%bloc, active)) cycle
+            if (any([(names(i)%s == def%kws(k)%name, i = 1, size(names))])) cycle
+            call append_string(names, def%kws(k)%name)
         end do
     end function scope_names
 

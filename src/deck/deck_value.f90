@@ -9,7 +9,7 @@ module deck_value
 
     integer, parameter, public :: VK_NONE = 0, VK_INT = 1, VK_REAL = 2, VK_BOOL = 3, &
         VK_STR = 4, VK_TUPLE = 5, VK_LIST = 6, VK_FACTOR = 7, VK_CONCEPT = 8, VK_DEF = 9, &
-        VK_BUILTIN = 10
+        VK_BUILTIN = 10, VK_UNKNOWN = 11
 
     !> One node of a flattened value tree (no recursive component: gfortran 12 shares the
     !> nested levels of recursive allocatable components on assignment, so composite values
@@ -32,6 +32,8 @@ module deck_value
     !>  a _F's items carry their keyword names)
     !>  VK_CONCEPT: obj (owned by the symbol table), s = its type name
     !>  VK_DEF: s = function name, i = its N_DEF node;  VK_BUILTIN: s = name
+    !>  VK_UNKNOWN: a value known only when the deck runs (the check pass's stand-in for
+    !>  what a method of a placeholder concept would give, e.g. a table's cell)
     type, public :: value_t
         integer :: kind = VK_NONE
         integer(i8) :: i = 0
@@ -295,6 +297,8 @@ contains
             text = 'the def function ' // v%s
         case (VK_BUILTIN)
             text = 'the built-in function ' // v%s
+        case (VK_UNKNOWN)
+            text = 'a value known when the deck runs'
         case default
             text = 'None'
         end select
@@ -330,7 +334,7 @@ contains
             end do
             text = text // ')'
             if (v%kind == VK_FACTOR) text = '_F' // text
-        case (VK_CONCEPT, VK_DEF, VK_BUILTIN)
+        case (VK_CONCEPT, VK_DEF, VK_BUILTIN, VK_UNKNOWN)
             text = kind_label(v)
         case default
             text = 'None'

@@ -18,7 +18,7 @@ module run_context
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_INTERNAL
     use atomic_file, only: atomic_file_t
     use deck_ast, only: ast_t
-    use deck_value, only: value_t, append_string
+    use deck_value, only: value_t, append_string, VK_CONCEPT
     use deck_concept, only: concept_t
     use deck_command, only: command_t
     use deck_catalog, only: catalog_t
@@ -28,10 +28,13 @@ module run_context
 
     !> A registered handler. at_check: side-effect free and cheap (function commands): it
     !> also runs in the check pass, so its own errors are found by `parasol --check`.
+    !> reuse: the handler handles reuse=CONCEPT (cmd%reuse; doc/architecture.md, "reuse");
+    !> without it a deck's reuse= is refused as not built yet.
     type, public :: handler_entry_t
         character(len=:), allocatable :: name
         procedure(command_handler), pointer, nopass :: run => null()
         logical :: at_check = .false.
+        logical :: reuse = .false.
     end type handler_entry_t
 
     !> A concept owned by the context; boxes never move, so pointers to obj stay valid.
@@ -66,6 +69,29 @@ module run_context
     !> Sources and namespaces lookups (see scope_of_file).
     integer, parameter, public :: SCOPE_SESSION = 0
 
+    !> One use of a concept's method, attribute or operator in the deck (doc/architecture.md,
+    !> "Concept methods"): `TAB.EXTR_TABLE()` (name 'EXTR_TABLE', called), `tab.DY` (name
+    !> 'DY', not called), `TAB['DX', 1]` (name '__getitem__', args = the index), `a - b`
+    !> ('__sub__' on a, args = [b]; '__rsub__' on b when a is no concept), `a == b`
+    !> ('__eq__'), `len(c)` ('__len__'). Python's special names, so that a handler reads as
+    !> the Code_Aster Python API it mirrors.
+    !>  args : positional arguments (lists and dicts as flat values, deck_value)
+    !>  kwargs : keyword arguments, a VK_FACTOR value (nitems(kwargs) = 0 when none)
+    type, public :: method_call_t
+        character(len=:), allocatable :: name
+        logical :: called = .false.
+        type(value_t), allocatable :: args(:)
+        type(value_t) :: kwargs
+    end type method_call_t
+
+    !> A registered method handler: methods of concepts of type `type_name` ('*' = any
+    !> type) named `name` ('*' = any attribute read without a handler of its own, e.g. the
+    !> columns of a table).
+    type, public :: method_entry_t
+        character(len=:), allocatable :: type_name, name
+        procedure(method_handler), pointer, nopass :: run => null()
+    end type method_entry_t
+
     type, public :: run_context_t
         character(len=:), allocatable :: deck_path   !< as given on the command line
         character(len=:), allocatable :: deck_name   !< file name used in messages
@@ -77,6 +103,13 @@ module run_context
         type(catalog_t) :: catalog
         type(handler_entry_t), allocatable :: handlers(:)
         integer :: nhandler = 0
+        type(method_entry_t), allocatable :: methods(:)   !< concept methods (register_method)
+        integer :: nmethod = 0
+        !> The check pass stopped early (at check_stop_file:check_stop_line): the flow of the
+        !> deck depends there on a value known only when the deck runs (a table's cell ...).
+        logical :: check_stopped = .false.
+        character(len=:), allocatable :: check_stop_file
+        integer :: check_stop_line = 0
         type(symbol_t), allocatable :: symbols(:)
         integer :: nsymbol = 0
         type(box_ref_t), allocatable, private :: boxes(:)
@@ -120,6 +153,10 @@ module run_context
     contains
         procedure :: register => ctx_register
         procedure :: find_handler => ctx_find_handler
+        procedure :: register_method => ctx_register_method
+        procedure :: find_method => ctx_find_method
+        procedure :: method_names => ctx_method_names
+        procedure :: concept_value => ctx_concept_value
         procedure :: bind_unit => ctx_bind_unit
         procedure :: unit_path => ctx_unit_path
         procedure :: output_path => ctx_output_path
@@ -155,7 +192,24 @@ module run_context
         end subroutine command_handler
     end interface
 
-    public :: command_handler, init_context
+    !> A concept method handler (register_method; doc/architecture.md, "Concept methods").
+    !>  ctx : inout, the run context (own a new concept with ctx%concept_value)
+    !>  obj : in, the concept whose method is used (its data may be changed: reuse semantics)
+    !>  call : in, the method name, whether it is called, its arguments
+    !>  result : out, the value the expression takes (VK_NONE when the method returns None)
+    !>  st : out, an error message; the interpreter locates it at the use in the deck
+    abstract interface
+        subroutine method_handler(ctx, obj, call, result, st)
+            import :: run_context_t, concept_t, method_call_t, value_t, status_t
+            type(run_context_t), intent(inout) :: ctx
+            class(concept_t), pointer, intent(in) :: obj
+            type(method_call_t), intent(in) :: call
+            type(value_t), intent(out) :: result
+            type(status_t), intent(out) :: st
+        end subroutine method_handler
+    end interface
+
+    public :: command_handler, method_handler, init_context
 
 contains
 
@@ -174,7 +228,7 @@ contains
         if (dot > 1) ctx%deck_stem = ctx%deck_stem(1:dot - 1)
         ctx%outdir = outdir
         call build_catalog(ctx%catalog)
-        allocate (ctx%handlers(16), ctx%symbols(64), ctx%boxes(64))
+        allocate (ctx%handlers(16), ctx%symbols(64), ctx%boxes(64), ctx%methods(16))
         allocate (ctx%unit_numbers(0), ctx%unit_paths(0), ctx%lines(0))
         allocate (ctx%sources(4), ctx%file_scope(0), ctx%stash(0))
         allocate (ctx%module_names(0), ctx%module_paths(0))
@@ -183,11 +237,12 @@ contains
 
     !> Registers the handler of command `name` (replacing an earlier one).
     !>  at_check : optional, also run it in the check pass (side-effect-free commands)
-    subroutine ctx_register(self, name, handler, at_check)
+    !>  reuse : optional, the handler handles reuse=CONCEPT of a reentrant command
+    subroutine ctx_register(self, name, handler, at_check, reuse)
         class(run_context_t), intent(inout) :: self
         character(len=*), intent(in) :: name
         procedure(command_handler) :: handler
-        logical, intent(in), optional :: at_check
+        logical, intent(in), optional :: at_check, reuse
         type(handler_entry_t), allocatable :: bigger(:)
         integer :: k
         k = self%find_handler(name)
@@ -204,6 +259,8 @@ contains
         self%handlers(k)%run => handler
         self%handlers(k)%at_check = .false.
         if (present(at_check)) self%handlers(k)%at_check = at_check
+        self%handlers(k)%reuse = .false.
+        if (present(reuse)) self%handlers(k)%reuse = reuse
     end subroutine ctx_register
 
     !> Index of the handler of `name`, 0 if none.
@@ -219,6 +276,98 @@ contains
             end if
         end do
     end function ctx_find_handler
+
+    !> Registers the handler of method (or attribute, or Python special name) `name` of
+    !> the concepts of catalog type `type_name` (replacing an earlier one). '*' as
+    !> type_name: every type; '*' as name: every attribute read (obj.NAME, not called, not
+    !> a special name) without a handler of its own, e.g. the columns of a table.
+    subroutine ctx_register_method(self, type_name, name, handler)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: type_name, name
+        procedure(method_handler) :: handler
+        type(method_entry_t), allocatable :: bigger(:)
+        integer :: k, found
+        found = 0
+        do k = 1, self%nmethod
+            if (self%methods(k)%type_name == type_name .and. self%methods(k)%name == name) &
+                found = k
+        end do
+        if (found == 0) then
+            if (self%nmethod == size(self%methods)) then
+                allocate (bigger(2 * size(self%methods)))
+                bigger(1:self%nmethod) = self%methods(1:self%nmethod)
+                call move_alloc(bigger, self%methods)
+            end if
+            self%nmethod = self%nmethod + 1
+            found = self%nmethod
+        end if
+        self%methods(found)%type_name = type_name
+        self%methods(found)%name = name
+        self%methods(found)%run => handler
+    end subroutine ctx_register_method
+
+    !> Index of the handler of method `name` of a concept of type `type_name`, 0 if none:
+    !> the exact pair first, then (type, '*'), ('*', name), ('*', '*'). A '*' name stands
+    !> for attribute reads only (obj.NAME, not called): a call needs its own handler.
+    !>  called : optional, the use is a call obj.name(...) (default .false.)
+    integer function ctx_find_method(self, type_name, name, called) result(found)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: type_name, name
+        logical, intent(in), optional :: called
+        integer :: k, pass
+        character(len=:), allocatable :: t, n
+        logical :: is_call
+        is_call = .false.
+        if (present(called)) is_call = called
+        found = 0
+        do pass = 1, 4
+            t = type_name; n = name
+            if (pass == 2 .or. pass == 4) then
+                if (is_call .or. name(1:min(2, len(name))) == '__') cycle
+                n = '*'
+            end if
+            if (pass >= 3) t = '*'
+            do k = 1, self%nmethod
+                if (self%methods(k)%type_name == t .and. self%methods(k)%name == n) then
+                    found = k
+                    return
+                end if
+            end do
+        end do
+    end function ctx_find_method
+
+    !> The method names registered for concepts of type `type_name` (for messages).
+    function ctx_method_names(self, type_name) result(names)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: type_name
+        type(string_t), allocatable :: names(:)
+        integer :: k
+        allocate (names(0))
+        do k = 1, self%nmethod
+            if (self%methods(k)%name == '*') cycle
+            if (self%methods(k)%type_name == type_name .or. self%methods(k)%type_name == '*') &
+                call append_string(names, self%methods(k)%name)
+        end do
+    end function ctx_method_names
+
+    !> Takes ownership of a concept a method made (`TAB.EXTR_TABLE()`) and gives the deck
+    !> value that refers to it.
+    !>  obj : inout, the new concept (moved);  v : out, VK_CONCEPT;  st : out
+    subroutine ctx_concept_value(self, obj, v, st)
+        class(run_context_t), intent(inout) :: self
+        class(concept_t), allocatable, intent(inout) :: obj
+        type(value_t), intent(out) :: v
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: ptr
+        if (allocated(obj)) then
+            if (.not. allocated(obj%name)) obj%name = ''
+        end if
+        call self%own_concept(obj, ptr, st)
+        if (st%failed()) return
+        v%kind = VK_CONCEPT
+        v%obj => ptr
+        v%s = ptr%type_name()
+    end subroutine ctx_concept_value
 
     !> Binds logical unit `unit` to `path` (--unit N=PATH).
     subroutine ctx_bind_unit(self, unit, path)
@@ -419,6 +568,7 @@ contains
         end do
         self%nbox = 0
         self%finished = .false.
+        self%check_stopped = .false.
         self%nstash = 0
         self%stashed = .false.
         self%continued = .false.

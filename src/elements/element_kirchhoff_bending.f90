@@ -23,7 +23,7 @@ module element_kirchhoff_bending
     implicit none
     private
 
-    public :: kirchhoff_bending_stiffness, kirchhoff_bending_b
+    public :: kirchhoff_bending_stiffness, kirchhoff_bending_b, kirchhoff_rotation_map
 
 contains
 
@@ -86,6 +86,15 @@ contains
             b(3, :) = b(3, :) + dxy(2, a) * bx(:, a) + dxy(1, a) * by(:, a)
         end do
     end subroutine kirchhoff_bending_b
+
+    !> The rotation map below, for the stress recovery (element_plate_fields: the shear
+    !> forces need the second derivatives of the rotation field).
+    pure subroutine kirchhoff_rotation_map(xy, nn, bx, by)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn)
+        real(dp), intent(out) :: bx(3 * nn, 2 * nn), by(3 * nn, 2 * nn)
+        call rotation_map(xy, nn, bx, by)
+    end subroutine kirchhoff_rotation_map
 
     !> beta_x, beta_y at the corners and side midpoints as linear forms of the element DOFs:
     !> column a of bx/by holds the coefficients of beta_x/beta_y at rotation node a (corners

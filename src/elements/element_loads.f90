@@ -14,20 +14,37 @@
 !> moments. A pressure acts against the element normal n (right-hand rule on the node
 !> order): q_j = -PRES_j n. SSNL130 model A (P = 5 (y - 2)^2 at the nodes of the 4 x 16
 !> grid): resultant 855/64 N, where the exact integral of P is 40/3 N (ssnl130.md).
-!> Edges: the load is evaluated at the 2 Gauss points of the SEG2 and integrated with the
-!> linear shape functions, f_i = sum_g N_i(g) q_g w_g (exact for q quadratic), as Code_Aster
-!> integrates FORCE_CONTOUR on plane elements.
+!> Edges (SEG2, SEG3 of D_PLAN / C_PLAN models): the load is evaluated at the points of
+!> Code_Aster's RIGI family of the skin element (MEPLSE2: FPG2, MEPLSE3: FPG4;
+!> element_gauss_families) and integrated with the edge's shape functions,
+!> f_i = sum_g N_i(g) q_g |dx/dxi| w_g (exact for q quadratic on a straight SEG2, for q of
+!> degree 5 on a straight SEG3), as Code_Aster integrates FORCE_CONTOUR and PRES_REP on
+!> plane elements. The edge normal is Code_Aster's (vff2dn): n = (dy/ds, -dx/ds), the
+!> tangent node 1 -> node 2 turned clockwise (outward for a skin that turns
+!> counter-clockwise around its solid); a pressure p gives the traction -p n.
 !> Only translations receive forces: fe = (FX1, FY1, FZ1, FX2, ...) in global components.
 module element_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use element_quadrature, only: gauss_line
     use element_plate, only: plate_local_frame
+    use mesh_cell_shapes, only: CELL_SEG2, CELL_SEG3, CELL_TYPE_NODES, CELL_TYPE_NAMES, &
+        cell_shape
+    use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLANE_EDGE
     implicit none
     private
 
-    !> Number of Gauss points of an edge (FORCE_CONTOUR).
-    integer(i4), parameter, public :: EDGE_POINT_COUNT = 2
+    !> Most points and nodes of a plane edge (SEG3: FPG4, 3 nodes).
+    integer(i4), parameter, public :: MAX_EDGE_POINTS = 4, MAX_EDGE_NODES = 3
+
+    !> The load points of one plane edge (edge_load_points).
+    type, public :: edge_points_t
+        integer(i4) :: n = 0                                !< points
+        integer(i4) :: nn = 0                               !< nodes of the edge (2 or 3)
+        real(dp) :: x(2, MAX_EDGE_POINTS) = 0.0_dp          !< positions
+        real(dp) :: w(MAX_EDGE_POINTS) = 0.0_dp             !< weight times |dx/dxi|
+        real(dp) :: shape(MAX_EDGE_NODES, MAX_EDGE_POINTS) = 0.0_dp  !< N_i at the points
+        real(dp) :: normal(2, MAX_EDGE_POINTS) = 0.0_dp     !< unit normal (module header)
+    end type edge_points_t
 
     public :: plate_load_weights, plate_nodal_forces, plate_nodal_pressure
     public :: edge_load_points, edge_line_forces
@@ -119,57 +136,64 @@ contains
         triangle_area = 0.5_dp * ((b(1) - a(1)) * (c(2) - a(2)) - (b(2) - a(2)) * (c(1) - a(1)))
     end function triangle_area
 
-    !> Load points of a 2D edge (SEG2), 2-point Gauss.
-    !>  coords : in, coords(1:2, 2); xg : out, xg(1:2, 2); wg : out, wg(2) = weight * L/2
-    !>  st     : out, STATUS_MODEL_ERROR for a zero-length edge
-    subroutine edge_load_points(coords, xg, wg, st)
-        real(dp), intent(in) :: coords(2, 2)
-        real(dp), intent(out) :: xg(2, EDGE_POINT_COUNT), wg(EDGE_POINT_COUNT)
+    !> Load points of a plane edge: positions, weights, shape functions and normals at the
+    !> points of the skin element's RIGI family (module header).
+    !>  ctype  : in, CELL_SEG2 or CELL_SEG3
+    !>  coords : in, coords(1:2, nn) node coordinates (SEG3: ends, then middle)
+    !>  pts    : out
+    !>  st     : out, STATUS_MODEL_ERROR for another cell type or an edge of zero length
+    !>           (|dx/dxi| zero at a point, relative to the edge's size)
+    subroutine edge_load_points(ctype, coords, pts, st)
+        integer(i4), intent(in) :: ctype
+        real(dp), intent(in) :: coords(:, :)
+        type(edge_points_t), intent(out) :: pts
         type(status_t), intent(out) :: st
-        real(dp) :: n(2, EDGE_POINT_COUNT)
-        call edge_rule(coords, xg, wg, n, st)
-    end subroutine edge_load_points
-
-    !> Nodal forces of a line load (FORCE_CONTOUR FX, FY per unit length, unit depth).
-    !>  coords : in, coords(1:2, 2); fline : in, fline(1:2, 2) load at the edge points
-    !>  fe     : out, fe(4) = (FX1, FY1, FX2, FY2); st : out, zero-length edge
-    subroutine edge_line_forces(coords, fline, fe, st)
-        real(dp), intent(in) :: coords(2, 2), fline(2, EDGE_POINT_COUNT)
-        real(dp), intent(out) :: fe(4)
-        type(status_t), intent(out) :: st
-        real(dp) :: xg(2, EDGE_POINT_COUNT), wg(EDGE_POINT_COUNT), n(2, EDGE_POINT_COUNT)
-        integer(i4) :: i
-        fe = 0.0_dp
-        call edge_rule(coords, xg, wg, n, st)
-        if (st%failed()) return
-        do i = 1, 2
-            fe(2 * i - 1) = sum(n(i, :) * wg * fline(1, :))
-            fe(2 * i) = sum(n(i, :) * wg * fline(2, :))
-        end do
-    end subroutine edge_line_forces
-
-    !> Points, weights (times L/2) and shape-function values of a 2D edge.
-    subroutine edge_rule(coords, xg, wg, n, st)
-        real(dp), intent(in) :: coords(2, 2)
-        real(dp), intent(out) :: xg(2, EDGE_POINT_COUNT), wg(EDGE_POINT_COUNT)
-        real(dp), intent(out) :: n(2, EDGE_POINT_COUNT)
-        type(status_t), intent(out) :: st
-        real(dp) :: xi(EDGE_POINT_COUNT), w(EDGE_POINT_COUNT), length
-        integer(i4) :: g
-        xg = 0.0_dp
-        wg = 0.0_dp
-        n = 0.0_dp
-        length = norm2(coords(:, 2) - coords(:, 1))
-        if (.not. length > 0.0_dp) then
-            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_CONTOUR on a zero-length edge')
+        type(gauss_rule_t) :: rule
+        real(dp) :: dn(2, MAX_EDGE_NODES), t(2), jac, size
+        integer(i4) :: g, nn
+        if (ctype /= CELL_SEG2 .and. ctype /= CELL_SEG3) then
+            call set_error(st, STATUS_MODEL_ERROR, 'an edge load needs a SEG2 or SEG3 ' // &
+                'edge, not a ' // trim(CELL_TYPE_NAMES(ctype)))
             return
         end if
-        call gauss_line(2_i4, xi, w)
-        do g = 1, EDGE_POINT_COUNT
-            n(:, g) = [0.5_dp * (1.0_dp - xi(g)), 0.5_dp * (1.0_dp + xi(g))]
-            xg(:, g) = matmul(coords, n(:, g))
-            wg(g) = w(g) * 0.5_dp * length
+        call gauss_family(FORMULATION_PLANE_EDGE, ctype, 'RIGI', rule, st)
+        if (st%failed()) return
+        nn = CELL_TYPE_NODES(ctype)
+        pts%n = rule%n
+        pts%nn = nn
+        size = norm2(coords(1:2, 2) - coords(1:2, 1))
+        if (nn == 3) size = max(size, norm2(coords(1:2, 3) - coords(1:2, 1)), &
+                                norm2(coords(1:2, 3) - coords(1:2, 2)))
+        do g = 1, rule%n
+            call cell_shape(ctype, rule%xi(1, g), 0.0_dp, pts%shape(1:nn, g), dn(:, 1:nn))
+            pts%x(:, g) = matmul(coords(1:2, 1:nn), pts%shape(1:nn, g))
+            t = matmul(coords(1:2, 1:nn), dn(1, 1:nn))
+            jac = norm2(t)
+            if (.not. (size > 0.0_dp .and. jac > 1.0e3_dp * epsilon(1.0_dp) * size)) then
+                call set_error(st, STATUS_MODEL_ERROR, 'zero-length edge (its ' // &
+                    trim(CELL_TYPE_NAMES(ctype)) // ' nodes coincide or fold back)')
+                return
+            end if
+            pts%w(g) = rule%w(g) * jac
+            pts%normal(:, g) = [t(2), -t(1)] / jac
         end do
-    end subroutine edge_rule
+    end subroutine edge_load_points
+
+    !> Nodal forces of a line load (per unit length, unit depth) known at the load points:
+    !> f_i = sum_g N_i(g) q_g w_g.
+    !>  pts   : in, edge_load_points
+    !>  fline : in, fline(1:2, pts%n) the load (FX, FY) at the points
+    !>  fe    : out, fe(1:2 pts%nn) = (FX1, FY1, FX2, FY2[, FX3, FY3])
+    pure subroutine edge_line_forces(pts, fline, fe)
+        type(edge_points_t), intent(in) :: pts
+        real(dp), intent(in) :: fline(:, :)
+        real(dp), intent(out) :: fe(:)
+        integer(i4) :: i
+        fe = 0.0_dp
+        do i = 1, pts%nn
+            fe(2 * i - 1) = sum(pts%shape(i, 1:pts%n) * pts%w(1:pts%n) * fline(1, 1:pts%n))
+            fe(2 * i) = sum(pts%shape(i, 1:pts%n) * pts%w(1:pts%n) * fline(2, 1:pts%n))
+        end do
+    end subroutine edge_line_forces
 
 end module element_loads

@@ -17,7 +17,8 @@
 module element_plate
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use element_plane_quad4, only: plane_elasticity_matrix, membrane_quad4_stiffness
+    use element_plane, only: plane_elasticity_matrix, plane_stiffness
+    use mesh_cell_shapes, only: CELL_QUAD4
     use element_kirchhoff_bending, only: kirchhoff_bending_stiffness
     implicit none
     private
@@ -96,7 +97,7 @@ contains
         call plane_elasticity_matrix(young, nu, .false., dmat, st)
         if (st%failed()) return
         if (nn == 4) then
-            call membrane_quad4_stiffness(xy, thickness * dmat, km, st)
+            call plane_stiffness(CELL_QUAD4, xy, thickness * dmat, km, st)
         else
             call membrane_tria3_stiffness(xy, thickness * dmat, km, st)
         end if

@@ -10,6 +10,7 @@ module constant_function
 
     type, extends(function_concept_t), public :: constant_function_t
         real(dp) :: value = 0.0_dp
+        character(len=:), allocatable :: result_name      !< NOM_RESU (default TOUTRESU)
     contains
         procedure :: type_name => constant_type_name
         procedure :: parameters => constant_parameters

@@ -35,6 +35,7 @@ contains
         type(constant_function_t), allocatable :: f
         allocate (f)
         call cmd%get_real('VALE', f%value, st)
+        if (st%ok()) call cmd%get_text('NOM_RESU', f%result_name, st)
         if (st%failed()) return
         call move_alloc(f, result)
         if (ctx%checking) return
@@ -53,6 +54,7 @@ contains
         integer :: k, n
         allocate (f)
         call cmd%get_text('NOM_PARA', f%parameter, st)
+        if (st%ok()) call cmd%get_text('NOM_RESU', f%result_name, st)
         if (st%failed()) return
         if (cmd%has('VALE')) then
             key = 'VALE'

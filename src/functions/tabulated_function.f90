@@ -15,6 +15,7 @@ module tabulated_function
 
     type, extends(function_concept_t), public :: tabulated_function_t
         character(len=:), allocatable :: parameter        !< NOM_PARA
+        character(len=:), allocatable :: result_name      !< NOM_RESU (default TOUTRESU)
         real(dp), allocatable :: x(:), y(:)               !< strictly increasing x
         integer :: left = PROL_EXCLU, right = PROL_EXCLU
     contains

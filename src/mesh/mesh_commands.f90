@@ -1,7 +1,7 @@
 !> Command handler of the mesh layer: LIRE_MAILLAGE (doc/deck-language.md).
 module mesh_commands
     use kinds, only: i4
-    use status, only: status_t, STATUS_IO_ERROR
+    use status, only: status_t, STATUS_IO_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text
     use deck_concept, only: concept_t
     use deck_command, only: command_t
@@ -22,6 +22,8 @@ module mesh_commands
 contains
 
     !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH', UNITE=20, NOM_MED): reads the mesh file
+    !> (FORMAT='GIBI' and 'IDEAS', in Code_Aster's catalog, are refused at FORMAT), the
+    !> parallel and bookkeeping keywords (PARTITIONNEUR, INFO_MED, VERI_MAIL) having no effect;
     !> bound to UNITE (ctx%unit_path; MED is the default FORMAT, as in Code_Aster) and writes
     !> its summary (nodes, cells per type, groups with sizes, bounding box) to the .mess.
     !> An unbound unit 20 is the deck's stem beside the deck: .mail (ASTER), .msh (GMSH), and
@@ -46,6 +48,12 @@ contains
         logical :: exists
         call cmd%get_text('FORMAT', format, st)
         if (st%failed()) return
+        if (format /= 'MED' .and. format /= 'ASTER' .and. format /= 'GMSH') then
+            call cmd%error_at('FORMAT', 'parasol does not read the ' // format // &
+                ' format (it reads MED, ASTER and GMSH meshes: convert the mesh to one ' // &
+                'of them)', st, code=STATUS_NOT_IMPLEMENTED)
+            return
+        end if
         call cmd%get_int('UNITE', unit, st)
         if (st%failed()) return
         mesh_name = ''

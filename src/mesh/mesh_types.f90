@@ -55,7 +55,8 @@ module mesh_types
     end type mesh_t
 
     public :: mesh_init, mesh_add_node, mesh_add_cell, mesh_add_node_group, &
-        mesh_add_cell_group, mesh_finish, mesh_release
+        mesh_add_cell_group, mesh_finish, mesh_release, mesh_remove_node_groups, &
+        mesh_remove_cell_groups
     public :: find_node, find_cell, find_node_group, find_cell_group, node_name, cell_name, &
         node_group_name, cell_group_name, cells_of_group, nodes_of_group, nodes_of_cells, &
         cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message, &
@@ -202,6 +203,52 @@ contains
         ptr(index + 1) = n_items + 1
         lines(index) = line
     end subroutine add_group
+
+    !> Removes the GROUP_NO whose flag `remove(g)` is set (DEFI_GROUP/DETR_GROUP_NO); the
+    !> others keep their order, members and lines. O(groups + members).
+    subroutine mesh_remove_node_groups(mesh, remove)
+        type(mesh_t), intent(inout) :: mesh
+        logical, intent(in) :: remove(:)
+        call remove_groups(mesh%node_group_names, mesh%node_group_ptr, &
+            mesh%node_group_items, mesh%node_group_line, mesh%n_node_items, remove)
+    end subroutine mesh_remove_node_groups
+
+    !> Removes the GROUP_MA whose flag `remove(g)` is set (DEFI_GROUP/DETR_GROUP_MA).
+    subroutine mesh_remove_cell_groups(mesh, remove)
+        type(mesh_t), intent(inout) :: mesh
+        logical, intent(in) :: remove(:)
+        call remove_groups(mesh%cell_group_names, mesh%cell_group_ptr, &
+            mesh%cell_group_items, mesh%cell_group_line, mesh%n_cell_items, remove)
+    end subroutine mesh_remove_cell_groups
+
+    ! Rebuilds a group family without the flagged groups (the name index cannot delete:
+    ! the kept names are added again to a new one).
+    subroutine remove_groups(names, ptr, items, lines, n_items, remove)
+        type(name_index_t), intent(inout) :: names
+        integer(i4), allocatable, intent(inout) :: ptr(:), items(:), lines(:)
+        integer(i4), intent(inout) :: n_items
+        logical, intent(in) :: remove(:)
+        type(name_index_t) :: kept
+        integer(i4), allocatable :: new_ptr(:), new_items(:), new_lines(:)
+        integer(i4) :: g, n, index, first, last
+        n = names%count
+        allocate (new_ptr(n + 1), new_items(n_items), new_lines(max(n, 1)))
+        new_ptr(1) = 1
+        do g = 1, n
+            if (remove(g)) cycle
+            call name_add(kept, name_of(names, g), index)
+            first = ptr(g)
+            last = ptr(g + 1) - 1
+            new_items(new_ptr(index):new_ptr(index) + last - first) = items(first:last)
+            new_ptr(index + 1) = new_ptr(index) + last - first + 1
+            new_lines(index) = lines(g)
+        end do
+        n_items = new_ptr(kept%count + 1) - 1
+        names = kept
+        call move_alloc(new_ptr, ptr)
+        call move_alloc(new_items, items)
+        call move_alloc(new_lines, lines)
+    end subroutine remove_groups
 
     !> Trims the work arrays to their final sizes and checks the mesh is not empty.
     !> Errors: no nodes or no cells ("empty mesh").

@@ -31,7 +31,7 @@ contains
     !> AFFE_MODELE(MAILLAGE, AFFE=_F(TOUT='OUI' | GROUP_MA, MODELISATION)): the element of
     !> every cell (later occurrences override earlier ones), then the DOF numbering. The
     !> .mess gets the cells per element kind and the number of equations.
-    !>  result : out, a model_concept_t (with its own copy of the mesh)
+    !>  result : out, a model_concept_t (referring to the mesh)
     !>  st     : out, located at the keyword: a GROUP_MA missing in the mesh (did-you-mean),
     !>           a MODELISATION with no element on a cell of the group, a model with no
     !>           element at all (at AFFE)
@@ -48,7 +48,7 @@ contains
         allocate (mc)
         select type (p)
         type is (mesh_concept_t)
-            mc%mesh = p%mesh
+            mc%mesh => p%mesh       ! referred to: later in-place edits are seen (model_concept)
         class default
             call cmd%error_at('MAILLAGE', 'expected a mesh (maillage), got ' // &
                               p%type_name(), st)

@@ -1,6 +1,13 @@
-!> The 'modele' concept: the result of AFFE_MODELE. It carries its own copy of the mesh
-!> (so later commands need only the model), the element kind of every cell and the DOF
-!> numbering of the nodes those elements touch.
+!> The 'modele' concept: the result of AFFE_MODELE. It refers to the mesh of MAILLAGE (so
+!> later commands need only the model), and carries the element kind of every cell and the
+!> DOF numbering of the nodes those elements touch.
+!>
+!> The mesh is referred to, not copied, as in Code_Aster: the mesh commands that modify a
+!> mesh in place (DEFI_GROUP's new groups, MODI_MAILLAGE's orientations and moves, reuse=)
+!> after AFFE_MODELE are seen by every later command through the model. They keep the
+!> numbers of nodes and cells, so the element kinds and the DOF numbering stay valid. The
+!> mesh concept is owned by the run context, whose concepts never move and live until the
+!> end of the run.
 module model_concept
     use deck_concept, only: concept_t, concept_display_name
     use mesh_types, only: mesh_t
@@ -12,7 +19,7 @@ module model_concept
 
     !> A finite-element model: mesh + element per cell + DOF numbering.
     type, extends(concept_t), public :: model_concept_t
-        type(mesh_t) :: mesh              !< copy of the MAILLAGE mesh
+        type(mesh_t), pointer :: mesh => null()   !< the MAILLAGE mesh (not owned)
         type(model_t) :: model            !< model%element(c): ELEM_* of cell c (ELEM_NONE: none)
         type(dof_numbering_t) :: dofs     !< equation numbers of (component, node)
     contains

@@ -4,9 +4,10 @@
 module model_dof_numbering
     use kinds, only: i4
     use mesh_types, only: mesh_t, node_name
-    use model_types, only: model_t, ELEM_NONE, ELEM_DKQ, ELEM_DKT, ELEM_D_PLAN_QUAD4, &
-        ELEM_C_PLAN_QUAD4, ELEM_D_PLAN_SEG2, ELEM_C_PLAN_SEG2, ELEM_DIS_T_SEG2, &
-        ELEM_DIS_T_POI1, ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1
+    use model_types, only: model_t, ELEM_NONE, ELEM_DKQ, ELEM_DKT, ELEM_DIS_T_SEG2, &
+        ELEM_DIS_T_POI1, ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1, ELEM_DIS_TR_SEG2, &
+        ELEM_DIS_TR_POI1, ELEM_2D_DIS_TR_SEG2, ELEM_2D_DIS_TR_POI1, is_plane_solid, &
+        is_plane_edge
     implicit none
     private
 
@@ -35,11 +36,16 @@ contains
         integer(i4), intent(in) :: kind
         logical :: mask(N_COMPONENTS)
         mask = .false.
+        if (is_plane_solid(kind) .or. is_plane_edge(kind)) then
+            mask(DOF_DX:DOF_DY) = .true.
+            return
+        end if
         select case (kind)
-        case (ELEM_DKQ, ELEM_DKT)
+        case (ELEM_DKQ, ELEM_DKT, ELEM_DIS_TR_SEG2, ELEM_DIS_TR_POI1)
             mask = .true.
-        case (ELEM_D_PLAN_QUAD4, ELEM_C_PLAN_QUAD4, ELEM_D_PLAN_SEG2, ELEM_C_PLAN_SEG2, &
-              ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1)
+        case (ELEM_2D_DIS_TR_SEG2, ELEM_2D_DIS_TR_POI1)
+            mask([DOF_DX, DOF_DY, DOF_DRZ]) = .true.
+        case (ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1)
             mask(DOF_DX:DOF_DY) = .true.
         case (ELEM_DIS_T_SEG2, ELEM_DIS_T_POI1)
             mask(DOF_DX:DOF_DZ) = .true.

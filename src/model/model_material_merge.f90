@@ -1,9 +1,9 @@
 !> Merging of the materials of one AFFE_MATERIAU occurrence, MATER=(A, B): as in
 !> Code_Aster, a cell may receive several materials as long as each behaviour (ELAS,
-!> DIS_CONTACT) is defined by at most one of them (U4.43.03, AFFE_MATERIAU/MATER).
+!> DIS_CONTACT, THER, ...) is defined by at most one of them (U4.43.03, AFFE_MATERIAU/MATER).
 module model_material_merge
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use model_material, only: material_t
+    use model_material, only: material_t, add_behaviour, has_behaviour
     implicit none
     private
 
@@ -11,17 +11,16 @@ module model_material_merge
 
 contains
 
-    !> The material made of the ELAS and DIS_CONTACT parts of `materials`; its name joins
-    !> theirs with '+'.
+    !> The material made of the behaviours of `materials`; its name joins theirs with '+'.
     !>  materials : in, at least one material
     !>  merged    : out, the union of their parts
-    !>  st        : out, STATUS_MODEL_ERROR when two materials both define ELAS or both
-    !>              DIS_CONTACT (naming them), or when the list is empty
+    !>  st        : out, STATUS_MODEL_ERROR when two materials define the same behaviour
+    !>              (naming them and it), or when the list is empty
     subroutine merge_materials(materials, merged, st)
         type(material_t), intent(in) :: materials(:)
         type(material_t), intent(out) :: merged
         type(status_t), intent(out) :: st
-        integer :: k, elas_from, contact_from
+        integer :: k, elas_from, contact_from, b, other
         if (size(materials) == 0) then
             call set_error(st, STATUS_MODEL_ERROR, 'MATER needs at least one material')
             return
@@ -50,6 +49,19 @@ contains
                 merged%has_dis_contact = .true.
                 merged%dis_contact = materials(k)%dis_contact
             end if
+            if (.not. allocated(materials(k)%behaviours)) cycle
+            do b = 1, size(materials(k)%behaviours)
+                associate (name => materials(k)%behaviours(b)%name)
+                    if (has_behaviour(merged, name)) then
+                        do other = 1, k - 1
+                            if (has_behaviour(materials(other), name)) exit
+                        end do
+                        call twice(name, other, k)
+                        return
+                    end if
+                    call add_behaviour(merged, materials(k)%behaviours(b))
+                end associate
+            end do
         end do
     contains
         subroutine twice(part, first, second)

@@ -2,15 +2,17 @@
 !>
 !> An element kind combines the modelisation and the cell type (Code_Aster's "type
 !> element"): 'DKT' on QUAD4 is the DKQ quadrilateral, on TRIA3 the DKT triangle;
-!> 'D_PLAN'/'C_PLAN' on QUAD4 are plane strain/stress solids and on SEG2 load-carrying
-!> edges (no stiffness, FORCE_CONTOUR only); 'DIS_T' and '2D_DIS_T' are translational
-!> discrete springs on SEG2 or POI1.
+!> 'D_PLAN'/'C_PLAN' on TRIA3, TRIA6, QUAD4, QUAD8, QUAD9 are plane strain/stress solids
+!> (Code_Aster's MEDPTR3 ... MECPQU9) and on SEG2, SEG3 load-carrying edges (no stiffness:
+!> FORCE_CONTOUR, PRES_REP); 'DIS_T' and '2D_DIS_T' are translational discrete springs on
+!> SEG2 or POI1, 'DIS_TR' and '2D_DIS_TR' the same with the rotations (DRX, DRY, DRZ; in
+!> 2D DRZ).
 module model_types
     use kinds, only: i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, &
-        CELL_TYPE_NAMES
+        CELL_TYPE_NAMES, CELL_TYPE_ORDER, N_CELL_TYPES
     implicit none
     private
 
@@ -18,15 +20,32 @@ module model_types
     integer(i4), parameter, public :: ELEM_NONE = 0, ELEM_DKQ = 1, ELEM_DKT = 2, &
         ELEM_D_PLAN_QUAD4 = 3, ELEM_C_PLAN_QUAD4 = 4, ELEM_D_PLAN_SEG2 = 5, &
         ELEM_C_PLAN_SEG2 = 6, ELEM_DIS_T_SEG2 = 7, ELEM_DIS_T_POI1 = 8, &
-        ELEM_2D_DIS_T_SEG2 = 9, ELEM_2D_DIS_T_POI1 = 10, N_ELEMENT_KINDS = 10
+        ELEM_2D_DIS_T_SEG2 = 9, ELEM_2D_DIS_T_POI1 = 10, ELEM_D_PLAN_TRIA3 = 11, &
+        ELEM_C_PLAN_TRIA3 = 12, ELEM_D_PLAN_TRIA6 = 13, ELEM_C_PLAN_TRIA6 = 14, &
+        ELEM_D_PLAN_QUAD8 = 15, ELEM_C_PLAN_QUAD8 = 16, ELEM_D_PLAN_QUAD9 = 17, &
+        ELEM_C_PLAN_QUAD9 = 18, ELEM_D_PLAN_SEG3 = 19, ELEM_C_PLAN_SEG3 = 20, &
+        ELEM_DIS_TR_SEG2 = 21, ELEM_DIS_TR_POI1 = 22, ELEM_2D_DIS_TR_SEG2 = 23, &
+        ELEM_2D_DIS_TR_POI1 = 24, N_ELEMENT_KINDS = 24
     !> Names of the element kinds (for the .mess model summary).
-    character(len=13), parameter, public :: ELEMENT_NAMES(0:N_ELEMENT_KINDS) = [ &
-        'NONE         ', 'DKQ          ', 'DKT          ', 'D_PLAN_QUAD4 ', &
-        'C_PLAN_QUAD4 ', 'D_PLAN_SEG2  ', 'C_PLAN_SEG2  ', 'DIS_T_SEG2   ', &
-        'DIS_T_POI1   ', '2D_DIS_T_SEG2', '2D_DIS_T_POI1']
+    character(len=14), parameter, public :: ELEMENT_NAMES(0:N_ELEMENT_KINDS) = [ &
+        'NONE          ', 'DKQ           ', 'DKT           ', 'D_PLAN_QUAD4  ', &
+        'C_PLAN_QUAD4  ', 'D_PLAN_SEG2   ', 'C_PLAN_SEG2   ', 'DIS_T_SEG2    ', &
+        'DIS_T_POI1    ', '2D_DIS_T_SEG2 ', '2D_DIS_T_POI1 ', 'D_PLAN_TRIA3  ', &
+        'C_PLAN_TRIA3  ', 'D_PLAN_TRIA6  ', 'C_PLAN_TRIA6  ', 'D_PLAN_QUAD8  ', &
+        'C_PLAN_QUAD8  ', 'D_PLAN_QUAD9  ', 'C_PLAN_QUAD9  ', 'D_PLAN_SEG3   ', &
+        'C_PLAN_SEG3   ', 'DIS_TR_SEG2   ', 'DIS_TR_POI1   ', '2D_DIS_TR_SEG2', &
+        '2D_DIS_TR_POI1']
     !> Modelisations accepted by AFFE_MODELE.
-    character(len=8), parameter, public :: MODELISATIONS(5) = ['DKT     ', 'D_PLAN  ', &
-        'C_PLAN  ', 'DIS_T   ', '2D_DIS_T']
+    character(len=9), parameter, public :: MODELISATIONS(7) = ['DKT      ', 'D_PLAN   ', &
+        'C_PLAN   ', 'DIS_T    ', '2D_DIS_T ', 'DIS_TR   ', '2D_DIS_TR']
+
+    !> The plane kinds by cell type (D_PLAN, C_PLAN), 0 where the type has none.
+    integer(i4), parameter :: D_PLAN_KINDS(N_CELL_TYPES) = [0, ELEM_D_PLAN_SEG2, &
+        ELEM_D_PLAN_TRIA3, ELEM_D_PLAN_QUAD4, ELEM_D_PLAN_SEG3, ELEM_D_PLAN_TRIA6, &
+        ELEM_D_PLAN_QUAD8, ELEM_D_PLAN_QUAD9]
+    integer(i4), parameter :: C_PLAN_KINDS(N_CELL_TYPES) = [0, ELEM_C_PLAN_SEG2, &
+        ELEM_C_PLAN_TRIA3, ELEM_C_PLAN_QUAD4, ELEM_C_PLAN_SEG3, ELEM_C_PLAN_TRIA6, &
+        ELEM_C_PLAN_QUAD8, ELEM_C_PLAN_QUAD9]
 
     !> Finite element per cell of one mesh.
     type, public :: model_t
@@ -35,7 +54,8 @@ module model_types
     end type model_t
 
     public :: model_init, assign_modelisation, element_for, is_plate, is_plane_solid, &
-        is_plane_edge, is_discrete, is_discrete_2d, n_modelled_cells
+        is_plane_edge, is_plane_strain, is_discrete, is_discrete_2d, is_discrete_rotational, &
+        n_modelled_cells
 
 contains
 
@@ -58,17 +78,21 @@ contains
             if (cell_type == CELL_QUAD4) kind = ELEM_DKQ
             if (cell_type == CELL_TRIA3) kind = ELEM_DKT
         case ('D_PLAN')
-            if (cell_type == CELL_QUAD4) kind = ELEM_D_PLAN_QUAD4
-            if (cell_type == CELL_SEG2) kind = ELEM_D_PLAN_SEG2
+            if (cell_type >= 1 .and. cell_type <= N_CELL_TYPES) kind = D_PLAN_KINDS(cell_type)
         case ('C_PLAN')
-            if (cell_type == CELL_QUAD4) kind = ELEM_C_PLAN_QUAD4
-            if (cell_type == CELL_SEG2) kind = ELEM_C_PLAN_SEG2
+            if (cell_type >= 1 .and. cell_type <= N_CELL_TYPES) kind = C_PLAN_KINDS(cell_type)
         case ('DIS_T')
             if (cell_type == CELL_SEG2) kind = ELEM_DIS_T_SEG2
             if (cell_type == CELL_POI1) kind = ELEM_DIS_T_POI1
         case ('2D_DIS_T')
             if (cell_type == CELL_SEG2) kind = ELEM_2D_DIS_T_SEG2
             if (cell_type == CELL_POI1) kind = ELEM_2D_DIS_T_POI1
+        case ('DIS_TR')
+            if (cell_type == CELL_SEG2) kind = ELEM_DIS_TR_SEG2
+            if (cell_type == CELL_POI1) kind = ELEM_DIS_TR_POI1
+        case ('2D_DIS_TR')
+            if (cell_type == CELL_SEG2) kind = ELEM_2D_DIS_TR_SEG2
+            if (cell_type == CELL_POI1) kind = ELEM_2D_DIS_TR_POI1
         case default
             kind = -1
         end select
@@ -100,7 +124,7 @@ contains
         if (present(skip_incompatible)) skip = skip_incompatible
         if (element_for(name, CELL_QUAD4) < 0) then
             call set_error(st, STATUS_MODEL_ERROR, 'unknown MODELISATION ' // name // &
-                ' (DKT, D_PLAN, C_PLAN, DIS_T or 2D_DIS_T)')
+                ' (DKT, D_PLAN, C_PLAN, DIS_T, 2D_DIS_T, DIS_TR or 2D_DIS_TR)')
             return
         end if
         n_fit = 0
@@ -126,9 +150,10 @@ contains
     pure function fitting_types(name) result(text)
         character(len=*), intent(in) :: name
         character(len=:), allocatable :: text
-        integer(i4) :: t
+        integer(i4) :: k, t
         text = ''
-        do t = 1, size(CELL_TYPE_NAMES)
+        do k = 1, size(CELL_TYPE_ORDER)
+            t = CELL_TYPE_ORDER(k)
             if (element_for(name, t) <= ELEM_NONE) cycle
             if (len(text) > 0) text = text // ', '
             text = text // trim(CELL_TYPE_NAMES(t))
@@ -142,26 +167,46 @@ contains
         is_plate = kind == ELEM_DKQ .or. kind == ELEM_DKT
     end function is_plate
 
+    !> D_PLAN / C_PLAN solids (surface cells).
     elemental logical function is_plane_solid(kind)
         integer(i4), intent(in) :: kind
-        is_plane_solid = kind == ELEM_D_PLAN_QUAD4 .or. kind == ELEM_C_PLAN_QUAD4
+        is_plane_solid = (any(kind == D_PLAN_KINDS) .or. any(kind == C_PLAN_KINDS)) .and. &
+            .not. is_plane_edge(kind) .and. kind /= ELEM_NONE
     end function is_plane_solid
 
+    !> D_PLAN / C_PLAN edges (SEG2, SEG3).
     elemental logical function is_plane_edge(kind)
         integer(i4), intent(in) :: kind
-        is_plane_edge = kind == ELEM_D_PLAN_SEG2 .or. kind == ELEM_C_PLAN_SEG2
+        is_plane_edge = kind == ELEM_D_PLAN_SEG2 .or. kind == ELEM_C_PLAN_SEG2 .or. &
+            kind == ELEM_D_PLAN_SEG3 .or. kind == ELEM_C_PLAN_SEG3
     end function is_plane_edge
 
-    !> Any discrete (DIS_T or 2D_DIS_T).
+    !> D_PLAN kinds (plane strain), solids and edges.
+    elemental logical function is_plane_strain(kind)
+        integer(i4), intent(in) :: kind
+        is_plane_strain = any(kind == D_PLAN_KINDS) .and. kind /= ELEM_NONE
+    end function is_plane_strain
+
+    !> Any discrete (DIS_T, 2D_DIS_T, DIS_TR, 2D_DIS_TR).
     elemental logical function is_discrete(kind)
         integer(i4), intent(in) :: kind
-        is_discrete = kind >= ELEM_DIS_T_SEG2 .and. kind <= ELEM_2D_DIS_T_POI1
+        is_discrete = kind == ELEM_DIS_T_SEG2 .or. kind == ELEM_DIS_T_POI1 .or. &
+            kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1 .or. &
+            is_discrete_rotational(kind)
     end function is_discrete
 
     elemental logical function is_discrete_2d(kind)
         integer(i4), intent(in) :: kind
-        is_discrete_2d = kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1
+        is_discrete_2d = kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1 .or. &
+            kind == ELEM_2D_DIS_TR_SEG2 .or. kind == ELEM_2D_DIS_TR_POI1
     end function is_discrete_2d
+
+    !> DIS_TR and 2D_DIS_TR (rotations too).
+    elemental logical function is_discrete_rotational(kind)
+        integer(i4), intent(in) :: kind
+        is_discrete_rotational = kind == ELEM_DIS_TR_SEG2 .or. kind == ELEM_DIS_TR_POI1 .or. &
+            kind == ELEM_2D_DIS_TR_SEG2 .or. kind == ELEM_2D_DIS_TR_POI1
+    end function is_discrete_rotational
 
     !> Number of cells that carry an element.
     integer(i4) function n_modelled_cells(model)

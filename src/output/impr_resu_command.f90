@@ -65,6 +65,26 @@ module impr_resu_command
 
 contains
 
+    !> The result of RESULTAT as an analysis result (the writers read its state and mesh).
+    !>  st : located at RESULTAT for any other concept
+    subroutine analysis_result_of(occ, res, st)
+        use result_fields, only: result_fields_t
+        type(keyword_set_t), intent(in) :: occ
+        type(result_concept_t), pointer, intent(out) :: res
+        type(status_t), intent(out) :: st
+        class(result_fields_t), pointer :: any
+        res => null()
+        call result_of_keyword(occ, 'RESULTAT', any, st)
+        if (st%failed()) return
+        select type (any)
+        type is (result_concept_t)
+            res => any
+        class default
+            call occ%error_at('RESULTAT', 'IMPR_RESU prints the results of MECA_STATIQUE ' // &
+                'and STAT_NON_LINE, not a ' // any%type_name(), st)
+        end select
+    end subroutine analysis_result_of
+
     !> Handler of IMPR_RESU (doc/architecture.md "Writing a command handler").
     !>  st : located errors (RESULTAT of another type, INST/NUME_ORDRE not stored, unknown
     !>       GROUP_NO, a component no node carries, a bound UNITE with several RESU, a
@@ -124,7 +144,7 @@ contains
         type(string_t), allocatable :: fields(:), given(:), components(:), sief_cmps(:), &
             vari_cmps(:)
         integer(i4), allocatable :: indices(:)
-        call result_of_keyword(occ, 'RESULTAT', res, st)
+        call analysis_result_of(occ, res, st)
         if (st%failed()) return
         if (occ%has('NOM_CHAM')) then
             call occ%get_texts('NOM_CHAM', fields, st)
@@ -384,7 +404,7 @@ contains
         character(len=:), allocatable :: path, mesh_name, written
         logical :: append, exists
         integer :: f, k
-        call result_of_keyword(occ, 'RESULTAT', res, st)
+        call analysis_result_of(occ, res, st)
         if (st%failed()) return
         if (occ%has('NOM_CHAM')) then
             call occ%get_texts('NOM_CHAM', fields, st)

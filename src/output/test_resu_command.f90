@@ -1,38 +1,37 @@
-!> TEST_RESU: checks values of a result (evol_elas, evol_noli) against the deck's
+!> TEST_RESU: checks values of results, fields and meshes against the deck's
 !> non-regression value VALE_CALC and, with REFERENCE, against VALE_REFE (listings.md,
-!> "TEST_RESU blocks"). Each RESU occurrence writes one block to the `.resu` (identification
-!> lines, table header, one check line per check), echoes each check line in compact form to
-!> the `.mess` and counts it in the run context (NOOK makes the run exit with status 2).
+!> "TEST_RESU blocks" and "TEST_RESU semantics"). Occurrences, in the order Code_Aster
+!> runs them: CHAM_NO, CARTE, CHAM_ELEM (a field concept of CREA_CHAMP), RESU (a field of a
+!> result at an instant, or a parameter of it), MAILLAGE (a count of the mesh). Each writes
+!> one block to the `.resu`, echoes each check line to the `.mess` and counts it in the run
+!> context (NOOK makes the run exit with status 2).
 !>
-!> The tested instant is found by NUME_ORDRE, or by INST within RESULT_INST_PRECISION
-!> (relative, absolute below |INST| = 1: analysis_result%result_find). A nodal field (DEPL,
-!> FORC_NODA, REAC_NODA) is read at NOEUD, or GROUP_NO when that group holds exactly one
-!> node; an element field (SIEF_ELGA, VARI_ELGA of the DIS_CHOC springs) at POINT of MAILLE,
-!> or of GROUP_MA when that group holds exactly one cell.
-!>
-!> A listing never contains NaN or Inf: the spellings of non-finite numbers produced by the
-!> formatting layer (`NaN`, `+Inf`, `-Inf`) are replaced by the words NON_FINI, +INFINI and
-!> -INFINI (listing_safe_text), which no reader takes for a number.
+!> The tested instant of a RESU is found by NUME_ORDRE, or by INST within the second
+!> TOLE_MACHINE (default 1e-6) and the second CRITERE (default RELATIF; relative is
+!> absolute below |INST| = 1). The value in a field is found by test_resu_checks
+!> (test_value_in_field): a node, a cell's point and sub-point, or TYPE_TEST over the field.
+!> A result's fields are those stored or made from its analysis's state (result_access).
 module test_resu_command
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR
-    use strings, only: string_t, to_text
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use strings, only: string_t, to_text, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name, &
-        find_cell, find_cell_group, cells_of_group
-    use analysis_result, only: result_concept_t, result_find, result_node_value, &
-        result_cell_value, is_cell_field
-    use element_spring_fields, only: SPRING_POINTS
-    use test_resu_format, only: test_resu_block_lines
+    use mesh_types, only: mesh_t, find_node_group, find_cell_group, nodes_of_group, &
+        cells_of_group, n_node_groups, n_cell_groups
+    use field_support, only: mesh_of_support
+    use field_types, only: field_t
+    use field_concept, only: field_concept_t
+    use result_fields, only: result_fields_t, result_find, RESULT_INST_PRECISION
+    use analysis_result, only: result_concept_t, result_node_value
+    use result_access, only: result_field_at, result_mesh
+    use test_resu_format, only: test_check_t
+    use test_resu_checks, only: read_checks, write_test_block, add_column, &
+        test_value_in_field, test_columns_t, relocate, single_node, single_cell, &
+        listing_safe_text, compact_text
     implicit none
     private
-
-    !> Words written instead of the non-finite spellings NaN, +Inf, -Inf.
-    character(len=*), parameter, public :: LISTING_NOT_FINITE = 'NON_FINI'
-    character(len=*), parameter, public :: LISTING_PLUS_INFINITE = '+INFINI'
-    character(len=*), parameter, public :: LISTING_MINUS_INFINITE = '-INFINI'
 
     public :: run_test_resu, test_resu_value, test_resu_single_node, listing_safe_text, &
         compact_text, result_of_keyword, result_index_of, relocate, test_resu_single_cell
@@ -40,275 +39,278 @@ module test_resu_command
 contains
 
     !> Handler of TEST_RESU (doc/architecture.md "Writing a command handler").
-    !>  st : located errors at the keyword at fault (RESULTAT of another type, INST or
-    !>       NUME_ORDRE not stored, GROUP_NO not holding exactly one node, unknown NOEUD,
-    !>       component absent at the node, REFERENCE without VALE_REFE or the reverse)
+    !>  st : located errors at the keyword at fault (a concept of another type, an instant
+    !>       not stored, a field not computed, a node, cell, point, sub-point or component
+    !>       that does not exist, REFERENCE without VALE_REFE or the reverse)
     subroutine run_test_resu(ctx, cmd, result, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
         class(concept_t), allocatable, intent(out) :: result
         type(status_t), intent(out) :: st
-        integer :: k
+        integer :: k, g
+        character(len=9), parameter :: GROUPS(3) = ['CHAM_NO  ', 'CARTE    ', 'CHAM_ELEM']
         if (allocated(result)) deallocate (result)     ! TEST_RESU has no result
+        do g = 1, size(GROUPS)
+            do k = 1, cmd%count(trim(GROUPS(g)))
+                call test_field_occurrence(ctx, cmd%occurrence(trim(GROUPS(g)), k), st)
+                if (st%failed()) return
+            end do
+        end do
         do k = 1, cmd%count('RESU')
-            call test_one_occurrence(ctx, cmd%occurrence('RESU', k), st)
+            call test_result_occurrence(ctx, cmd%occurrence('RESU', k), st)
+            if (st%failed()) return
+        end do
+        do k = 1, cmd%count('MAILLAGE')
+            call test_mesh_occurrence(ctx, cmd%occurrence('MAILLAGE', k), st)
             if (st%failed()) return
         end do
     end subroutine run_test_resu
 
-    !> One RESU occurrence: find the value, write the block, count the checks.
-    subroutine test_one_occurrence(ctx, occ, st)
+    !> One RESU occurrence: a field's value at an instant (or a parameter of the instant).
+    subroutine test_result_occurrence(ctx, occ, st)
         type(run_context_t), intent(inout) :: ctx
         type(keyword_set_t), intent(in) :: occ
         type(status_t), intent(out) :: st
-        type(result_concept_t), pointer :: res
-        integer(i4) :: index, node
+        class(result_fields_t), pointer :: res
+        type(field_t), pointer :: f
+        type(mesh_t), pointer :: mesh
+        type(test_check_t), allocatable :: checks(:)
+        type(test_columns_t) :: cols
+        integer(i4) :: index
         real(dp) :: computed
-        character(len=:), allocatable :: field, component, location_kind, location_name
-        type(string_t), allocatable :: lines(:)
+        logical :: integers
+        character(len=:), allocatable :: field_name, component
         call result_of_keyword(occ, 'RESULTAT', res, st)
+        if (st%ok()) call result_index_of(occ, res, index, st)
+        if (st%ok()) call read_checks(occ, checks, integers, st)
         if (st%failed()) return
-        call result_index_of(occ, res, index, st)
-        if (st%failed()) return
-        call occ%get_text('NOM_CHAM', field, st)
-        if (st%failed()) return
-        call occ%get_text('NOM_CMP', component, st)
-        if (st%failed()) return
-        location_kind = 'NOEUD'
-        if (occ%has('GROUP_NO')) location_kind = 'GROUP_NO'
-        if (occ%has('GROUP_MA')) location_kind = 'GROUP_MA'
-        if (occ%has('MAILLE')) location_kind = 'MAILLE'
-        call occ%get_text(location_kind, location_name, st)
-        if (st%failed()) return
-        if (is_cell_field(field)) then
-            call test_cell_occurrence(ctx, occ, res, index, field, component, location_kind, &
-                                      location_name, st)
-            return
-        end if
-        if (location_kind == 'GROUP_MA' .or. location_kind == 'MAILLE') then
-            call occ%error_at(location_kind, field // ' is a nodal field: give GROUP_NO ' // &
-                'or NOEUD (GROUP_MA and MAILLE go with SIEF_ELGA and VARI_ELGA)', st)
-            return
-        end if
-        if (occ%has('POINT')) then
-            call occ%error_at('POINT', 'POINT goes with the element fields SIEF_ELGA and ' // &
-                'VARI_ELGA; ' // field // ' is read at a node', st)
-            return
-        end if
-        if (location_kind == 'GROUP_NO') then
-            call test_resu_single_node(res%mesh, location_name, node, st)
-        else
-            node = find_node(res%mesh, location_name, st)
-        end if
-        if (st%failed()) then
-            call relocate(occ, location_kind, st)
-            return
-        end if
-        call test_resu_value(res, field, index, node, component, computed, st)
-        if (st%failed()) then
-            call relocate(occ, 'NOM_CMP', st)
-            return
-        end if
-        call block_lines(occ, res, index, field, component, location_kind, location_name, &
-                         computed, lines, st)
-        if (st%failed()) return
-        call write_block(ctx, lines)
-    end subroutine test_one_occurrence
-
-    !> An element field (SIEF_ELGA, VARI_ELGA) at POINT of a cell (MAILLE, or GROUP_MA of one
-    !> cell).
-    subroutine test_cell_occurrence(ctx, occ, res, stored, field, component, location_kind, &
-                                    location_name, st)
-        type(run_context_t), intent(inout) :: ctx
-        type(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), intent(in) :: res
-        integer(i4), intent(in) :: stored
-        character(len=*), intent(in) :: field, component, location_kind, location_name
-        type(status_t), intent(out) :: st
-        integer(i4) :: cell, point
-        real(dp) :: computed
-        type(string_t), allocatable :: lines(:)
-        if (location_kind == 'GROUP_NO' .or. location_kind == 'NOEUD') then
-            call occ%error_at(location_kind, field // ' is an element field: give ' // &
-                'GROUP_MA (a group of one cell) or MAILLE, and POINT', st)
-            return
-        end if
-        if (.not. occ%has('POINT')) then
-            call occ%error_at('NOM_CHAM', field // ' is read at a point: give POINT (1 or ' // &
-                '2, the nodes of a SEG2 spring)', st)
-            return
-        end if
-        call occ%get_int('POINT', point, st)
-        if (st%failed()) return
-        if (point < 1 .or. point > SPRING_POINTS) then
-            call occ%error_at('POINT', 'a SEG2 spring has points 1 and 2 (its Gauss points ' // &
-                'sit at its nodes), not ' // to_text(point), st)
-            return
-        end if
-        if (location_kind == 'GROUP_MA') then
-            call test_resu_single_cell(res%mesh, location_name, cell, st)
-        else
-            cell = find_cell(res%mesh, location_name, st)
-        end if
-        if (st%failed()) then
-            call relocate(occ, location_kind, st)
-            return
-        end if
-        call result_cell_value(res, field, stored, cell, point, component, computed, st)
-        if (st%failed()) then
-            if (any(res%spring_cell == cell)) then
-                call relocate(occ, 'NOM_CMP', st)      ! a component the field lacks
-            else
-                call relocate(occ, location_kind, st)  ! no spring there
-            end if
-            return
-        end if
-        call block_lines(occ, res, stored, field, component, location_kind, location_name, &
-                         computed, lines, st, point)
-        if (st%failed()) return
-        call write_block(ctx, lines)
-    end subroutine test_cell_occurrence
-
-    !> The one cell of GROUP_MA `group`.
-    !>  st : STATUS_MODEL_ERROR when the group does not exist (with a did-you-mean) or does
-    !>       not hold exactly one cell (naming the group and its size)
-    subroutine test_resu_single_cell(mesh, group, cell, st)
-        type(mesh_t), intent(in) :: mesh
-        character(len=*), intent(in) :: group
-        integer(i4), intent(out) :: cell
-        type(status_t), intent(out) :: st
-        integer(i4) :: g
-        integer(i4), allocatable :: members(:)
-        cell = 0
-        g = find_cell_group(mesh, group, st)
-        if (st%failed()) return
-        members = cells_of_group(mesh, g)
-        if (size(members) /= 1) then
-            call set_error(st, STATUS_MODEL_ERROR, 'GROUP_MA ' // group // ' holds ' // &
-                           to_text(size(members, kind=i4)) // &
-                           ' cells; TEST_RESU needs a group of exactly one cell (or MAILLE)')
-            return
-        end if
-        cell = members(1)
-    end subroutine test_resu_single_cell
-
-    !> The TEST_RESU block of one occurrence, checks counted by the caller from the lines.
-    !>  point : in, optional, POINT of an element field (a column of the block)
-    subroutine block_lines(occ, res, index, field, component, location_kind, location_name, &
-                           computed, lines, st, point)
-        type(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), intent(in) :: res
-        integer(i4), intent(in) :: index
-        character(len=*), intent(in) :: field, component, location_kind, location_name
-        real(dp), intent(in) :: computed
-        type(string_t), allocatable, intent(out) :: lines(:)
-        type(status_t), intent(out) :: st
-        integer(i4), intent(in), optional :: point
-        real(dp) :: vale_calc, tole_machine, vale_refe, precision, inst
-        character(len=:), allocatable :: criterion, reference, legend, result_name
-        integer :: n_ok, n_nook
-        call occ%get_real('VALE_CALC', vale_calc, st)
-        if (st%ok()) call occ%get_real('TOLE_MACHINE', tole_machine, st)
-        if (st%ok()) call occ%get_real('PRECISION', precision, st)
-        if (st%ok()) call occ%get_text('CRITERE', criterion, st)
-        if (st%failed()) return
-        if (tole_machine < 0.0_dp .or. precision < 0.0_dp) then
-            call occ%error_at(trim(merge('TOLE_MACHINE', 'PRECISION   ', &
-                                         tole_machine < 0.0_dp)), 'a tolerance must be >= 0', st)
-            return
-        end if
-        if (occ%has('REFERENCE') .neqv. occ%has('VALE_REFE')) then
-            call occ%error_at(merge('REFERENCE', 'VALE_REFE', occ%has('REFERENCE')), &
-                              'REFERENCE and VALE_REFE go together (give both or neither)', st)
-            return
-        end if
-        legend = ''
-        if (occ%has('LEGENDE')) call occ%get_text('LEGENDE', legend, st)
-        if (st%failed()) return
-        result_name = res%name
-        n_ok = 0
-        n_nook = 0
-        inst = res%inst(index)
-        if (occ%has('REFERENCE')) then
-            call occ%get_text('REFERENCE', reference, st)
-            if (st%ok()) call occ%get_real('VALE_REFE', vale_refe, st)
+        call add_column(cols, 'RESULTAT', res%name)
+        call add_column(cols, 'NUME_ORDRE', to_text(res%nume_ordre(index)))
+        if (occ%has('INST')) call add_column(cols, 'INST', real_e13(res%inst(index)))
+        if (occ%has('PARA')) then
+            call parameter_value(occ, res, index, cols, computed, st)
             if (st%failed()) return
-            if (occ%has('INST')) then
-                call test_resu_block_lines(result_name, field, component, location_kind, &
-                    location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
-                    n_nook, nume_ordre=int(res%nume_ordre(index)), inst=inst, &
-                    reference_kind=reference, vale_refe=vale_refe, precision=precision, &
-                    legend=legend, point=point)
-            else
-                call test_resu_block_lines(result_name, field, component, location_kind, &
-                    location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
-                    n_nook, nume_ordre=int(res%nume_ordre(index)), reference_kind=reference, &
-                    vale_refe=vale_refe, precision=precision, legend=legend, point=point)
-            end if
-        else if (occ%has('INST')) then
-            call test_resu_block_lines(result_name, field, component, location_kind, &
-                location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
-                n_nook, nume_ordre=int(res%nume_ordre(index)), inst=inst, point=point)
-        else
-            call test_resu_block_lines(result_name, field, component, location_kind, &
-                location_name, vale_calc, computed, tole_machine, criterion, lines, n_ok, &
-                n_nook, nume_ordre=int(res%nume_ordre(index)), point=point)
+            call write_test_block(ctx, cols, checks, computed)
+            return
         end if
-    end subroutine block_lines
+        call occ%get_text('NOM_CHAM', field_name, st)
+        if (st%failed()) return
+        component = ''
+        if (occ%has('NOM_CMP')) call occ%get_text('NOM_CMP', component, st)
+        if (occ%has('NOM_VARI')) call occ%get_text('NOM_VARI', component, st)
+        if (st%failed()) return
+        call add_column(cols, 'NOM_CHAM', field_name)
+        if (len(component) > 0) call add_column(cols, 'NOM_CMP', component)
+        call result_field_at(res, index, field_name, f, st)
+        if (st%failed()) then
+            call relocate(occ, 'NOM_CHAM', st)
+            return
+        end if
+        call result_mesh(res, mesh, st)
+        if (st%failed()) then
+            call relocate(occ, 'RESULTAT', st)
+            return
+        end if
+        call test_value_in_field(ctx, occ, f, mesh, field_name, component, cols, computed, st)
+        if (st%failed()) return
+        if (occ%has('VALE_ABS')) call vale_abs_column(occ, cols)
+        call write_test_block(ctx, cols, checks, computed)
+    end subroutine test_result_occurrence
 
-    !> Writes a block to the .resu, each check line compacted to the .mess, and counts the
-    !> check lines (lines 4 and after start with ' OK ' or 'NOOK').
-    subroutine write_block(ctx, lines)
+    !> PARA: a parameter of the stored instant (INST).
+    subroutine parameter_value(occ, res, index, cols, value, st)
+        type(keyword_set_t), intent(in) :: occ
+        class(result_fields_t), intent(in) :: res
+        integer(i4), intent(in) :: index
+        type(test_columns_t), intent(inout) :: cols
+        real(dp), intent(out) :: value
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: name
+        value = 0.0_dp
+        call occ%get_text('PARA', name, st)
+        if (st%failed()) return
+        call add_column(cols, 'PARA', name)
+        select case (name)
+        case ('INST')
+            value = res%inst(index)
+        case default
+            call occ%error_at('PARA', 'the result stores no parameter ' // name // &
+                ' (parasol stores INST)', st, STATUS_MODEL_ERROR)
+        end select
+    end subroutine parameter_value
+
+    !> CHAM_NO, CARTE or CHAM_ELEM occurrence: a value of a field concept.
+    subroutine test_field_occurrence(ctx, occ, st)
         type(run_context_t), intent(inout) :: ctx
-        type(string_t), intent(in) :: lines(:)
-        integer :: k
-        character(len=:), allocatable :: id
-        do k = 1, size(lines)
-            call ctx%write_resu(listing_safe_text(lines(k)%s))
-        end do
-        id = compact_text(lines(2)%s)
-        do k = 4, size(lines)
-            call ctx%count_test(lines(k)%s(1:4) == ' OK ')
-            call ctx%write_mess('    TEST_RESU ' // id // ': ' // &
-                                listing_safe_text(compact_text(lines(k)%s)))
-        end do
-    end subroutine write_block
+        type(keyword_set_t), intent(in) :: occ
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        type(mesh_t), pointer :: mesh
+        type(test_check_t), allocatable :: checks(:)
+        type(test_columns_t) :: cols
+        real(dp) :: computed
+        logical :: integers
+        character(len=:), allocatable :: component
+        call occ%get_concept('CHAM_GD', p, st)
+        if (st%failed()) return
+        select type (p)
+        type is (field_concept_t)
+            call read_checks(occ, checks, integers, st)
+            if (st%failed()) return
+            call mesh_of_support(p%support, mesh, st)
+            if (st%failed()) then
+                call relocate(occ, 'CHAM_GD', st)
+                return
+            end if
+            component = ''
+            if (occ%has('NOM_CMP')) call occ%get_text('NOM_CMP', component, st)
+            if (st%failed()) return
+            call add_column(cols, 'CHAM_GD', p%name)
+            if (len(component) > 0) call add_column(cols, 'NOM_CMP', component)
+            call test_value_in_field(ctx, occ, p%field, mesh, p%name, component, cols, &
+                computed, st)
+            if (st%failed()) return
+            if (occ%has('VALE_ABS')) call vale_abs_column(occ, cols)
+            call write_test_block(ctx, cols, checks, computed)
+        class default
+            call occ%error_at('CHAM_GD', 'expected a field (CREA_CHAMP), got ' // &
+                p%type_name(), st)
+        end select
+    end subroutine test_field_occurrence
+
+    !> The VALE_ABS column when VALE_ABS='OUI'.
+    subroutine vale_abs_column(occ, cols)
+        type(keyword_set_t), intent(in) :: occ
+        type(test_columns_t), intent(inout) :: cols
+        character(len=:), allocatable :: text
+        type(status_t) :: st
+        call occ%get_text('VALE_ABS', text, st)
+        if (st%ok() .and. text == 'OUI') call add_column(cols, 'VALE_ABS', text)
+    end subroutine vale_abs_column
+
+    !> MAILLAGE occurrence: a count of the mesh (CARA NB_MAILLE, NB_NOEUD, NB_GROUP_MA,
+    !> NB_GROUP_NO, NB_MA_GROUP_MA of NOM_GROUP_MA, NB_NO_GROUP_NO of NOM_GROUP_NO).
+    subroutine test_mesh_occurrence(ctx, occ, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        type(mesh_t), pointer :: mesh
+        type(test_check_t), allocatable :: checks(:)
+        type(test_columns_t) :: cols
+        character(len=:), allocatable :: cara, group
+        integer(i4) :: g, count_value
+        logical :: integers
+        call occ%get_concept('MAILLAGE', p, st)
+        if (st%failed()) return
+        call mesh_of_support(p, mesh, st)
+        if (st%failed()) then
+            call relocate(occ, 'MAILLAGE', st)
+            return
+        end if
+        call read_checks(occ, checks, integers, st)
+        if (st%ok()) call occ%get_text('CARA', cara, st)
+        if (st%failed()) return
+        call add_column(cols, 'MAILLAGE', p%name)
+        call add_column(cols, 'CARA', cara)
+        group = ''
+        select case (cara)
+        case ('NB_MAILLE')
+            count_value = mesh%n_cells
+        case ('NB_NOEUD')
+            count_value = mesh%n_nodes
+        case ('NB_GROUP_MA')
+            count_value = n_cell_groups(mesh)
+        case ('NB_GROUP_NO')
+            count_value = n_node_groups(mesh)
+        case ('NB_MA_GROUP_MA')
+            if (.not. occ%has('NOM_GROUP_MA')) then
+                call occ%error_at('CARA', 'NB_MA_GROUP_MA counts the cells of a group: ' // &
+                    'give NOM_GROUP_MA', st, STATUS_MODEL_ERROR)
+                return
+            end if
+            call occ%get_text('NOM_GROUP_MA', group, st)
+            if (st%ok()) g = find_cell_group(mesh, group, st)
+            if (st%failed()) then
+                call relocate(occ, 'NOM_GROUP_MA', st)
+                return
+            end if
+            count_value = size(cells_of_group(mesh, g), kind=i4)
+            call add_column(cols, 'NOM_GROUP_MA', group)
+        case ('NB_NO_GROUP_NO')
+            if (.not. occ%has('NOM_GROUP_NO')) then
+                call occ%error_at('CARA', 'NB_NO_GROUP_NO counts the nodes of a group: ' // &
+                    'give NOM_GROUP_NO', st, STATUS_MODEL_ERROR)
+                return
+            end if
+            call occ%get_text('NOM_GROUP_NO', group, st)
+            if (st%ok()) g = find_node_group(mesh, group, st)
+            if (st%failed()) then
+                call relocate(occ, 'NOM_GROUP_NO', st)
+                return
+            end if
+            count_value = size(nodes_of_group(mesh, g), kind=i4)
+            call add_column(cols, 'NOM_GROUP_NO', group)
+        case default
+            count_value = 0
+        end select
+        if (.not. integers) checks(:)%integers = .true.
+        call write_test_block(ctx, cols, checks, real(count_value, dp))
+    end subroutine test_mesh_occurrence
 
     !> The result concept given at `key` of `occ`.
     !>  res : out, points to the concept (owned by the run context)
-    !>  st  : located error at `key` when the concept is not a result (evol_elas, evol_noli)
+    !>  st  : located error at `key` when the concept is not a result
     subroutine result_of_keyword(occ, key, res, st)
         type(keyword_set_t), intent(in) :: occ
         character(len=*), intent(in) :: key
-        type(result_concept_t), pointer, intent(out) :: res
+        class(result_fields_t), pointer, intent(out) :: res
         type(status_t), intent(out) :: st
         class(concept_t), pointer :: ptr
         res => null()
         call occ%get_concept(key, ptr, st)
         if (st%failed()) return
         select type (ptr)
-        type is (result_concept_t)
+        class is (result_fields_t)
             res => ptr
         class default
-            call occ%error_at(key, 'expected a result (evol_elas or evol_noli), got ' // &
-                              ptr%type_name(), st)
+            call occ%error_at(key, 'expected a result (evol_elas, evol_noli, evol_ther), ' // &
+                'got ' // ptr%type_name(), st)
         end select
     end subroutine result_of_keyword
 
-    !> The stored instant (1..n_stored) an occurrence asks for by INST or NUME_ORDRE.
+    !> The stored instant (1..n_stored) an occurrence asks for by INST or NUME_ORDRE; INST
+    !> is matched with the second TOLE_MACHINE and CRITERE when given (Code_Aster's
+    !> precision of the instant), else within RESULT_INST_PRECISION relative.
     !>  st : located error at INST or NUME_ORDRE listing what is stored
     subroutine result_index_of(occ, res, index, st)
         type(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), intent(in) :: res
+        class(result_fields_t), intent(in) :: res
         integer(i4), intent(out) :: index
         type(status_t), intent(out) :: st
-        real(dp) :: inst
+        real(dp) :: inst, precision
+        real(dp), allocatable :: tolerances(:)
+        type(string_t), allocatable :: criteria(:)
+        character(len=:), allocatable :: criterion
         integer(i4) :: nume_ordre
         index = 0
         if (occ%has('INST')) then
             call occ%get_real('INST', inst, st)
             if (st%failed()) return
-            call result_find(res, index, st, inst=inst)
+            precision = RESULT_INST_PRECISION
+            criterion = 'RELATIF'
+            if (occ%has('TOLE_MACHINE')) then
+                call occ%get_reals('TOLE_MACHINE', tolerances, st)
+                if (st%failed()) return
+                if (size(tolerances) > 1) precision = tolerances(2)
+            end if
+            if (occ%has('CRITERE')) then
+                call occ%get_texts('CRITERE', criteria, st)
+                if (st%failed()) return
+                if (size(criteria) > 1) criterion = criteria(2)%s
+            end if
+            call result_find(res, index, st, inst=inst, precision=precision, &
+                criterion=criterion)
             if (st%failed()) call relocate(occ, 'INST', st)
         else
             call occ%get_int('NUME_ORDRE', nume_ordre, st)
@@ -318,7 +320,7 @@ contains
         end if
     end subroutine result_index_of
 
-    !> Value of one component of a nodal field at one stored instant.
+    !> Value of one component of a nodal field of an analysis at one stored instant.
     !>  res       : in, the result
     !>  field     : in, DEPL, FORC_NODA or REAC_NODA
     !>  index     : in, stored instant, 1..res%n_stored
@@ -345,97 +347,34 @@ contains
             return
         end if
         call result_node_value(res, field, index, node, component, value, st)
-        if (st%failed()) st%message = 'node ' // node_name(res%mesh, node) // ': ' // &
-                                      st%message
+        if (st%failed()) st%message = 'node ' // trim(node_label(res, node)) // ': ' // &
+            st%message
     end subroutine test_resu_value
 
-    !> The one node of GROUP_NO `group`.
-    !>  st : STATUS_MODEL_ERROR when the group does not exist (with a did-you-mean) or does
-    !>       not hold exactly one node (naming the group and its size)
+    function node_label(res, node) result(text)
+        use mesh_types, only: node_name
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: node
+        character(len=:), allocatable :: text
+        text = node_name(res%mesh, node)
+    end function node_label
+
+    !> The one node of GROUP_NO `group` (test_resu_checks%single_node).
     subroutine test_resu_single_node(mesh, group, node, st)
         type(mesh_t), intent(in) :: mesh
         character(len=*), intent(in) :: group
         integer(i4), intent(out) :: node
         type(status_t), intent(out) :: st
-        integer(i4) :: g
-        integer(i4), allocatable :: members(:)
-        node = 0
-        g = find_node_group(mesh, group, st)
-        if (st%failed()) return
-        members = nodes_of_group(mesh, g)
-        if (size(members) /= 1) then
-            call set_error(st, STATUS_MODEL_ERROR, 'GROUP_NO ' // group // ' holds ' // &
-                           to_text(size(members, kind=i4)) // &
-                           ' nodes; TEST_RESU needs a group of exactly one node (or NOEUD)')
-            return
-        end if
-        node = members(1)
+        call single_node(mesh, group, node, st)
     end subroutine test_resu_single_node
 
-    !> Locates a failed status (from a layer that does not know the deck) at `key` of `occ`,
-    !> keeping its message; the category becomes STATUS_MODEL_ERROR.
-    subroutine relocate(occ, key, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        message = st%message
-        call clear_status(st)
-        call occ%error_at(key, message, st, STATUS_MODEL_ERROR)
-    end subroutine relocate
-
-    !> `text` with the non-finite spellings NaN, +Inf, -Inf (whole tokens, optionally
-    !> followed by %) replaced by NON_FINI, +INFINI, -INFINI.
-    pure function listing_safe_text(text) result(out)
-        character(len=*), intent(in) :: text
-        character(len=:), allocatable :: out
-        integer :: i, j
-        character(len=:), allocatable :: token, core
-        out = ''
-        i = 1
-        do while (i <= len(text))
-            if (text(i:i) == ' ') then
-                out = out // ' '
-                i = i + 1
-                cycle
-            end if
-            j = i
-            do while (j < len(text))
-                if (text(j + 1:j + 1) == ' ') exit
-                j = j + 1
-            end do
-            token = text(i:j)
-            core = token
-            if (len(core) > 1) then
-                if (core(len(core):) == '%') core = core(1:len(core) - 1)
-            end if
-            select case (core)
-            case ('NaN')
-                token = LISTING_NOT_FINITE // token(len(core) + 1:)
-            case ('+Inf', 'Inf')
-                token = LISTING_PLUS_INFINITE // token(len(core) + 1:)
-            case ('-Inf')
-                token = LISTING_MINUS_INFINITE // token(len(core) + 1:)
-            end select
-            out = out // token
-            i = j + 1
-        end do
-    end function listing_safe_text
-
-    !> `text` without leading/trailing blanks and with runs of blanks reduced to one (the
-    !> compact echo of a listing line in the .mess).
-    pure function compact_text(text) result(out)
-        character(len=*), intent(in) :: text
-        character(len=:), allocatable :: out
-        integer :: i
-        out = ''
-        do i = 1, len_trim(text)
-            if (text(i:i) == ' ') then
-                if (len(out) == 0) cycle
-                if (out(len(out):) == ' ') cycle
-            end if
-            out = out // text(i:i)
-        end do
-    end function compact_text
+    !> The one cell of GROUP_MA `group` (test_resu_checks%single_cell).
+    subroutine test_resu_single_cell(mesh, group, cell, st)
+        type(mesh_t), intent(in) :: mesh
+        character(len=*), intent(in) :: group
+        integer(i4), intent(out) :: cell
+        type(status_t), intent(out) :: st
+        call single_cell(mesh, group, cell, st)
+    end subroutine test_resu_single_cell
 
 end module test_resu_command

@@ -34,6 +34,33 @@ module test_resu_format
     public :: test_resu_check_line, test_resu_summary_line, is_test_resu_criterion
     public :: test_resu_block_lines
 
+    !> Verdicts of one check (test_check_line): OK, NOOK, or skipped (a NON_REGRESSION value
+    !> below the machine epsilon without ORDRE_GRANDEUR, as Code_Aster skips it).
+    integer, parameter, public :: CHECK_NOOK = 0, CHECK_OK = 1, CHECK_SKIP = -1
+    !> The magnitude below which a VALE_CALC counts as zero (Code_Aster's r8prem).
+    real(dp), parameter, public :: TEST_RESU_ZERO = epsilon(1.0_dp)
+
+    !> One check of a tested value (TEST_RESU, listings.md "TEST_RESU semantics").
+    !>  kind        NON_REGRESSION, ANALYTIQUE, AUTRE_ASTER, SOURCE_EXTERNE, NON_DEFINI
+    !>  references  VALE_CALC (or VALE_REFE): the one closest to the value is used
+    !>  tolerance   TOLE_MACHINE (or PRECISION), a fraction
+    !>  criterion   RELATIF or ABSOLU
+    !>  magnitude   ORDRE_GRANDEUR: the tolerance of an ABSOLU check is tolerance*magnitude
+    !>  skip        the check is skipped (printed, not counted)
+    !>  absolute_values  VALE_ABS='OUI': |value| is compared with |reference|
+    !>  integers    integer values (VALE_CALC_I): printed as integers
+    type, public :: test_check_t
+        character(len=:), allocatable :: kind, legend, criterion
+        real(dp), allocatable :: references(:)
+        real(dp) :: tolerance = TEST_RESU_DEFAULT_TOLE_MACHINE
+        real(dp) :: magnitude = 1.0_dp
+        logical :: skip = .false.
+        logical :: absolute_values = .false.
+        logical :: integers = .false.
+    end type test_check_t
+
+    public :: test_resu_id_columns, test_check_line, test_check_block
+
 contains
 
     !> The two identification lines of a TEST_RESU occurrence.
@@ -76,6 +103,121 @@ contains
             lines(2)%s = lines(2)%s // trim(location_name)
         end if
     end subroutine test_resu_id_lines
+
+    !> The two identification lines of a tested value from (title, value) columns: each
+    !> column 17 wide (INST 21), the last one not padded (listings.md).
+    pure subroutine test_resu_id_columns(titles, values, lines)
+        type(string_t), intent(in) :: titles(:), values(:)
+        type(string_t), intent(out) :: lines(2)
+        integer :: k, width
+        lines(1)%s = ' ---- '
+        lines(2)%s = repeat(' ', PREFIX_WIDTH)
+        do k = 1, size(titles)
+            if (k == size(titles)) then
+                lines(1)%s = lines(1)%s // trim(titles(k)%s)
+                lines(2)%s = lines(2)%s // trim(values(k)%s)
+            else
+                width = ID_WIDTH
+                if (titles(k)%s == 'INST') width = ID_WIDTH + 4
+                lines(1)%s = lines(1)%s // field(width, titles(k)%s)
+                lines(2)%s = lines(2)%s // field(width, values(k)%s)
+            end if
+        end do
+    end subroutine test_resu_id_columns
+
+    !> One check line for a computed value (see test_check_t): the reference closest to the
+    !> value, the verdict, the error and the tolerance; a skipped check prints dashes.
+    !>  verdict : out, CHECK_OK, CHECK_NOOK or CHECK_SKIP
+    pure subroutine test_check_line(check, computed, line, verdict)
+        type(test_check_t), intent(in) :: check
+        real(dp), intent(in) :: computed
+        character(len=:), allocatable, intent(out) :: line
+        integer, intent(out) :: verdict
+        real(dp) :: value, reference, tolerance
+        character(len=:), allocatable :: legend, error_text, tolerance_text, ref_text, val_text
+        logical :: ok
+        integer :: k
+        legend = ''
+        if (allocated(check%legend)) legend = trim(check%legend)
+        if (len(legend) == 0) legend = TEST_RESU_NO_LEGEND
+        if (check%skip .or. size(check%references) == 0) then
+            verdict = CHECK_SKIP
+            line = 'SKIP  ' // field(KIND_WIDTH, check%kind) // field(LEGEND_WIDTH, '-') // &
+                field(VALUE_WIDTH, '-') // field(VALUE_WIDTH, '-') // field(ERROR_WIDTH, '-') &
+                // '-'
+            return
+        end if
+        value = computed
+        if (check%absolute_values) value = abs(value)
+        reference = check%references(1)
+        if (check%absolute_values) reference = abs(reference)
+        do k = 2, size(check%references)
+            if (abs(value - merge(abs(check%references(k)), check%references(k), &
+                check%absolute_values)) < abs(value - reference)) reference = &
+                merge(abs(check%references(k)), check%references(k), check%absolute_values)
+        end do
+        tolerance = check%tolerance
+        if (is_absolute(check%criterion) .and. ieee_is_finite(check%magnitude)) &
+            tolerance = tolerance * abs(check%magnitude)
+        ok = test_resu_passes(reference, value, tolerance, check%criterion)
+        verdict = merge(CHECK_OK, CHECK_NOOK, ok)
+        if (is_absolute(check%criterion)) then
+            error_text = absolute_error_text(reference, value)
+            tolerance_text = finite_short(tolerance)
+        else
+            error_text = relative_error_text(reference, value) // '%'
+            tolerance_text = percent_text(tolerance) // '%'
+        end if
+        if (check%integers) then
+            ref_text = integer_text(reference)
+            val_text = integer_text(value)
+        else
+            ref_text = real_e13(reference)
+            val_text = real_e13(value)
+        end if
+        line = merge(' OK   ', 'NOOK  ', ok) // field(KIND_WIDTH, check%kind) // &
+            field(LEGEND_WIDTH, legend) // field(VALUE_WIDTH, ref_text) // &
+            field(VALUE_WIDTH, val_text) // field(ERROR_WIDTH, error_text) // tolerance_text
+    end subroutine test_check_line
+
+    !> An integral value as an integer (within the default integer range), else in E format.
+    pure function integer_text(value) result(text)
+        real(dp), intent(in) :: value
+        character(len=:), allocatable :: text
+        character(len=24) :: buf
+        if (ieee_is_finite(value) .and. abs(value) < 2.0_dp**31 .and. &
+            .not. abs(value - aint(value)) > 0.0_dp) then
+            write (buf, '(i0)') nint(value)
+            text = trim(buf)
+        else
+            text = real_e13(value)
+        end if
+    end function integer_text
+
+    !> A whole block: identification lines, header, one line per check.
+    !>  titles, values : in, the identification columns (test_resu_id_columns)
+    !>  checks         : in, the checks, NON_REGRESSION first
+    !>  computed       : in, the tested value
+    !>  lines          : out, 3 + size(checks) lines
+    !>  n_ok, n_nook   : inout, incremented by the verdicts (skipped checks count in neither)
+    pure subroutine test_check_block(titles, values, checks, computed, lines, n_ok, n_nook)
+        type(string_t), intent(in) :: titles(:), values(:)
+        type(test_check_t), intent(in) :: checks(:)
+        real(dp), intent(in) :: computed
+        type(string_t), allocatable, intent(out) :: lines(:)
+        integer, intent(inout) :: n_ok, n_nook
+        type(string_t) :: id(2)
+        integer :: k, verdict
+        allocate (lines(3 + size(checks)))
+        call test_resu_id_columns(titles, values, id)
+        lines(1:2) = id
+        lines(3)%s = test_resu_header_line()
+        do k = 1, size(checks)
+            call test_check_line(checks(k), computed, lines(3 + k)%s, verdict)
+            if (verdict == CHECK_OK) n_ok = n_ok + 1
+            if (verdict == CHECK_NOOK) n_nook = n_nook + 1
+        end do
+    end subroutine test_check_block
 
     !> The header of the check table:
     !> `      REFERENCE        LEGENDE          VALE_REFE ... ERREUR          TOLE`.

@@ -153,16 +153,13 @@ def all_meshes():
     return {name: to_aster(mesh) for name, mesh in meshes.items()}
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--outdir", default=HERE, help="where to write (default: beside me)")
-    parser.add_argument("--check", action="store_true",
-                        help="write nothing; exit 1 if a file in OUTDIR differs")
-    args = parser.parse_args(argv)
+def write_or_check(files, outdir, check):
+    """Writes each {name: text} into outdir, or with check compares instead: 1 if one
+    differs (or cannot be read), else 0. Shared with tests/plane/make_meshes.py."""
     status = 0
-    for name, text in all_meshes().items():
-        path = os.path.join(args.outdir, name)
-        if args.check:
+    for name, text in files.items():
+        path = os.path.join(outdir, name)
+        if check:
             try:
                 with open(path, encoding="ascii", newline="") as f:
                     same = f.read() == text
@@ -170,12 +167,23 @@ def main(argv=None):
                 print(f"{path}: cannot read: {err}", file=sys.stderr)
                 same = False
             if not same:
-                print(f"{path}: differs from what make_meshes.py generates", file=sys.stderr)
+                print(f"{path}: differs from what {os.path.basename(sys.argv[0])} generates",
+                      file=sys.stderr)
                 status = 1
         else:
+            os.makedirs(outdir, exist_ok=True)
             with open(path, "w", encoding="ascii", newline="\n") as f:
                 f.write(text)
     return status
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--outdir", default=HERE, help="where to write (default: beside me)")
+    parser.add_argument("--check", action="store_true",
+                        help="write nothing; exit 1 if a file in OUTDIR differs")
+    args = parser.parse_args(argv)
+    return write_or_check(all_meshes(), args.outdir, args.check)
 
 
 if __name__ == "__main__":

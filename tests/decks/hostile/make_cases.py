@@ -303,11 +303,80 @@ def deck_cases(c):
     c.write("warped_dkq.comm", text)
 
 
+QUAD8_MAIL = """COOR_2D
+N1 0.0 0.0
+N2 1.0 0.0
+N3 1.0 1.0
+N4 0.0 1.0
+N5 0.5 %s
+N6 1.0 0.5
+N7 0.5 1.0
+N8 0.0 0.5
+FINSF
+QUAD8
+M1 N1 N2 N3 N4
+   N5 N6 N7 N8
+FINSF
+GROUP_MA NOM=ALL
+M1
+FINSF
+GROUP_NO NOM=LEFT
+N1 N4 N8
+FINSF
+FIN
+"""
+
+PLANE_DECK = """DEBUT()
+MAIL = LIRE_MAILLAGE(FORMAT='ASTER')
+MODEL = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(GROUP_MA='ALL', PHENOMENE='MECANIQUE',
+                                           MODELISATION='%s'))
+STEEL = DEFI_MATERIAU(ELAS=_F(E=2.0E+11, NU=0.3))
+MATER = AFFE_MATERIAU(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', MATER=STEEL))
+BC = AFFE_CHAR_MECA(MODELE=MODEL, DDL_IMPO=_F(GROUP_NO='LEFT', DX=0.0, DY=0.0),
+                    FORCE_NODALE=_F(NOEUD='N3', FX=1.0))
+RESU = MECA_STATIQUE(MODELE=MODEL, CHAM_MATER=MATER, EXCIT=_F(CHARGE=BC))
+FIN()
+"""
+
+
+def plane_cases(c):
+    """Quadratic plane cells (issue 21 section 5): collapsed, folded, on the wrong element."""
+    c.mesh_case("tria6_coincident_nodes", "mail", "ASTER",
+                "COOR_2D\nN1 0 0\nN2 1 0\nN3 0 1\nN4 0.5 0\nN5 0.5 0.5\nN6 0.5 0.5\n"
+                "FINSF\nTRIA6\nM1 N1 N2 N3 N4 N5 N6\nFINSF\nFIN\n",
+                "# issue 21: a TRIA6 with two nodes at one place (its side 2-3 middle and side 3-1\n"
+                "# middle) is a collapsed cell, refused where it is read.\n"
+                "# expect: tria6_coincident_nodes.mail:10: error: LIRE_MAILLAGE: cell M1:\n"
+                "# phrase: its nodes N5 and N6 coincide (a TRIA6 needs 6 distinct nodes)\n")
+    head = ("# issue 21: a QUAD8 whose lower middle node sits above its upper side folds over\n"
+            "# itself (det J changes sign inside): a located error naming the cell, as a folded\n"
+            "# QUAD4.\n"
+            "# expect: %d:8: error: MECA_STATIQUE: cell M1 (GROUP_MA ALL):\n"
+            "# phrase: QUAD8 cell is degenerate: its Jacobian is zero or changes sign\n")
+    deck = PLANE_DECK % "D_PLAN"
+    line = head.count("\n") + line_of(deck, "RESU = MECA_STATIQUE(MODELE=MODEL, "
+                                       "CHAM_MATER=MATER, EXCIT=_F(CHARGE=BC))")
+    c.write("quad8_folded.mail", QUAD8_MAIL % "1.6")
+    c.write("quad8_folded.comm", head % line + deck)
+    head = ("# issue 21: a cell type an element cannot take: DKT has no element on a QUAD8.\n"
+            "# expect: %d:%d: error: AFFE_MODELE/AFFE/MODELISATION:\n"
+            "# phrase: MODELISATION DKT has no element on cell M1 (GROUP_MA ALL) of type QUAD8 "
+            "(it applies to TRIA3, QUAD4)\n")
+    deck = PLANE_DECK % "DKT"
+    line = head.count("\n") + line_of(deck, "                                           "
+                                       "MODELISATION='DKT'))")
+    c.write("dkt_on_quad8.mail", QUAD8_MAIL % "0.0")
+    c.write("dkt_on_quad8.comm",
+            head % (line, len("                                           ") + 1)
+            + deck)
+
+
 def main(argv):
     out = argv[1] if len(argv) > 1 else HERE
     c = Corpus(out)
     mesh_cases(c)
     deck_cases(c)
+    plane_cases(c)
     return 0
 
 

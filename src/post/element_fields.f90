@@ -1,0 +1,266 @@
+!> Element fields computed from a result's displacements, cell by cell, for every element
+!> family of the model (doc/fields.md):
+!>  SIEF_ELGA  the state of stress of each element at its Gauss points: a plate's
+!>             stresses SIXX SIYY SIZZ SIXY SIXZ SIYZ at its layer sub-points
+!>             (plate_options PLATE_STRESS); a discrete spring's forces N VY VZ (N VY in
+!>             2D) in its element frame, at its points (SEG2: its two nodes, POI1: its
+!>             node): linear springs from K u (Code_Aster ef0042: node 1 gives -f1, node 2
+!>             f2), DIS_CHOC springs from the state the analysis stored;
+!>  plate-only options at RIGI points or at the nodes (plate_options kinds).
+!> Two passes: the layout of every cell (points, sub-points, components), then the values,
+!> written in place (no per-cell allocation: the 128x512 plate has 65 536 cells).
+module element_fields
+    use kinds, only: dp, i4
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use strings, only: string_t, to_text
+    use deck_catalog, only: split_words
+    use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
+    use model_types, only: is_plate, is_discrete, is_discrete_2d
+    use model_cara_elem, only: ORIENT_ANGL_VRIL, ORIENT_ANGL_NAUT
+    use element_discrete, only: segment_rotation, segment_rotation_2d, nautical_rotation
+    use element_spring_fields, only: SPRING_POINTS
+    use assembly_system, only: structure_t, element_equations, cell_response, &
+        MAX_ELEMENT_DOFS
+    use field_types, only: field_t, component_set_t, field_init_cells, field_define_cells, &
+        FIELD_ELGA, FIELD_ELNO
+    use analysis_result, only: result_concept_t
+    use plate_options, only: plate_cell_t, plate_prepare, plate_values, plate_rigi_points, &
+        plate_node_points, plate_value_count, PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS
+    implicit none
+    private
+
+    public :: state_sief_elga, plate_field, result_structure
+
+contains
+
+    !> The structure of a result as the assembly layer holds it (a copy).
+    !>  st : STATUS_MODEL_ERROR for a result that does not know the structure it was
+    !>       computed on (CREA_RESU: give MODELE, CHAM_MATER, CARA_ELEM)
+    subroutine result_structure(res, s, st)
+        type(result_concept_t), intent(in) :: res
+        type(structure_t), intent(out) :: s
+        type(status_t), intent(out) :: st
+        if (.not. res%has_structure) then
+            call set_error(st, STATUS_MODEL_ERROR, 'the result does not know the model it ' // &
+                'was computed on (give MODELE, CHAM_MATER and CARA_ELEM)')
+            return
+        end if
+        s%mesh = res%mesh
+        s%model = res%model
+        s%materials = res%materials
+        s%cara = res%cara
+        s%dofs = res%dofs
+        s%choc = res%choc
+    end subroutine result_structure
+
+    !> SIEF_ELGA at stored instant `at` of an analysis result (module header), on the
+    !> cells of `cells` (every cell when absent).
+    !>  st : element failures naming the cell; plane elements not built yet
+    subroutine state_sief_elga(res, at, f, st, cells)
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: at
+        type(field_t), intent(out) :: f
+        type(status_t), intent(out) :: st
+        logical, intent(in), optional :: cells(:)
+        type(structure_t) :: s
+        type(string_t), allocatable :: cmps(:)
+        type(component_set_t) :: sets(3)
+        integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:), spring_of(:)
+        integer(i4) :: c, kind
+        logical :: want
+        call split_words(PLATE_STRESS_CMPS // ' N VY VZ', cmps)
+        call field_init_cells(f, FIELD_ELGA, 'SIEF_R', cmps, res%mesh%n_cells, st)
+        if (st%failed()) return
+        sets(1)%cmp = [1_i4, 2_i4, 3_i4, 4_i4, 5_i4, 6_i4]     ! plates
+        sets(2)%cmp = [7_i4, 8_i4, 9_i4]                       ! 3D springs
+        sets(3)%cmp = [7_i4, 8_i4]                             ! 2D springs
+        allocate (n_points(res%mesh%n_cells), n_sub(res%mesh%n_cells), &
+            cell_set(res%mesh%n_cells), source=0_i4)
+        allocate (spring_of(res%mesh%n_cells), source=0_i4)
+        if (allocated(res%spring_cell)) then
+            do c = 1, size(res%spring_cell)
+                spring_of(res%spring_cell(c)) = c
+            end do
+        end if
+        do c = 1, res%mesh%n_cells
+            want = .true.
+            if (present(cells)) want = cells(c)
+            if (.not. want) cycle
+            kind = res%model%element(c)
+            if (is_plate(kind)) then
+                n_points(c) = merge(4_i4, 3_i4, res%mesh%cell_ptr(c + 1) - &
+                    res%mesh%cell_ptr(c) == 4)
+                n_sub(c) = 3 * max(1_i4, res%cara%coque_layers(c))
+                cell_set(c) = 1
+            else if (is_discrete(kind)) then
+                n_points(c) = merge(1_i4, SPRING_POINTS, res%mesh%cell_type(c) == CELL_POI1)
+                n_sub(c) = 1
+                cell_set(c) = merge(3_i4, 2_i4, is_discrete_2d(kind))
+            end if          ! plane elements: their stresses come with the plane family
+        end do
+        call field_define_cells(f, n_points, n_sub, cell_set, sets, st)
+        if (st%failed()) return
+        if (any(cell_set == 2 .or. cell_set == 3)) then
+            call result_structure(res, s, st)
+            if (st%failed()) return
+        end if
+        do c = 1, res%mesh%n_cells
+            if (n_points(c) == 0) cycle
+            if (cell_set(c) == 1) then
+                call plate_cell_values(res, c, res%depl(:, at), PLATE_STRESS, .false., &
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+            else if (spring_of(c) > 0 .and. res%choc(c)) then
+                call stored_spring_values(res, spring_of(c), at, n_points(c), &
+                    size(sets(cell_set(c))%cmp, kind=i4), &
+                    f%values(f%offset(c) + 1:f%offset(c + 1)))
+            else
+                call linear_spring_values(s, c, res%depl(:, at), n_points(c), &
+                    size(sets(cell_set(c))%cmp, kind=i4), &
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+            end if
+            if (st%failed()) return
+        end do
+    end subroutine state_sief_elga
+
+    !> A plate option (plate_options kind) on the plate cells of `cells` (every plate cell
+    !> when absent), at RIGI points (ELGA) or at the nodes (ELNO, evaluated there).
+    !>  location : in, FIELD_ELGA or FIELD_ELNO
+    !>  quantity, cmps : in, the field's quantity and the kind's components
+    subroutine plate_field(res, u, kind, location, quantity, cmps, f, st, cells)
+        type(result_concept_t), intent(in) :: res
+        real(dp), intent(in) :: u(:)
+        integer(i4), intent(in) :: kind, location
+        character(len=*), intent(in) :: quantity, cmps
+        type(field_t), intent(out) :: f
+        type(status_t), intent(out) :: st
+        logical, intent(in), optional :: cells(:)
+        type(string_t), allocatable :: names(:)
+        type(component_set_t) :: sets(1)
+        integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:)
+        integer(i4) :: c, j
+        logical :: want
+        call split_words(cmps, names)
+        call field_init_cells(f, location, quantity, names, res%mesh%n_cells, st)
+        if (st%failed()) return
+        sets(1)%cmp = [(j, j = 1, size(names, kind=i4))]
+        allocate (n_points(res%mesh%n_cells), n_sub(res%mesh%n_cells), &
+            cell_set(res%mesh%n_cells), source=0_i4)
+        do c = 1, res%mesh%n_cells
+            want = is_plate(res%model%element(c))
+            if (present(cells)) want = want .and. cells(c)
+            if (.not. want) cycle
+            n_points(c) = res%mesh%cell_ptr(c + 1) - res%mesh%cell_ptr(c)
+            n_sub(c) = 1
+            if (kind == PLATE_STRESS .or. kind == PLATE_STRAIN) n_sub(c) = 3 * max(1_i4, &
+                res%cara%coque_layers(c))
+            cell_set(c) = 1
+        end do
+        call field_define_cells(f, n_points, n_sub, cell_set, sets, st)
+        if (st%failed()) return
+        do c = 1, res%mesh%n_cells
+            if (n_points(c) == 0) cycle
+            call plate_cell_values(res, c, u, kind, location == FIELD_ELNO, &
+                f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+            if (st%failed()) return
+        end do
+    end subroutine plate_field
+
+    !> The values of one plate cell, at its RIGI points or at its nodes.
+    subroutine plate_cell_values(res, c, u, kind, at_nodes, values, st)
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: c, kind
+        real(dp), intent(in) :: u(:)
+        logical, intent(in) :: at_nodes
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: st
+        type(plate_cell_t) :: pc
+        real(dp) :: xi(2, 4)
+        integer(i4) :: np
+        call plate_prepare(res%mesh, res%dofs, res%cara, res%materials, c, u, pc, st)
+        if (st%failed()) return
+        if (at_nodes) then
+            call plate_node_points(pc%nn, xi, np)
+        else
+            call plate_rigi_points(pc%nn, xi, np)
+        end if
+        if (size(values) /= np * plate_value_count(kind, pc%layers)) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': ' // &
+                to_text(size(values)) // ' values expected')
+            return
+        end if
+        call plate_values(pc, kind, xi, np, values)
+    end subroutine plate_cell_values
+
+    !> N VY (VZ) of a DIS_CHOC spring as the analysis stored it (both points alike).
+    subroutine stored_spring_values(res, k, at, np, n_cmp, values)
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: k, at, np, n_cmp
+        real(dp), intent(out) :: values(:)
+        integer(i4) :: p
+        do p = 1, np
+            values((p - 1) * n_cmp + 1:p * n_cmp) = res%spring_sief(1:n_cmp, k, at)
+        end do
+    end subroutine stored_spring_values
+
+    !> N VY (VZ) of a linear discrete from its internal forces f = K u turned to its element
+    !> frame: SEG2 (x node 1 -> node 2, roll of ORIENTATION; a zero-length segment the
+    !> global frame) point 1 = -f(node 1), point 2 = f(node 2); POI1 (frame of ORIENTATION's
+    !> nautical angles, else global) the force on its node (Code_Aster ef0042).
+    subroutine linear_spring_values(s, c, u, np, n_cmp, values, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, np, n_cmp
+        real(dp), intent(in) :: u(:)
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: eqs(MAX_ELEMENT_DOFS), n, i, p0
+        real(dp) :: ue(MAX_ELEMENT_DOFS), fe(MAX_ELEMENT_DOFS), fn
+        real(dp), allocatable :: kfull(:, :)
+        real(dp) :: frame(3, 3), x(3, 2), f1(3), f2(3), r2(2, 2), roll
+        logical :: closed
+        call element_equations(s, c, eqs, n)
+        ue = 0.0_dp
+        do i = 1, n
+            if (eqs(i) > 0) ue(i) = u(eqs(i))
+        end do
+        allocate (kfull(n, n))
+        call cell_response(s, c, ue(1:n), n, .false., .false., kfull, fe(1:n), closed, fn, st)
+        if (st%failed()) return
+        frame = 0.0_dp
+        do i = 1, 3
+            frame(i, i) = 1.0_dp
+        end do
+        p0 = s%mesh%cell_ptr(c)
+        if (s%mesh%cell_type(c) == CELL_SEG2) then
+            x = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + 1))
+            if (norm2(x(:, 2) - x(:, 1)) > 0.0_dp) then
+                if (n_cmp == 2) then
+                    call segment_rotation_2d(x(1:2, 1), x(1:2, 2), r2, st)
+                    frame = 0.0_dp
+                    frame(1:2, 1:2) = r2
+                    frame(3, 3) = 1.0_dp
+                else
+                    roll = 0.0_dp
+                    if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) &
+                        roll = s%cara%orientation_values(1, c)
+                    if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) &
+                        roll = s%cara%orientation_values(3, c)
+                    call segment_rotation(x(:, 1), x(:, 2), roll, frame, st)
+                end if
+                if (st%failed()) return
+            end if
+            f1 = 0.0_dp
+            f2 = 0.0_dp
+            f1(1:n / 2) = fe(1:n / 2)
+            f2(1:n / 2) = fe(n / 2 + 1:n)
+            values(1:n_cmp) = -matmul(frame(1:n_cmp, :), f1)
+            if (np > 1) values(n_cmp + 1:2 * n_cmp) = matmul(frame(1:n_cmp, :), f2)
+        else
+            if (s%cara%orientation(c) == ORIENT_ANGL_NAUT .and. n_cmp == 3) &
+                call nautical_rotation(s%cara%orientation_values(:, c), frame)
+            f1 = 0.0_dp
+            f1(1:n) = fe(1:n)
+            values(1:n_cmp) = matmul(frame(1:n_cmp, :), f1)
+        end if
+    end subroutine linear_spring_values
+
+end module element_fields

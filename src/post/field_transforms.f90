@@ -1,0 +1,455 @@
+!> Fields made from other fields, as Code_Aster's CALC_CHAMP makes them (doc/fields.md):
+!>  gauss_to_nodes  ELGA -> ELNO: each cell's Gauss values extrapolated to its nodes, sub-point
+!>                  by sub-point. Points that are the nodes (discrete springs, RIGI=NOEU)
+!>                  are copied; one point is given to every node; otherwise the values of
+!>                  the cell's corners are the least-squares fit of its linear shape
+!>                  functions to the Gauss values (Code_Aster's inmat4, R3.06.03: the exact
+!>                  extrapolation when there are as many points as corners: DKQ FPG4, DKT
+!>                  FPG3), side-middle nodes the mean of their two corners, a QUAD9 centre
+!>                  the mean of its four;
+!>  nodes_average   ELNO -> NOEU: at each node the mean of the values the cells around it
+!>                  give (Code_Aster's arithmetic mean), a component where some cell gives
+!>                  it; a field with sub-points (plate layers) must first be reduced to one
+!>                  (POST_CHAMP EXTR_COQUE);
+!>  equivalent_stresses  SIEQ (VMIS TRESCA PRIN_1 PRIN_2 PRIN_3 VMIS_SG VECT_1_X ...
+!>                  VECT_3_Z TRSIG TRIAX) and equivalent_strains EPEQ (INVA_2 PRIN_1..3
+!>                  INVA_2SG VECT_*) point by point (Code_Aster fgequi: principal values in
+!>                  increasing order).
+module field_transforms
+    use kinds, only: dp, i4, i8
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use strings, only: string_t, to_text
+    use deck_catalog, only: split_words
+    use mesh_types, only: mesh_t, cell_label, CELL_TYPE_CORNERS, CELL_POI1, CELL_SEG2, &
+        CELL_TRIA3, CELL_QUAD4, CELL_SEG3, CELL_TRIA6, CELL_QUAD8, CELL_QUAD9
+    use model_types, only: model_t, is_discrete
+    use field_types, only: field_t, component_set_t, field_init_cells, field_init_nodes, &
+        field_define_cells, field_component, FIELD_ELNO, FIELD_NOEU
+    implicit none
+    private
+
+    character(len=*), parameter, public :: SIEQ_CMPS = 'VMIS TRESCA PRIN_1 PRIN_2 PRIN_3 ' // &
+        'VMIS_SG VECT_1_X VECT_1_Y VECT_1_Z VECT_2_X VECT_2_Y VECT_2_Z VECT_3_X VECT_3_Y ' // &
+        'VECT_3_Z TRSIG TRIAX'
+    character(len=*), parameter, public :: EPEQ_CMPS = 'INVA_2 PRIN_1 PRIN_2 PRIN_3 ' // &
+        'INVA_2SG VECT_1_X VECT_1_Y VECT_1_Z VECT_2_X VECT_2_Y VECT_2_Z VECT_3_X VECT_3_Y ' // &
+        'VECT_3_Z'
+
+    public :: gauss_to_nodes, nodes_average, equivalent_field, gauss_points_of
+
+contains
+
+    !> The reference coordinates of a cell's RIGI points when they are Gauss points (plates:
+    !> FPG4 on QUAD4, FPG3 on TRIA3), for the extrapolation (field_transforms header).
+    pure subroutine gauss_points_of(ctype, ng, xi, known)
+        integer(i4), intent(in) :: ctype, ng
+        real(dp), intent(out) :: xi(2, 9)
+        logical, intent(out) :: known
+        real(dp) :: g
+        xi = 0.0_dp
+        known = .true.
+        if (ctype == CELL_QUAD4 .and. ng == 4) then
+            g = 1.0_dp / sqrt(3.0_dp)
+            xi(:, 1:4) = reshape([-g, -g, g, -g, g, g, -g, g], [2, 4])
+        else if (ctype == CELL_TRIA3 .and. ng == 3) then
+            xi(:, 1:3) = reshape([1.0_dp / 6.0_dp, 1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp, &
+                1.0_dp / 6.0_dp, 1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp], [2, 3])
+        else
+            known = .false.
+        end if
+    end subroutine gauss_points_of
+
+    !> The extrapolation matrix e(node, point) of a cell (module header).
+    !>  st : STATUS_MODEL_ERROR for a layout it does not know
+    subroutine extrapolation_matrix(mesh, model, c, ng, e, nn, st)
+        type(mesh_t), intent(in) :: mesh
+        type(model_t), intent(in) :: model
+        integer(i4), intent(in) :: c, ng
+        real(dp), intent(out) :: e(9, 9)
+        integer(i4), intent(out) :: nn
+        type(status_t), intent(out) :: st
+        real(dp) :: xi(2, 9), n(9, 4), a(4, 4), inv(4, 4)
+        integer(i4) :: ctype, nc, g, i
+        logical :: known
+        e = 0.0_dp
+        ctype = mesh%cell_type(c)
+        nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+        if (is_discrete(model%element(c)) .and. ng == nn) then
+            do i = 1, nn
+                e(i, i) = 1.0_dp            ! RIGI = NOEU: the points are the nodes
+            end do
+            return
+        end if
+        if (ng == 1) then
+            e(1:nn, 1) = 1.0_dp
+            return
+        end if
+        call gauss_points_of(ctype, ng, xi, known)
+        if (.not. known) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, c) // ': no Gauss -> ' // &
+                'node extrapolation for ' // to_text(ng) // ' points on this cell type')
+            return
+        end if
+        nc = CELL_TYPE_CORNERS(ctype)
+        do g = 1, ng
+            call corner_shapes(ctype, xi(:, g), n(g, 1:nc))
+        end do
+        a(1:nc, 1:nc) = matmul(transpose(n(1:ng, 1:nc)), n(1:ng, 1:nc))
+        call invert_small(nc, a(1:nc, 1:nc), inv(1:nc, 1:nc))
+        e(1:nc, 1:ng) = matmul(inv(1:nc, 1:nc), transpose(n(1:ng, 1:nc)))
+    end subroutine extrapolation_matrix
+
+    !> The linear (TRIA3) / bilinear (QUAD4) shape functions of the corners at xi.
+    pure subroutine corner_shapes(ctype, xi, n)
+        integer(i4), intent(in) :: ctype
+        real(dp), intent(in) :: xi(2)
+        real(dp), intent(out) :: n(:)
+        n = 0.0_dp
+        select case (ctype)
+        case (CELL_TRIA3, CELL_TRIA6)
+            n(1:3) = [1.0_dp - xi(1) - xi(2), xi(1), xi(2)]
+        case (CELL_QUAD4, CELL_QUAD8, CELL_QUAD9)
+            n(1:4) = 0.25_dp * [(1.0_dp - xi(1)) * (1.0_dp - xi(2)), &
+                (1.0_dp + xi(1)) * (1.0_dp - xi(2)), (1.0_dp + xi(1)) * (1.0_dp + xi(2)), &
+                (1.0_dp - xi(1)) * (1.0_dp + xi(2))]
+        case (CELL_SEG2, CELL_SEG3)
+            n(1:2) = 0.5_dp * [1.0_dp - xi(1), 1.0_dp + xi(1)]
+        case (CELL_POI1)
+            n(1) = 1.0_dp
+        end select
+    end subroutine corner_shapes
+
+    !> Inverse of a small symmetric positive matrix (Gauss-Jordan with partial pivoting).
+    pure subroutine invert_small(n, a, inv)
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: a(n, n)
+        real(dp), intent(out) :: inv(n, n)
+        real(dp) :: m(n, 2 * n), row(2 * n)
+        integer(i4) :: i, j, p
+        m(:, 1:n) = a
+        m(:, n + 1:) = 0.0_dp
+        do i = 1, n
+            m(i, n + i) = 1.0_dp
+        end do
+        do i = 1, n
+            p = i - 1 + maxloc(abs(m(i:n, i)), dim=1)
+            if (p /= i) then
+                row = m(i, :)
+                m(i, :) = m(p, :)
+                m(p, :) = row
+            end if
+            m(i, :) = m(i, :) / m(i, i)
+            do j = 1, n
+                if (j /= i) m(j, :) = m(j, :) - m(j, i) * m(i, :)
+            end do
+        end do
+        inv = m(:, n + 1:)
+    end subroutine invert_small
+
+    !> ELGA -> ELNO (module header): the field `fe` of the same quantity and components.
+    !>  st : a cell whose points cannot be extrapolated (named)
+    subroutine gauss_to_nodes(fg, mesh, model, fe, st)
+        type(field_t), intent(in) :: fg
+        type(mesh_t), intent(in) :: mesh
+        type(model_t), intent(in) :: model
+        type(field_t), intent(out) :: fe
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: n_points(:)
+        real(dp) :: e(9, 9)
+        integer(i4) :: c, nn, ng, n_sub, n_cmp, node, p, k, s, j, a, b
+        integer(i8) :: base_in, base_out
+        call field_init_cells(fe, FIELD_ELNO, fg%quantity, fg%components, fg%n_cells, st)
+        if (st%failed()) return
+        allocate (n_points(fg%n_cells), source=0_i4)
+        do c = 1, fg%n_cells
+            if (fg%n_points(c) > 0) n_points(c) = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+        end do
+        call field_define_cells(fe, n_points, fg%n_subpoints, fg%cell_set, fg%sets, st)
+        if (st%failed()) return
+        do c = 1, fg%n_cells
+            ng = fg%n_points(c)
+            if (ng == 0) cycle
+            call extrapolation_matrix(mesh, model, c, ng, e, nn, st)
+            if (st%failed()) return
+            n_sub = fg%n_subpoints(c)
+            n_cmp = size(fg%sets(fg%cell_set(c))%cmp, kind=i4)
+            base_in = fg%offset(c)
+            base_out = fe%offset(c)
+            do node = 1, nn
+                k = node
+                if (mesh%cell_type(c) == CELL_TRIA6 .or. mesh%cell_type(c) == CELL_QUAD8 .or. &
+                    mesh%cell_type(c) == CELL_QUAD9) k = min(node, CELL_TYPE_CORNERS( &
+                    mesh%cell_type(c)))
+                do s = 1, n_sub
+                    do j = 1, n_cmp
+                        b = ((node - 1) * n_sub + (s - 1)) * n_cmp + j
+                        fe%values(base_out + b) = 0.0_dp
+                        do p = 1, ng
+                            a = ((p - 1) * n_sub + (s - 1)) * n_cmp + j
+                            fe%values(base_out + b) = fe%values(base_out + b) + &
+                                e(k, p) * fg%values(base_in + a)
+                        end do
+                    end do
+                end do
+            end do
+            call middle_nodes(mesh%cell_type(c), n_sub * n_cmp, &
+                fe%values(base_out + 1:fe%offset(c + 1)))
+        end do
+    end subroutine gauss_to_nodes
+
+    !> Side-middle nodes of a quadratic cell: the mean of their corners; a QUAD9 centre the
+    !> mean of the four corners (values node by node, block values per node).
+    pure subroutine middle_nodes(ctype, block, values)
+        integer(i4), intent(in) :: ctype, block
+        real(dp), intent(inout) :: values(:)
+        integer(i4) :: nc, m, a, b
+        select case (ctype)
+        case (CELL_TRIA6, CELL_QUAD8, CELL_QUAD9)
+            nc = CELL_TYPE_CORNERS(ctype)
+            do m = 1, nc
+                a = m
+                b = mod(m, nc) + 1
+                values((nc + m - 1) * block + 1:(nc + m) * block) = 0.5_dp * &
+                    (values((a - 1) * block + 1:a * block) + values((b - 1) * block + 1:b * block))
+            end do
+            if (ctype == CELL_QUAD9) values(8 * block + 1:9 * block) = 0.25_dp * &
+                (values(1:block) + values(block + 1:2 * block) + &
+                values(2 * block + 1:3 * block) + values(3 * block + 1:4 * block))
+        end select
+    end subroutine middle_nodes
+
+    !> ELNO -> NOEU (module header).
+    !>  st : STATUS_MODEL_ERROR for a field with several sub-points on a cell
+    subroutine nodes_average(fe, mesh, fn, st)
+        type(field_t), intent(in) :: fe
+        type(mesh_t), intent(in) :: mesh
+        type(field_t), intent(out) :: fn
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: total(:, :)
+        integer(i4), allocatable :: count(:, :)
+        integer(i4) :: c, p, j, n_cmp, node, k
+        do c = 1, fe%n_cells
+            if (fe%n_points(c) > 0 .and. fe%n_subpoints(c) > 1) then
+                call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, c) // ' has ' // &
+                    to_text(fe%n_subpoints(c)) // ' sub-points (plate layers): a field at ' // &
+                    'the nodes takes one; extract a layer and level first (POST_CHAMP ' // &
+                    'EXTR_COQUE)')
+                return
+            end if
+        end do
+        allocate (total(size(fe%components), mesh%n_nodes), source=0.0_dp)
+        allocate (count(size(fe%components), mesh%n_nodes), source=0_i4)
+        do c = 1, fe%n_cells
+            if (fe%n_points(c) == 0) cycle
+            associate (cmps => fe%sets(fe%cell_set(c))%cmp)
+                n_cmp = size(cmps, kind=i4)
+                do p = 1, fe%n_points(c)
+                    node = mesh%cell_nodes(mesh%cell_ptr(c) + p - 1)
+                    do j = 1, n_cmp
+                        k = cmps(j)
+                        total(k, node) = total(k, node) + fe%values(fe%offset(c) + &
+                            (p - 1) * n_cmp + j)
+                        count(k, node) = count(k, node) + 1
+                    end do
+                end do
+            end associate
+        end do
+        call field_init_nodes(fn, fe%quantity, fe%components, mesh%n_nodes, st)
+        if (st%failed()) return
+        fn%node_has = count > 0
+        where (count > 0) fn%node_values = total / real(max(count, 1_i4), dp)
+    end subroutine nodes_average
+
+    !> SIEQ (stresses) or EPEQ (strains) of a field of SIXX.. / EPXX.. components, at the
+    !> same points and sub-points (module header).
+    !>  kind : in, 'SIGM' or 'EPSI';  f : in, the tensors (components of the 6 absent are 0)
+    !>  st   : STATUS_MODEL_ERROR when the field has none of the tensor's components
+    subroutine equivalent_field(f, kind, out, st)
+        type(field_t), intent(in) :: f
+        character(len=*), intent(in) :: kind
+        type(field_t), intent(out) :: out
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: names(:)
+        character(len=4), parameter :: SIG(6) = ['SIXX', 'SIYY', 'SIZZ', 'SIXY', 'SIXZ', 'SIYZ']
+        character(len=4), parameter :: EPS(6) = ['EPXX', 'EPYY', 'EPZZ', 'EPXY', 'EPXZ', 'EPYZ']
+        integer(i4) :: cols(6), c, p, s, j, n_cmp, n_out
+        integer(i4), allocatable :: out_sets(:)
+        type(component_set_t), allocatable :: sets(:)
+        real(dp) :: t(6), eq(17)
+        integer(i8) :: base
+        logical :: stress
+        stress = kind == 'SIGM'
+        do j = 1, 6
+            if (stress) then
+                cols(j) = field_component(f, SIG(j))
+            else
+                cols(j) = field_component(f, EPS(j))
+            end if
+        end do
+        if (all(cols == 0)) then
+            call set_error(st, STATUS_MODEL_ERROR, 'the field has no ' // &
+                trim(merge('stress', 'strain', stress)) // ' tensor components')
+            return
+        end if
+        if (stress) then
+            call split_words(SIEQ_CMPS, names)
+        else
+            call split_words(EPEQ_CMPS, names)
+        end if
+        n_out = size(names, kind=i4)
+        if (f%location == FIELD_NOEU) then
+            call field_init_nodes(out, trim(merge('SIEF_R', 'EPSI_R', stress)), names, &
+                f%n_nodes, st)
+            if (st%failed()) return
+            do p = 1, f%n_nodes
+                if (.not. any(f%node_has(pack(cols, cols > 0), p))) cycle
+                t = 0.0_dp
+                do j = 1, 6
+                    if (cols(j) > 0) t(j) = f%node_values(cols(j), p)
+                end do
+                call equivalents(t, stress, eq)
+                out%node_values(:, p) = eq(1:n_out)
+                out%node_has(:, p) = .true.
+            end do
+            return
+        end if
+        call field_init_cells(out, f%location, trim(merge('SIEF_R', 'EPSI_R', stress)), &
+            names, f%n_cells, st)
+        if (st%failed()) return
+        allocate (sets(1), out_sets(f%n_cells))
+        sets(1)%cmp = [(j, j = 1, n_out)]
+        out_sets = merge(1_i4, 0_i4, f%n_points > 0)
+        call field_define_cells(out, f%n_points, f%n_subpoints, out_sets, sets, st)
+        if (st%failed()) return
+        do c = 1, f%n_cells
+            if (f%n_points(c) == 0) cycle
+            n_cmp = size(f%sets(f%cell_set(c))%cmp, kind=i4)
+            do p = 1, f%n_points(c)
+                do s = 1, f%n_subpoints(c)
+                    base = f%offset(c) + (int(p - 1, i8) * f%n_subpoints(c) + (s - 1)) * n_cmp
+                    t = 0.0_dp
+                    do j = 1, 6
+                        if (cols(j) == 0) cycle
+                        k_loop: block
+                            integer(i4) :: q
+                            do q = 1, n_cmp
+                                if (f%sets(f%cell_set(c))%cmp(q) == cols(j)) then
+                                    t(j) = f%values(base + q)
+                                    exit
+                                end if
+                            end do
+                        end block k_loop
+                    end do
+                    call equivalents(t, stress, eq)
+                    base = out%offset(c) + (int(p - 1, i8) * f%n_subpoints(c) + (s - 1)) * n_out
+                    out%values(base + 1:base + n_out) = eq(1:n_out)
+                end do
+            end do
+        end do
+    end subroutine equivalent_field
+
+    !> Equivalent values of a symmetric tensor (xx yy zz xy xz yz): stresses (17 values:
+    !> VMIS TRESCA PRIN_1..3 VMIS_SG VECT_1_X..VECT_3_Z TRSIG TRIAX) or strains (14: INVA_2
+    !> PRIN_1..3 INVA_2SG VECT_*), Code_Aster's fgequi.
+    pure subroutine equivalents(t, stress, eq)
+        real(dp), intent(in) :: t(6)
+        logical, intent(in) :: stress
+        real(dp), intent(out) :: eq(17)
+        real(dp) :: a(3, 3), values(3), vectors(3, 3), hyd, dev(6), norm2dev
+        integer(i4) :: i
+        eq = 0.0_dp
+        a(1, :) = [t(1), t(4), t(5)]
+        a(2, :) = [t(4), t(2), t(6)]
+        a(3, :) = [t(5), t(6), t(3)]
+        call symmetric_eigen(a, values, vectors)
+        hyd = (t(1) + t(2) + t(3)) / 3.0_dp
+        dev = [t(1) - hyd, t(2) - hyd, t(3) - hyd, t(4), t(5), t(6)]
+        norm2dev = dev(1)**2 + dev(2)**2 + dev(3)**2 + 2.0_dp * (dev(4)**2 + dev(5)**2 + &
+            dev(6)**2)
+        if (stress) then
+            eq(1) = sqrt(1.5_dp * norm2dev)
+            eq(3:5) = values
+            eq(2) = max(abs(values(1) - values(2)), abs(values(1) - values(3)), &
+                abs(values(2) - values(3)))
+            eq(6) = merge(eq(1), -eq(1), hyd >= 0.0_dp)
+            do i = 1, 3
+                eq(6 + 3 * (i - 1) + 1:6 + 3 * i) = vectors(:, i)
+            end do
+            eq(16) = 3.0_dp * hyd
+            if (eq(1) > 1.0e-10_dp * abs(eq(16))) eq(17) = hyd / eq(1)
+        else
+            eq(1) = sqrt(2.0_dp / 3.0_dp * norm2dev)
+            eq(2:4) = values
+            eq(5) = merge(eq(1), -eq(1), hyd >= 0.0_dp)
+            do i = 1, 3
+                eq(5 + 3 * (i - 1) + 1:5 + 3 * i) = vectors(:, i)
+            end do
+        end if
+    end subroutine equivalents
+
+    !> Eigenvalues (increasing) and unit eigenvectors (columns) of a symmetric 3x3 matrix,
+    !> by cyclic Jacobi rotations (converged to round-off).
+    pure subroutine symmetric_eigen(a0, values, vectors)
+        real(dp), intent(in) :: a0(3, 3)
+        real(dp), intent(out) :: values(3), vectors(3, 3)
+        real(dp) :: a(3, 3), theta, t, c, s, tau, apq, app, aqq, rot(3, 3), tmp(3)
+        integer(i4) :: sweep, p, q, i, k
+        a = a0
+        vectors = 0.0_dp
+        do i = 1, 3
+            vectors(i, i) = 1.0_dp
+        end do
+        do sweep = 1, 50
+            if (abs(a(1, 2)) + abs(a(1, 3)) + abs(a(2, 3)) <= tiny(1.0_dp)) exit
+            do p = 1, 2
+                do q = p + 1, 3
+                    apq = a(p, q)
+                    app = a(p, p)
+                    aqq = a(q, q)
+                    ! an off-diagonal term below round-off of the diagonal is zero
+                    if (.not. abs(apq) > 1.0e-3_dp * epsilon(1.0_dp) * (abs(app) + &
+                        abs(aqq))) then
+                        a(p, q) = 0.0_dp
+                        a(q, p) = 0.0_dp
+                        cycle
+                    end if
+                    theta = (aqq - app) / (2.0_dp * apq)
+                    if (abs(theta) > 1.0e150_dp) then
+                        t = 0.5_dp / theta
+                    else
+                        t = sign(1.0_dp, theta) / (abs(theta) + sqrt(theta * theta + 1.0_dp))
+                    end if
+                    c = 1.0_dp / sqrt(t * t + 1.0_dp)
+                    s = t * c
+                    rot = 0.0_dp
+                    do i = 1, 3
+                        rot(i, i) = 1.0_dp
+                    end do
+                    rot(p, p) = c
+                    rot(q, q) = c
+                    rot(p, q) = s
+                    rot(q, p) = -s
+                    a = matmul(transpose(rot), matmul(a, rot))
+                    a(p, q) = 0.0_dp
+                    a(q, p) = 0.0_dp
+                    vectors = matmul(vectors, rot)
+                end do
+            end do
+        end do
+        do i = 1, 3
+            values(i) = a(i, i)
+        end do
+        do i = 1, 2                       ! increasing order
+            k = i - 1 + minloc(values(i:3), dim=1)
+            if (k /= i) then
+                tau = values(i)
+                values(i) = values(k)
+                values(k) = tau
+                tmp = vectors(:, i)
+                vectors(:, i) = vectors(:, k)
+                vectors(:, k) = tmp
+            end if
+        end do
+    end subroutine symmetric_eigen
+
+end module field_transforms

@@ -1,0 +1,221 @@
+!> CALC_CHAMP's options on DKT/DKQ plate cells (Code_Aster's MEDKTR3/MEDKQU4; R3.07.03),
+!> the values of one cell at given reference points, in the cell's user frame
+!> (element_plate_fields):
+!>  PLATE_STRESS  SIXX SIYY SIZZ SIXY SIXZ SIYZ at each sub-point: 3 per layer (INF, MOY,
+!>                SUP, layers of equal thickness from the bottom face), s = (Dm/h)(e + z k),
+!>                SIZZ = 0, the transverse shear parabolic over the thickness
+!>                (6/h^3)(h^2/4 - z^2) T (Code_Aster dkqsie / dktsie);
+!>  PLATE_STRAIN  EPXX EPYY EPZZ EPXY EPXZ EPYZ at each sub-point: e + z k as a tensor
+!>                (EPXY half the shear), EPZZ = 0, EPXZ EPYZ = T / (2 * 5/6 G h);
+!>  PLATE_FORCES  NXX NYY NXY MXX MYY MXY QX QY: N = Dm e, M = Df k, Q = T;
+!>  PLATE_GENERAL EXX EYY EXY KXX KYY KXY GAX GAY: e, k as tensors (EXY, KXY half the
+!>                engineering values), GAX GAY = T / (2 * 5/6 G h) (Code_Aster dkqedg).
+!> The points are Code_Aster's: RIGI (FPG4 on QUAD4: (-g,-g) (g,-g) (g,g) (-g,g), g =
+!> 1/sqrt3; FPG3 on TRIA3: (1/6,1/6) (2/3,1/6) (1/6,2/3)) for ELGA, the cell's nodes
+!> (NOEU) where Code_Aster evaluates at the nodes.
+module plate_options
+    use kinds, only: dp, i4
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use mesh_types, only: mesh_t, cell_label, CELL_TRIA3, CELL_QUAD4
+    use model_dof_numbering, only: dof_numbering_t, N_COMPONENTS
+    use model_material, only: material_field_t, material_of_cell
+    use model_cara_elem, only: cara_elem_t
+    use element_plate, only: plate_local_frame
+    use element_plate_fields, only: plate_point_strains, plate_point_shear, plate_user_turn, &
+        turn_plate_tensor, turn_plate_vector, plate_rigidities
+    implicit none
+    private
+
+    integer(i4), parameter, public :: PLATE_STRESS = 1, PLATE_STRAIN = 2, PLATE_FORCES = 3, &
+        PLATE_GENERAL = 4
+    !> The components of each kind of value (module header).
+    character(len=*), parameter, public :: PLATE_STRESS_CMPS = 'SIXX SIYY SIZZ SIXY SIXZ SIYZ'
+    character(len=*), parameter, public :: PLATE_STRAIN_CMPS = 'EPXX EPYY EPZZ EPXY EPXZ EPYZ'
+    character(len=*), parameter, public :: PLATE_FORCES_CMPS = 'NXX NYY NXY MXX MYY MXY QX QY'
+    character(len=*), parameter, public :: PLATE_GENERAL_CMPS = 'EXX EYY EXY KXX KYY KXY GAX GAY'
+
+    !> What a cell's values need, prepared once per cell.
+    type, public :: plate_cell_t
+        integer(i4) :: nn = 0
+        real(dp) :: rot(3, 3) = 0.0_dp, xy(2, 4) = 0.0_dp
+        real(dp) :: c = 1.0_dp, s = 0.0_dp        !< the turn to the user frame
+        real(dp) :: thickness = 0.0_dp, dm(3, 3) = 0.0_dp, df(3, 3) = 0.0_dp, dc = 0.0_dp
+        integer(i4) :: layers = 1
+        real(dp) :: ul(24) = 0.0_dp               !< local displacements
+    end type plate_cell_t
+
+    public :: plate_prepare, plate_values, plate_rigi_points, plate_node_points, &
+        plate_value_count
+
+contains
+
+    !> The RIGI Gauss points of a plate cell (Code_Aster's order, module header).
+    pure subroutine plate_rigi_points(nn, xi, n)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(out) :: xi(2, 4)
+        integer(i4), intent(out) :: n
+        real(dp) :: g
+        xi = 0.0_dp
+        if (nn == 4) then
+            g = 1.0_dp / sqrt(3.0_dp)
+            xi(:, 1) = [-g, -g]
+            xi(:, 2) = [g, -g]
+            xi(:, 3) = [g, g]
+            xi(:, 4) = [-g, g]
+            n = 4
+        else
+            xi(:, 1) = [1.0_dp / 6.0_dp, 1.0_dp / 6.0_dp]
+            xi(:, 2) = [2.0_dp / 3.0_dp, 1.0_dp / 6.0_dp]
+            xi(:, 3) = [1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp]
+            n = 3
+        end if
+    end subroutine plate_rigi_points
+
+    !> The nodes of a plate cell as reference points (Code_Aster's NOEU family).
+    pure subroutine plate_node_points(nn, xi, n)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(out) :: xi(2, 4)
+        integer(i4), intent(out) :: n
+        xi = 0.0_dp
+        if (nn == 4) then
+            xi(:, 1) = [-1.0_dp, -1.0_dp]
+            xi(:, 2) = [1.0_dp, -1.0_dp]
+            xi(:, 3) = [1.0_dp, 1.0_dp]
+            xi(:, 4) = [-1.0_dp, 1.0_dp]
+            n = 4
+        else
+            xi(:, 1) = [0.0_dp, 0.0_dp]
+            xi(:, 2) = [1.0_dp, 0.0_dp]
+            xi(:, 3) = [0.0_dp, 1.0_dp]
+            n = 3
+        end if
+    end subroutine plate_node_points
+
+    !> Values per point of a kind: per sub-point for stresses and strains.
+    pure integer(i4) function plate_value_count(kind, layers) result(n)
+        integer(i4), intent(in) :: kind, layers
+        select case (kind)
+        case (PLATE_STRESS, PLATE_STRAIN)
+            n = 6 * 3 * layers
+        case default
+            n = 8
+        end select
+    end function plate_value_count
+
+    !> Prepares a plate cell: frame, user turn, rigidities, local displacements.
+    !>  u  : in, displacements as an equation vector of `dofs`
+    !>  st : STATUS_MODEL_ERROR naming the cell (a degenerate cell, a direction normal to
+    !>       it, a material without ELAS)
+    subroutine plate_prepare(mesh, dofs, cara, materials, cell, u, pc, st)
+        type(mesh_t), intent(in) :: mesh
+        type(dof_numbering_t), intent(in) :: dofs
+        type(cara_elem_t), intent(in) :: cara
+        type(material_field_t), intent(in) :: materials
+        integer(i4), intent(in) :: cell
+        real(dp), intent(in) :: u(:)
+        type(plate_cell_t), intent(out) :: pc
+        type(status_t), intent(out) :: st
+        real(dp) :: coords(3, 4), ue(24), young, nu
+        integer(i4) :: i, k, node, m, eq
+        pc%nn = mesh%cell_ptr(cell + 1) - mesh%cell_ptr(cell)
+        if (mesh%cell_type(cell) /= CELL_TRIA3 .and. mesh%cell_type(cell) /= CELL_QUAD4) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, cell) // ': a DKT ' // &
+                'plate is a TRIA3 or a QUAD4')
+            return
+        end if
+        do i = 1, pc%nn
+            node = mesh%cell_nodes(mesh%cell_ptr(cell) + i - 1)
+            coords(:, i) = mesh%coords(:, node)
+            do k = 1, N_COMPONENTS
+                eq = dofs%equation(k, node)
+                ue(6 * i - 6 + k) = 0.0_dp
+                if (eq > 0) ue(6 * i - 6 + k) = u(eq)
+            end do
+        end do
+        call plate_local_frame(coords(:, 1:pc%nn), pc%nn, pc%rot, pc%xy(:, 1:pc%nn), st)
+        if (st%ok()) call plate_user_turn(pc%rot, cara%coque_direction(:, cell), pc%c, &
+            pc%s, st)
+        if (st%failed()) then
+            st%message = cell_label(mesh, cell) // ': ' // st%message
+            return
+        end if
+        do i = 1, 2 * pc%nn                  ! translations and rotations to the local frame
+            pc%ul(3 * i - 2:3 * i) = matmul(pc%rot, ue(3 * i - 2:3 * i))
+        end do
+        m = material_of_cell(materials, cell)
+        if (m == 0) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, cell) // ' has no ' // &
+                'material: CALC_CHAMP needs its ELAS (give CHAM_MATER)')
+            return
+        end if
+        if (.not. materials%materials(m)%has_elas) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, cell) // ': its ' // &
+                'material has no ELAS (E, NU)')
+            return
+        end if
+        young = materials%materials(m)%elas%e
+        nu = materials%materials(m)%elas%nu
+        pc%thickness = cara%thickness(cell)
+        if (.not. pc%thickness > 0.0_dp) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, cell) // ' has no ' // &
+                'thickness: CALC_CHAMP needs its COQUE (give CARA_ELEM)')
+            return
+        end if
+        pc%layers = max(1_i4, cara%coque_layers(cell))
+        call plate_rigidities(young, nu, pc%thickness, pc%dm, pc%df, pc%dc)
+    end subroutine plate_prepare
+
+    !> The values of `kind` at the np points xi(:, 1:np) of a prepared cell, point by point
+    !> (sub-point by sub-point, component by component): values(1 : np *
+    !> plate_value_count(kind, layers)).
+    subroutine plate_values(pc, kind, xi, np, values)
+        type(plate_cell_t), intent(in) :: pc
+        integer(i4), intent(in) :: kind, np
+        real(dp), intent(in) :: xi(2, np)
+        real(dp), intent(out) :: values(:)
+        real(dp) :: e(3), k(3), t(2), det, h, z, shape, a(3), v(2), layer_h
+        integer(i4) :: p, lay, level, base, nv
+        nv = plate_value_count(kind, pc%layers)
+        h = pc%thickness
+        layer_h = h / real(pc%layers, dp)
+        do p = 1, np
+            call plate_point_strains(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), xi(:, p), &
+                e, k, det)
+            call plate_point_shear(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), pc%df, &
+                xi(:, p), t)
+            base = (p - 1) * nv
+            select case (kind)
+            case (PLATE_FORCES)
+                values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, matmul(pc%dm, e))
+                values(base + 4:base + 6) = turn_plate_tensor(pc%c, pc%s, matmul(pc%df, k))
+                values(base + 7:base + 8) = turn_plate_vector(pc%c, pc%s, t)
+            case (PLATE_GENERAL)
+                values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, &
+                    [e(1), e(2), e(3) / 2.0_dp])
+                values(base + 4:base + 6) = turn_plate_tensor(pc%c, pc%s, &
+                    [k(1), k(2), k(3) / 2.0_dp])
+                values(base + 7:base + 8) = turn_plate_vector(pc%c, pc%s, t / pc%dc / 2.0_dp)
+            case (PLATE_STRESS, PLATE_STRAIN)
+                do lay = 1, pc%layers
+                    do level = 1, 3              ! INF, MOY, SUP
+                        z = -h / 2.0_dp + (lay - 1) * layer_h + (level - 1) * layer_h / 2.0_dp
+                        if (kind == PLATE_STRESS) then
+                            a = matmul(pc%dm, e + z * k) / h
+                            shape = 6.0_dp / h**3 * (h * h / 4.0_dp - z * z)
+                            v = shape * t
+                        else
+                            a = e + z * k
+                            a(3) = a(3) / 2.0_dp
+                            v = t / pc%dc / 2.0_dp
+                        end if
+                        a = turn_plate_tensor(pc%c, pc%s, a)
+                        v = turn_plate_vector(pc%c, pc%s, v)
+                        values(base + 1:base + 6) = [a(1), a(2), 0.0_dp, a(3), v(1), v(2)]
+                        base = base + 6
+                    end do
+                end do
+            end select
+        end do
+    end subroutine plate_values
+
+end module plate_options
