@@ -215,6 +215,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # The deck language's Python: every construct, checked by assert (tests/decks/good).
+    seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                           "python_language.comm")},
+                      [], comm_targets, 1.0))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
