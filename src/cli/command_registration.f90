@@ -26,6 +26,10 @@ module command_registration
     use crea_table_command, only: run_crea_table
     use calc_table_command, only: run_calc_table
     use lire_table_command, only: run_lire_table
+    use recu_fonction_command, only: run_recu_fonction
+    use calc_fonction_command, only: run_calc_fonction
+    use test_fonction_command, only: run_test_fonction
+    use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
     use impr_table_command, only: run_impr_table
     implicit none
@@ -71,6 +75,10 @@ contains
         call ctx%register('CREA_TABLE', run_crea_table)
         call ctx%register('CALC_TABLE', run_calc_table)
         call ctx%register('LIRE_TABLE', run_lire_table)
+        call ctx%register('RECU_FONCTION', run_recu_fonction)
+        call ctx%register('CALC_FONCTION', run_calc_fonction)
+        call ctx%register('TEST_FONCTION', run_test_fonction)
+        call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)
         call ctx%register('IMPR_TABLE', run_impr_table)
     end subroutine register_commands
