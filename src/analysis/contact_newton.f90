@@ -369,6 +369,8 @@ contains
         state%solves = 0
         state%updated = 0
         state%damped = 0
+        state%force_evaluations = 0
+        state%force_seconds = 0.0_dp
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
@@ -380,10 +382,12 @@ contains
         ! Prediction (Code_Aster nmprta/nsassp): the imposed-value increments enter through
         ! the prediction matrix, K du = f_ext(t+) - f_int(t-) - K du_imposed, i.e. the springs
         ! are linearised about the start of the step (doc/analysis.md, "Prediction").
+        t0 = wall_seconds()
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
             state%closed, state%fn, st, state%linear, u_ref=state%u_start, &
             elastic_ref=prediction_is_elastic(options), history=state%history)
         if (st%failed()) return
+        call count_forces(state, t0)
         do iter = 0, options%iter_glob_maxi
             call options%deadline%check('STAT_NON_LINE at INST ' // real_e13(t) // &
                                         ', Newton iteration ' // to_text(iter), st)
@@ -421,10 +425,12 @@ contains
             call hat_body_part(state%solver, r, x)
             call scatter_free(map, alpha * x, du_body)
             history(:, iter) = state%closed
+            seconds = wall_seconds()
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
                 state%fint, state%closed, state%fn, st, state%linear, history=state%history, &
                 du_body=du_body)
             if (st%failed()) return
+            call count_forces(state, seconds)
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
@@ -476,6 +482,8 @@ contains
         call log_add(log, '  solves with a factor: ' // to_text(state%solves) // &
             '; tangents through another status''s factor: ' // to_text(state%updated) // &
             '; corrections damped by the line search: ' // to_text(state%damped))
+        call log_add(log, '  internal forces: ' // to_text(state%force_evaluations) // &
+            ' evaluation(s), ' // seconds_text(state%force_seconds) // ' s')
         call log_add(log, '  closed in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
@@ -502,6 +510,15 @@ contains
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
+
+    !> One more evaluation of the internal forces, started at wall time t0 (the step's count
+    !> and time, for the .mess: doc/performance.md measures them).
+    subroutine count_forces(state, t0)
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: t0
+        state%force_evaluations = state%force_evaluations + 1
+        state%force_seconds = state%force_seconds + (wall_seconds() - t0)
+    end subroutine count_forces
 
     !> The .mess line on the digits the converged answer holds: one solve with the factor
     !> for the final residual (computed from the increments, element by element: without
