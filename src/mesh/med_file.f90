@@ -18,7 +18,7 @@ module med_file
         c_null_char, c_f_procpointer
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_MESH_ERROR
-    use strings, only: to_text
+    use strings, only: string_t, to_text
     use dynamic_library, only: dynamic_library_t, open_library, find_symbol
     use install_layout, only: plugin_file_path
     implicit none
@@ -26,7 +26,7 @@ module med_file
 
     !> File name of the plug-in and the version of its entry points this module speaks.
     character(len=*), parameter, public :: MED_PLUGIN_NAME = 'libparasol_med.so'
-    integer(c_int), parameter :: MED_PLUGIN_ABI = 1
+    integer(c_int), parameter :: MED_PLUGIN_ABI = 2
     !> Codes returned by the plug-in itself (not MED's).
     integer(c_int), parameter :: PLUGIN_BAD_SIZE = -900001
 
@@ -38,6 +38,10 @@ module med_file
         MED_COUNT_CELL_FAMILIES = 6, MED_COUNT_CELL_TYPES = 7, MED_COUNT_DESCENDING_CELLS = 8
     !> Entities of names and family numbers.
     integer, parameter, public :: MED_NODES = 1, MED_CELLS = 2
+    !> Entities a field's values are on (med.h med_entity_type): the cells' integration
+    !> points, the nodes, the cells' nodes (ELNO).
+    integer, parameter, public :: MED_ENTITY_CELL = 0, MED_ENTITY_NODE = 3, &
+        MED_ENTITY_NODE_ELEMENT = 4
     !> MED string sizes (med.h): object names, entity names, group names.
     integer, parameter, public :: MED_NAME_LEN = 64, MED_SNAME_LEN = 16, MED_LNAME_LEN = 80
     !> MED versions this build reads: major 3 and 4 (MED-fichier 4.x reads 3.x files; 2.x
@@ -59,7 +63,9 @@ module med_file
         med_family_group_count, med_family_info, med_create_mesh, med_write_coordinates, &
         med_write_connectivity, med_write_names, med_write_families, med_create_family, &
         med_field_count, med_field_info, med_create_field, med_profile_count, &
-        med_write_profile, med_write_field_values
+        med_write_profile, med_write_field_values, med_localization_names, &
+        med_write_localization, med_write_entity_values, med_field_steps, &
+        med_field_part_count, med_field_part_info, med_read_entity_values, med_read_profile
 
     abstract interface
         function abi_version_f() result(v) bind(c)
@@ -271,6 +277,81 @@ module med_file
             real(c_double), intent(in) :: values(*)
             integer(c_int) :: rc
         end function write_field_values_f
+        function loc_name_f(fid, it, name) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            integer(c_int), value :: it
+            character(kind=c_char), intent(out) :: name(*)
+            integer(c_int) :: rc
+        end function loc_name_f
+        function write_loc_f(fid, name, geotype, dim, refcoo, npoints, gscoo, weights) &
+            result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: name(*)
+            integer(c_int), value :: geotype, dim, npoints
+            real(c_double), intent(in) :: refcoo(*), gscoo(*), weights(*)
+            integer(c_int) :: rc
+        end function write_loc_f
+        function write_entity_f(fid, field, numdt, numit, dt, entity, geotype, n, profile, &
+                                localization, values) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*), profile(*), localization(*)
+            integer(c_int), value :: numdt, numit, entity, geotype, n
+            real(c_double), value :: dt
+            real(c_double), intent(in) :: values(*)
+            integer(c_int) :: rc
+        end function write_entity_f
+        function field_name_count_f(fid, field) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int) :: n
+        end function field_name_count_f
+        function step_info_f(fid, field, it, numdt, numit, dt) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int), value :: it
+            integer(c_int), intent(out) :: numdt, numit
+            real(c_double), intent(out) :: dt
+            integer(c_int) :: rc
+        end function step_info_f
+        function part_count_f(fid, field, numdt, numit, entity, geotype) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int), value :: numdt, numit, entity, geotype
+            integer(c_int) :: n
+        end function part_count_f
+        function part_info_f(fid, field, numdt, numit, entity, geotype, it, profile, &
+                             profilesize, localization, npoints) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int), value :: numdt, numit, entity, geotype, it
+            character(kind=c_char), intent(out) :: profile(*), localization(*)
+            integer(c_int), intent(out) :: profilesize, npoints
+            integer(c_int) :: n
+        end function part_info_f
+        function read_entity_f(fid, field, numdt, numit, entity, geotype, profile, capacity, &
+                               values) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*), profile(*)
+            integer(c_int), value :: numdt, numit, entity, geotype, capacity
+            real(c_double), intent(out) :: values(*)
+            integer(c_int) :: rc
+        end function read_entity_f
+        function read_profile_f(fid, name, capacity, numbers) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: name(*)
+            integer(c_int), value :: capacity
+            integer(c_int), intent(out) :: numbers(*)
+            integer(c_int) :: n
+        end function read_profile_f
     end interface
 
     !> The plug-in's entry points, set once by med_load.
@@ -306,6 +387,16 @@ module med_file
         procedure(fid_f), pointer, nopass :: profile_count => null()
         procedure(write_profile_f), pointer, nopass :: write_profile => null()
         procedure(write_field_values_f), pointer, nopass :: write_field_values => null()
+        procedure(fid_f), pointer, nopass :: localization_count => null()
+        procedure(loc_name_f), pointer, nopass :: localization_name => null()
+        procedure(write_loc_f), pointer, nopass :: write_localization => null()
+        procedure(write_entity_f), pointer, nopass :: write_entity_values => null()
+        procedure(field_name_count_f), pointer, nopass :: field_step_count => null()
+        procedure(step_info_f), pointer, nopass :: field_step_info => null()
+        procedure(part_count_f), pointer, nopass :: field_profile_count => null()
+        procedure(part_info_f), pointer, nopass :: field_value_info => null()
+        procedure(read_entity_f), pointer, nopass :: read_entity_values => null()
+        procedure(read_profile_f), pointer, nopass :: read_profile => null()
     end type plugin_t
 
     type(plugin_t), save :: plugin
@@ -465,6 +556,36 @@ contains
         call find_symbol(plugin%library, 'parasol_med_write_field_values', a, st)
         if (st%failed()) return
         call c_f_procpointer(a, plugin%write_field_values)
+        call find_symbol(plugin%library, 'parasol_med_localization_count', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%localization_count)
+        call find_symbol(plugin%library, 'parasol_med_localization_name', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%localization_name)
+        call find_symbol(plugin%library, 'parasol_med_write_localization', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%write_localization)
+        call find_symbol(plugin%library, 'parasol_med_write_entity_values', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%write_entity_values)
+        call find_symbol(plugin%library, 'parasol_med_field_step_count', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_step_count)
+        call find_symbol(plugin%library, 'parasol_med_field_step_info', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_step_info)
+        call find_symbol(plugin%library, 'parasol_med_field_profile_count', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_profile_count)
+        call find_symbol(plugin%library, 'parasol_med_field_value_info', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_value_info)
+        call find_symbol(plugin%library, 'parasol_med_read_entity_values', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%read_entity_values)
+        call find_symbol(plugin%library, 'parasol_med_read_profile', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%read_profile)
     end subroutine bind_all
 
     !> True once the plug-in is loaded (a deck without MED never loads it).
@@ -1077,6 +1198,208 @@ contains
         if (rc < 0) call fail(st, file, 'cannot write field ' // field // ' at step ' // &
             to_text(numdt), rc, writing=.true.)
     end subroutine med_write_field_values
+
+    !> The names of the Gauss-point localisations in the file.
+    subroutine med_localization_names(file, names, st)
+        type(med_file_t), intent(in) :: file
+        type(string_t), allocatable, intent(out) :: names(:)
+        type(status_t), intent(out) :: st
+        character(kind=c_char) :: buffer(MED_NAME_LEN + 1)
+        integer(c_int) :: n, rc, k
+        type(fp_state_t) :: fp
+        allocate (names(0))
+        call fp_begin(fp)
+        n = plugin%localization_count(file%fid)
+        call fp_end(fp)
+        if (n < 0) then
+            call fail(st, file, 'cannot count its localisations', n)
+            return
+        end if
+        deallocate (names)
+        allocate (names(n))
+        do k = 1, n
+            call fp_begin(fp)
+            rc = plugin%localization_name(file%fid, k, buffer)
+            call fp_end(fp)
+            if (rc < 0) then
+                call fail(st, file, 'cannot read localisation ' // to_text(int(k, i4)), rc)
+                return
+            end if
+            names(k)%s = buffer_text(buffer, 1, MED_NAME_LEN)
+        end do
+    end subroutine med_localization_names
+
+    !> Writes Gauss-point localisation `name` on reference cells of MED type `geotype`:
+    !> refcoo(dim, nodes) the reference nodes, gscoo(dim, points) the points, their weights.
+    subroutine med_write_localization(file, name, geotype, refcoo, gscoo, weights, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: name
+        integer(i4), intent(in) :: geotype
+        real(dp), intent(in) :: refcoo(:, :), gscoo(:, :), weights(:)
+        type(status_t), intent(out) :: st
+        integer(c_int) :: rc
+        type(fp_state_t) :: fp
+        if (size(gscoo, 1) /= size(refcoo, 1) .or. size(gscoo, 2) /= size(weights)) then
+            call set_error(st, STATUS_IO_ERROR, 'MED file ' // file%path // ': localisation ' &
+                // name // ': inconsistent sizes')
+            return
+        end if
+        call fp_begin(fp)
+        rc = plugin%write_localization(file%fid, name // c_null_char, int(geotype, c_int), &
+            int(size(refcoo, 1), c_int), refcoo, int(size(weights), c_int), gscoo, weights)
+        call fp_end(fp)
+        if (rc < 0) call fail(st, file, 'cannot write localisation ' // name, rc, &
+                              writing=.true.)
+    end subroutine med_write_localization
+
+    !> Writes field values on cells of MED type `geotype`: entity MED_ENTITY_CELL (points of
+    !> localisation `localization`, '' one per cell) or MED_ENTITY_NODE_ELEMENT (the cells'
+    !> nodes); values(components x points, n_cells); profile '' = every cell of the type.
+    subroutine med_write_entity_values(file, field, numdt, numit, dt, entity, geotype, values, &
+                                       profile, localization, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field, profile, localization
+        integer(i4), intent(in) :: numdt, numit, entity, geotype
+        real(dp), intent(in) :: dt
+        real(dp), intent(in) :: values(:, :)
+        type(status_t), intent(out) :: st
+        integer(c_int) :: rc
+        type(fp_state_t) :: fp
+        call fp_begin(fp)
+        rc = plugin%write_entity_values(file%fid, field // c_null_char, int(numdt, c_int), &
+            int(numit, c_int), real(dt, c_double), int(entity, c_int), int(geotype, c_int), &
+            int(size(values, 2), c_int), profile // c_null_char, localization // c_null_char, &
+            values)
+        call fp_end(fp)
+        if (rc < 0) call fail(st, file, 'cannot write field ' // field // ' at step ' // &
+            to_text(numdt) // ' on cells of MED type ' // to_text(geotype), rc, writing=.true.)
+    end subroutine med_write_entity_values
+
+    !> The computation steps of field `field`: numbers and times.
+    subroutine med_field_steps(file, field, numdt, numit, dt, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field
+        integer(i4), allocatable, intent(out) :: numdt(:), numit(:)
+        real(dp), allocatable, intent(out) :: dt(:)
+        type(status_t), intent(out) :: st
+        integer(c_int) :: n, k, rc, a, b
+        real(c_double) :: t
+        type(fp_state_t) :: fp
+        allocate (numdt(0), numit(0), dt(0))
+        call fp_begin(fp)
+        n = plugin%field_step_count(file%fid, field // c_null_char)
+        call fp_end(fp)
+        if (n < 0) then
+            call fail(st, file, 'no field ' // field, n)
+            return
+        end if
+        deallocate (numdt, numit, dt)
+        allocate (numdt(n), numit(n), dt(n))
+        do k = 1, n
+            call fp_begin(fp)
+            rc = plugin%field_step_info(file%fid, field // c_null_char, k, a, b, t)
+            call fp_end(fp)
+            if (rc < 0) then
+                call fail(st, file, 'cannot read step ' // to_text(int(k, i4)) // &
+                    ' of field ' // field, rc)
+                return
+            end if
+            numdt(k) = a
+            numit(k) = b
+            dt(k) = t
+        end do
+    end subroutine med_field_steps
+
+    !> How many (profile, localisation) parts field `field` has at a step on an entity
+    !> (MED_ENTITY_*) and MED cell type (0 for nodes).
+    integer(i4) function med_field_part_count(file, field, numdt, numit, entity, geotype, st) &
+        result(n)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field
+        integer(i4), intent(in) :: numdt, numit, entity, geotype
+        type(status_t), intent(out) :: st
+        type(fp_state_t) :: fp
+        call fp_begin(fp)
+        n = plugin%field_profile_count(file%fid, field // c_null_char, int(numdt, c_int), &
+            int(numit, c_int), int(entity, c_int), int(geotype, c_int))
+        call fp_end(fp)
+        if (n < 0) call fail(st, file, 'cannot count the parts of field ' // field, n)
+    end function med_field_part_count
+
+    !> Part `it` of field `field` at a step on an entity and type: its profile ('' none) and
+    !> localisation names, points per entity and number of entities.
+    subroutine med_field_part_info(file, field, numdt, numit, entity, geotype, it, profile, &
+                                   localization, n_points, n_entities, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field
+        integer(i4), intent(in) :: numdt, numit, entity, geotype, it
+        character(len=:), allocatable, intent(out) :: profile, localization
+        integer(i4), intent(out) :: n_points, n_entities
+        type(status_t), intent(out) :: st
+        character(kind=c_char) :: pbuf(MED_NAME_LEN + 1), lbuf(MED_NAME_LEN + 1)
+        integer(c_int) :: n, size_profile, points
+        type(fp_state_t) :: fp
+        pbuf = c_null_char
+        lbuf = c_null_char
+        call fp_begin(fp)
+        n = plugin%field_value_info(file%fid, field // c_null_char, int(numdt, c_int), &
+            int(numit, c_int), int(entity, c_int), int(geotype, c_int), int(it, c_int), pbuf, &
+            size_profile, lbuf, points)
+        call fp_end(fp)
+        profile = buffer_text(pbuf, 1, MED_NAME_LEN)
+        localization = buffer_text(lbuf, 1, MED_NAME_LEN)
+        if (profile == 'MED_NO_PROFILE_INTERNAL') profile = ''
+        n_points = points
+        n_entities = n
+        if (n < 0) call fail(st, file, 'cannot read part ' // to_text(it) // ' of field ' // &
+            field, n)
+    end subroutine med_field_part_info
+
+    !> Reads the values of part `profile` of field `field` at a step on an entity and type
+    !> into values (entities x points x components, interlaced: the caller sizes it from
+    !> med_field_part_info).
+    subroutine med_read_entity_values(file, field, numdt, numit, entity, geotype, profile, &
+                                      values, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field, profile
+        integer(i4), intent(in) :: numdt, numit, entity, geotype
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: st
+        integer(c_int) :: rc
+        type(fp_state_t) :: fp
+        if (size(values) > huge(1_c_int)) then
+            call too_big(st, file, 'values in field ' // field, int(size(values), i8))
+            return
+        end if
+        call fp_begin(fp)
+        rc = plugin%read_entity_values(file%fid, field // c_null_char, int(numdt, c_int), &
+            int(numit, c_int), int(entity, c_int), int(geotype, c_int), &
+            profile // c_null_char, int(size(values), c_int), values)
+        call fp_end(fp)
+        if (rc < 0) call fail(st, file, 'cannot read the values of field ' // field, rc)
+    end subroutine med_read_entity_values
+
+    !> Reads profile `name`: the entity numbers (at most `capacity`).
+    subroutine med_read_profile(file, name, capacity, numbers, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: name
+        integer(i4), intent(in) :: capacity
+        integer(i4), allocatable, intent(out) :: numbers(:)
+        type(status_t), intent(out) :: st
+        integer(c_int) :: n
+        integer(c_int), allocatable :: buffer(:)
+        type(fp_state_t) :: fp
+        allocate (buffer(max(capacity, 1_i4)))
+        call fp_begin(fp)
+        n = plugin%read_profile(file%fid, name // c_null_char, int(capacity, c_int), buffer)
+        call fp_end(fp)
+        if (n < 0) then
+            allocate (numbers(0))
+            call fail(st, file, 'cannot read profile ' // name, n)
+            return
+        end if
+        numbers = buffer(1:n)
+    end subroutine med_read_profile
 
     ! STATUS_MESH_ERROR "MED file PATH: WHAT (MED error RC)" (reading: the file's contents are
     ! at fault) or STATUS_IO_ERROR (writing).
