@@ -267,6 +267,7 @@ contains
         resu_path = ctx%output_path('.resu')
         if (allocated(opts%export) .and. st%ok()) &
             call apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
+        if (allocated(opts%export) .and. st%failed()) call keep_export_mess(exp, mess_path)
         if (.not. allocated(opts%export)) then
             files = opts%decks
             allocate (file_lines(0))
@@ -435,6 +436,22 @@ contains
         if (exp%time_limit > 0.0_dp) call ctx%deadline%start(exp%time_limit, &
             exp%path // ':' // to_text(int(exp%time_limit_line, i4)) // ' (P time_limit)')
     end subroutine apply_export
+
+    !> An export file that failed its checks still gets its .mess where its F mess line
+    !> puts it, when that line itself is sound (export_result_problem): the error is then
+    !> written where the user looks for it, never lost.
+    subroutine keep_export_mess(exp, mess_path)
+        type(export_t), intent(in) :: exp
+        character(len=:), allocatable, intent(inout) :: mess_path
+        integer :: k
+        if (.not. allocated(exp%entries)) return
+        do k = 1, size(exp%entries)
+            associate (e => exp%entries(k))
+                if (e%folder .or. .not. e%result .or. e%type /= 'mess') cycle
+                if (len(exp%result_problem(k)) == 0) mess_path = e%path
+            end associate
+        end do
+    end subroutine keep_export_mess
 
     !> Records in the .mess each line of the export file and what parasol does with it.
     subroutine describe_export(ctx, exp)

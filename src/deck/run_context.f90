@@ -19,6 +19,7 @@ module run_context
     use atomic_file, only: atomic_file_t
     use deck_ast, only: ast_t
     use deck_value, only: value_t, append_string, VK_CONCEPT
+    use deck_heap, only: heap_t
     use deck_concept, only: concept_t
     use deck_command, only: command_t
     use deck_catalog, only: catalog_t
@@ -137,12 +138,17 @@ module run_context
         integer :: import_depth = 0                !< modules being imported (nested)
         ! ---- loops (doc/deck-language.md, "Loops") ----
         integer :: loop_control = 0                !< 1 break, 2 continue pending
-        type(value_t), allocatable :: loops(:)     !< the list each running for loop walks
-        logical, allocatable :: loop_grown(:)      !< that list was appended to
+        type(value_t), allocatable :: loops(:)     !< the sequence each running loop walks
         integer :: nloop = 0
+        !> The lists and dicts of the deck (deck_heap): shared, as Python's.
+        type(heap_t) :: heap
+        !> print() output not yet ended by a line end (print(..., end=''))
+        character(len=:), allocatable :: print_line
+        !> > 0 while a def, a comprehension or an import runs: their values live on the
+        !> evaluator's stack, so the heap is not collected then
+        integer :: gc_hold = 0
         integer(i8) :: iterations = 0              !< loop iterations in this pass
         integer(i8) :: built = 0                   !< sequence items built in this pass
-        integer(i8) :: next_list = 0               !< identities of lists (append)
         type(deadline_t) :: deadline               !< P time_limit of an export file
         !> Where long work reports its progress (cli's reporter; null: nobody listens).
         !> A pointer, so that handlers can hand it down to the analyses.
@@ -167,6 +173,7 @@ module run_context
         procedure :: count_test => ctx_count_test
         procedure :: set_symbol => ctx_set_symbol
         procedure :: find_symbol => ctx_find_symbol
+        procedure :: delete_symbol => ctx_delete_symbol
         procedure :: own_concept => ctx_own_concept
         procedure :: reset_symbols => ctx_reset_symbols
         procedure :: add_source => ctx_add_source
@@ -232,7 +239,9 @@ contains
         allocate (ctx%unit_numbers(0), ctx%unit_paths(0), ctx%lines(0))
         allocate (ctx%sources(4), ctx%file_scope(0), ctx%stash(0))
         allocate (ctx%module_names(0), ctx%module_paths(0))
-        allocate (ctx%loops(8), ctx%loop_grown(8))
+        allocate (ctx%loops(8))
+        call ctx%heap%reset()
+        ctx%print_line = ''
     end subroutine init_context
 
     !> Registers the handler of command `name` (replacing an earlier one).
@@ -534,6 +543,22 @@ contains
         end do
     end function ctx_find_symbol
 
+    !> Removes deck variable `name` of namespace `scope` (Python's del NAME); false when it
+    !> is not bound.
+    logical function ctx_delete_symbol(self, name, scope) result(found)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: scope
+        integer :: k, j
+        k = self%find_symbol(name, scope)
+        found = k > 0
+        if (.not. found) return
+        do j = k, self%nsymbol - 1
+            self%symbols(j) = self%symbols(j + 1)
+        end do
+        self%nsymbol = self%nsymbol - 1
+    end function ctx_delete_symbol
+
     !> Takes ownership of a concept (moved, not copied) and returns a stable pointer to it.
     subroutine ctx_own_concept(self, obj, ptr, st)
         class(run_context_t), intent(inout) :: self
@@ -578,6 +603,9 @@ contains
         self%nloop = 0
         self%iterations = 0
         self%built = 0
+        self%gc_hold = 0
+        call self%heap%reset()
+        self%print_line = ''
         do k = 1, self%nsource
             self%sources(k)%state = 0
         end do
