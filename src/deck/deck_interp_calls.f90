@@ -685,6 +685,9 @@ contains
         run_it = h > 0
         if (ctx%checking .and. h > 0) run_it = ctx%handlers(h)%at_check .and. &
             .not. holds_unknown(kwargs)
+        ctx%has_plain_result = .false.
+        if (allocated(ctx%produced)) deallocate (ctx%produced)
+        allocate (ctx%produced(0))
         if (.not. ctx%checking) then
             call echo_statement(ctx, cmd%name, line)
             if (h == 0) then
@@ -704,7 +707,8 @@ contains
                     return
                 end if
             end block
-        else if (len(cmd%result_type) > 0 .and. .not. associated(cmd%reuse)) then
+        else if (len(cmd%result_type) > 0 .and. .not. associated(cmd%reuse) .and. &
+                 cmd%result_type /= 'entier') then
             allocate (placeholder_concept_t :: result)
             select type (result)
             type is (placeholder_concept_t)
@@ -713,6 +717,17 @@ contains
         end if
         ctx%ncommand = ctx%ncommand + 1
         if (cmd%name == 'FIN') ctx%finished = .true.
+        call bind_outputs(st)
+        if (st%failed()) return
+        if (cmd%result_type == 'entier') then
+            ! a plain value (DEFI_FICHIER's free unit), None when the command gave none;
+            ! in the check pass, when the handler does not run, known when the deck runs
+            v%kind = VK_NONE
+            if (ctx%checking .and. .not. run_it) v%kind = VK_UNKNOWN
+            if (ctx%has_plain_result) v = ctx%plain_result
+            ctx%has_plain_result = .false.
+            return
+        end if
         if (.not. allocated(result) .and. associated(cmd%reuse)) then
             ! reuse=X: the command modified X in place; the result is X itself (as in
             ! Code_Aster, where the command's result is the reused object)
@@ -737,6 +752,41 @@ contains
         v%s = ptr%type_name()
         v%line = line; v%col = col
         call ctx%write_mess('    -> ' // ptr%summary())
+    contains
+        !> The CO('NAME') outputs of the command: made by its handler (ctx%produce), or, in
+        !> the check pass when it does not run, placeholders of a type known when it runs.
+        subroutine bind_outputs(bst)
+            type(status_t), intent(inout) :: bst
+            class(concept_t), allocatable :: stand_in
+            integer :: j
+            if (.not. allocated(kwargs%tree)) return
+            do j = 1, size(kwargs%tree)
+                if (kwargs%tree(j)%kind /= VK_CO) cycle
+                if (ctx%checking .and. .not. run_it) then
+                    allocate (placeholder_concept_t :: stand_in)
+                    select type (stand_in)
+                    type is (placeholder_concept_t)
+                        stand_in%kind_name = 'unknown'
+                    end select
+                    call ctx%produce(kwargs%tree(j)%s, stand_in, bst)
+                    if (bst%failed()) return
+                else if (.not. produced(kwargs%tree(j)%s)) then
+                    call set_error(bst, STATUS_INTERNAL, cmd%name // ' did not make the ' // &
+                        'concept ' // kwargs%tree(j)%s // ' it was asked for with CO(''' // &
+                        kwargs%tree(j)%s // ''')', file=file, line=kwargs%tree(j)%line, &
+                        column=kwargs%tree(j)%col)
+                    return
+                end if
+            end do
+        end subroutine bind_outputs
+        logical function produced(name)
+            character(len=*), intent(in) :: name
+            integer :: j
+            produced = .false.
+            do j = 1, size(ctx%produced)
+                if (ctx%produced(j)%s == name) produced = .true.
+            end do
+        end function produced
     end subroutine run_command
 
     !> Writes the statement being evaluated to the .mess once, with its line numbers.

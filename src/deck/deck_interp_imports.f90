@@ -47,9 +47,8 @@ contains
         module = ctx%ast%nodes(id)%text
         if (module == 'math') then
             call from_math()
-        else if (module == 'code_aster.Commands' .or. module == 'code_aster.Cata.Syntax' &
-                 .or. module == 'code_aster.Cata.Commands' .or. module == 'Accas' .or. &
-                 module == 'Cata.cata') then
+        else if (module == 'code_aster.Commands' .or. module == 'code_aster.Cata.Commands' &
+                 .or. module == 'Accas' .or. module == 'Cata.cata') then
             call from_commands()
         else if (module == 'code_aster' .or. index(module, 'code_aster.') == 1 .or. &
                  foreign(module)) then

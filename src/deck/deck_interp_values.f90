@@ -293,6 +293,8 @@ contains
             text = '<method ' // v%s // '>'
         case (VK_UNKNOWN)
             text = '<known when the deck runs>'
+        case (VK_CO)
+            text = "CO('" // v%s // "')"
         case default
             text = '?'
         end select

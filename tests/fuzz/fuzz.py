@@ -231,6 +231,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                            "python_language.comm")},
                       [], comm_targets, 1.0))
+    # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
+    seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                            "session_commands.comm")},
+                      [], comm_targets, 0.5))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
