@@ -222,6 +222,14 @@ def make_seeds(parasol, work, wanted):
     # Functions by points: CALC_FONCTION's operations, TEST_FONCTION, IMPR_FONCTION.
     seeds.append(Seed("functions", {"case.comm": os.path.join(tables, "functions.comm")},
                       [], comm_targets, 1.0))
+    # POST_RELEVE_T on formula fields of the annulus, and on SSNL130's reactions.
+    seeds.append(Seed("post_releve", {"case.comm": os.path.join(tables, "post_releve.comm"),
+                                      "case.mail": os.path.join(tables, "annulus.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 1.0))
+    seeds.append(Seed("post_releve_ssnl130",
+                      {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
+                       "case.mail": meshes[("a", "aster")]}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
