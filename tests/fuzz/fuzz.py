@@ -264,6 +264,9 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
                        "case.mail": meshes[("a", "aster")]}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
+    seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
+                      [], comm_targets, 0.8))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
