@@ -29,6 +29,7 @@ module command_registration
     use lire_table_command, only: run_lire_table
     use recu_fonction_command, only: run_recu_fonction
     use calc_fonction_command, only: run_calc_fonction
+    use post_releve_command, only: run_post_releve_t
     use test_fonction_command, only: run_test_fonction
     use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
@@ -82,6 +83,7 @@ contains
         call ctx%register('LIRE_TABLE', run_lire_table)
         call ctx%register('RECU_FONCTION', run_recu_fonction)
         call ctx%register('CALC_FONCTION', run_calc_fonction)
+        call ctx%register('POST_RELEVE_T', run_post_releve_t)
         call ctx%register('TEST_FONCTION', run_test_fonction)
         call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)
