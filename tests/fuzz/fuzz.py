@@ -234,6 +234,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                            "python_language.comm")},
                       [], comm_targets, 1.0))
+    # Code_Aster's CA.TestCase: every assert, passing and failing.
+    seeds.append(Seed("testcase", {"case.comm": os.path.join(SOURCE, "tests", "decks", "python",
+                                                             "testcase_asserts.comm")},
+                      [], comm_targets, 0.4))
     # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
     seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                             "session_commands.comm")},
