@@ -35,6 +35,7 @@ module command_registration
     use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
     use impr_table_command, only: run_impr_table
+    use table_methods, only: register_table_methods
     implicit none
     private
     public :: register_commands
@@ -90,6 +91,8 @@ contains
         call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)
         call ctx%register('IMPR_TABLE', run_impr_table)
+        ! the Python side of tables: TAB['DX', 1], TAB.EXTR_TABLE(), tab.DY[0] (table_methods)
+        call register_table_methods(ctx)
     end subroutine register_commands
 
 end module command_registration

@@ -242,6 +242,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                            "python_language.comm")},
                       [], comm_targets, 1.0))
+    # Code_Aster's CA.TestCase: every assert, passing and failing.
+    seeds.append(Seed("testcase", {"case.comm": os.path.join(SOURCE, "tests", "decks", "python",
+                                                             "testcase_asserts.comm")},
+                      [], comm_targets, 0.4))
     # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
     seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                             "session_commands.comm")},
@@ -272,6 +276,9 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
                        "case.mail": meshes[("a", "aster")]}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
+    seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
+                      [], comm_targets, 0.8))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
