@@ -8,6 +8,7 @@
 !>                                one cell per line: name node... (Code_Aster's node order)
 !>   GROUP_NO | GROUP_MA          name (`NOM=NAME` on the header line, or first token of the
 !>                                next line), then member names over any number of lines
+!>                                (the name's own line included: `P1 P1`)
 !> `%` starts a comment; blanks and commas separate tokens; other `KEY=VALUE` tokens on a
 !> header line (NBOBJ=, AUTEUR=, ...) are accepted and ignored. Names must be defined
 !> before they are used (nodes before cells, cells before groups), as every mesher does.
@@ -266,18 +267,20 @@ contains
     end subroutine read_cells
 
     ! GROUP_NO / GROUP_MA: name from NOM= on the header line or first token of the next
-    ! line, then member names until FINSF.
+    ! line, then member names (the rest of the name's line included) until FINSF.
     subroutine read_group(lex, mesh, of_nodes, st)
         type(text_lexer_t), intent(inout) :: lex
         type(mesh_t), intent(inout) :: mesh
         logical, intent(in) :: of_nodes
         type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: name, message
+        character(len=:), allocatable :: name
         integer(i4), allocatable :: members(:)
-        integer(i4) :: first, last, n, header_line, k
+        integer(i4) :: first, last, n, header_line
         header_line = lex%line
         name = header_name(lex)
         call next_line(lex)
+        allocate (members(64))
+        n = 0
         if (len(name) == 0) then
             if (at_finsf(lex, first, last)) then
                 call set_error(st, STATUS_MESH_ERROR, 'group without a name', &
@@ -286,10 +289,13 @@ contains
             end if
             name = lex%text(first:last)
             header_line = lex%line
+            ! members may follow the name on its line (`P1 P1`: Code_Aster reads the
+            ! sub-file as a stream of names, the first one naming the group)
+            call next_token(lex, first, last)
+            call add_members(lex, mesh, of_nodes, name, first, last, members, n, st)
+            if (st%failed()) return
             call next_line(lex)
         end if
-        allocate (members(64))
-        n = 0
         do while (.not. at_end(lex))
             if (at_finsf(lex, first, last)) then
                 if (of_nodes) then
@@ -299,33 +305,49 @@ contains
                 end if
                 return
             end if
-            do while (first > 0)
-                if (n == size(members)) members = [members, members]
-                n = n + 1
-                if (of_nodes) then
-                    k = name_find(mesh%node_names, lex%text(first:last))
-                else
-                    k = name_find(mesh%cell_names, lex%text(first:last))
-                end if
-                if (k == 0) then
-                    if (of_nodes) then
-                        message = not_found_message(mesh, mesh%node_names, ENTITY_NODE, &
-                                                    lex%text(first:last))
-                    else
-                        message = not_found_message(mesh, mesh%cell_names, ENTITY_CELL, &
-                                                    lex%text(first:last))
-                    end if
-                    call set_error(st, STATUS_MESH_ERROR, trim(merge('GROUP_NO', 'GROUP_MA', &
-                        of_nodes)) // ' ' // name // ': ' // message, file=mesh%file, line=lex%line)
-                    return
-                end if
-                members(n) = k
-                call next_token(lex, first, last)
-            end do
+            call add_members(lex, mesh, of_nodes, name, first, last, members, n, st)
+            if (st%failed()) return
             call next_line(lex)
         end do
         call missing_finsf(lex, mesh, st)
     end subroutine read_group
+
+    ! The member names from token (first, last) to the end of the line, appended to
+    ! members(1:n) (grown as needed); an unknown name is an error at its line.
+    subroutine add_members(lex, mesh, of_nodes, name, first, last, members, n, st)
+        type(text_lexer_t), intent(inout) :: lex
+        type(mesh_t), intent(in) :: mesh
+        logical, intent(in) :: of_nodes
+        character(len=*), intent(in) :: name
+        integer(i4), intent(inout) :: first, last, n
+        integer(i4), allocatable, intent(inout) :: members(:)
+        type(status_t), intent(inout) :: st
+        character(len=:), allocatable :: message
+        integer(i4) :: k
+        do while (first > 0)
+            if (n == size(members)) members = [members, members]
+            n = n + 1
+            if (of_nodes) then
+                k = name_find(mesh%node_names, lex%text(first:last))
+            else
+                k = name_find(mesh%cell_names, lex%text(first:last))
+            end if
+            if (k == 0) then
+                if (of_nodes) then
+                    message = not_found_message(mesh, mesh%node_names, ENTITY_NODE, &
+                                                lex%text(first:last))
+                else
+                    message = not_found_message(mesh, mesh%cell_names, ENTITY_CELL, &
+                                                lex%text(first:last))
+                end if
+                call set_error(st, STATUS_MESH_ERROR, trim(merge('GROUP_NO', 'GROUP_MA', &
+                    of_nodes)) // ' ' // name // ': ' // message, file=mesh%file, line=lex%line)
+                return
+            end if
+            members(n) = k
+            call next_token(lex, first, last)
+        end do
+    end subroutine add_members
 
     ! Name given as NOM=NAME (or NOM= NAME) on the rest of the header line, else ''.
     function header_name(lex) result(name)
