@@ -24,7 +24,8 @@ module assembly_system
         expand_plate_blocks, plate_section_blocks
     use model_plate_section, only: plate_section_t, plate_section, plate_section_material
     use assembly_plate_section, only: plate_cell_section
-    use element_plane, only: plane_elasticity_matrix, plane_stiffness
+    use element_plane, only: plane_stiffness, plane_law_t
+    use assembly_plane_law, only: plane_cell_law
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness, discrete_local_matrix, &
         discrete_rotate_to_global, plane_rotation, segment_rotation, segment_rotation_2d, &
@@ -122,7 +123,7 @@ module assembly_system
 contains
 
     !> Checks that every modelled cell has what its element needs: ELAS (plates, plane
-    !> solids; plates also ELAS_FO, ELAS_COQUE, laminates), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC and DIS_CONTACT
+    !> solids; plates also ELAS_FO, ELAS_COQUE, laminates; plane solids ELAS_ORTH), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC and DIS_CONTACT
     !> springs; SEG2 only).
     !>  st : out, STATUS_MODEL_ERROR naming the cell (and its group when given), or
     !>       STATUS_NOT_IMPLEMENTED for a contact law on a POI1 or with COULOMB
@@ -143,6 +144,9 @@ contains
                 else if (is_plate(kind) .and. &
                          plate_section_material(s%materials%materials(m))) then
                     what = ''                  ! ELAS_COQUE, laminates (model_plate_section)
+                else if (is_plane_solid(kind) .and. .not. s%materials%materials(m)%has_elas &
+                         .and. elastic_behaviour(s%materials%materials(m)) == 'ELAS_ORTH') then
+                    what = ''                  ! orthotropic plane law (assembly_plane_law)
                 else if (.not. s%materials%materials(m)%has_elas) then
                     what = 'no ELAS in its material'
                     law = elastic_behaviour(s%materials%materials(m))
@@ -452,7 +456,8 @@ contains
         type(assembly_map_t), intent(in), optional :: map
         type(contact_history_t), intent(in), optional :: history
         integer(i4) :: kind, m, nn, p0
-        real(dp) :: x(3, MAX_CELL_NODES), x2(2, MAX_CELL_NODES), d3(3, 3), ud(MAX_ELEMENT_DOFS)
+        real(dp) :: x(3, MAX_CELL_NODES), x2(2, MAX_CELL_NODES), ud(MAX_ELEMENT_DOFS)
+        type(plane_law_t) :: law
         real(dp) :: rot(3, 3), xy(2, 4), k18(18, 18), k24(24, 24)
         kind = s%model%element(c)
         p0 = s%mesh%cell_ptr(c)
@@ -480,17 +485,15 @@ contains
                     plate_deformation(x(:, 1:nn), nn, ue), fe)
             end if
         else if (is_plane_solid(kind)) then
-            associate (e => s%materials%materials(m)%elas)
-                x2(:, 1:nn) = x(1:2, 1:nn)
-                call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(kind), d3, st)
-                if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), d3, ke, st)
-                if (.not. want_matrix .and. st%ok()) then
-                    ! the deformation in a variable of its own: matmul of a function result,
-                    ! inlined by the front end, read an uninitialised temporary (valgrind)
-                    call remove_plane_rigid_motion(x2(:, 1:nn), nn, ue, ud(1:n))
-                    fe = matmul(ke, ud(1:n))
-                end if
-            end associate
+            x2(:, 1:nn) = x(1:2, 1:nn)
+            call plane_cell_law(s%mesh, s%model, s%materials, s%cara, c, law, st)
+            if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), law%d3, ke, st)
+            if (.not. want_matrix .and. st%ok()) then
+                ! the deformation in a variable of its own: matmul of a function result,
+                ! inlined by the front end, read an uninitialised temporary (valgrind)
+                call remove_plane_rigid_motion(x2(:, 1:nn), nn, ue, ud(1:n))
+                fe = matmul(ke, ud(1:n))
+            end if
         else if (is_dis_contact(s, c)) then
             call dis_contact_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st, map, &
                 history)
@@ -1458,37 +1461,34 @@ contains
         integer(i4), intent(in) :: c, i
         type(linear_cache_t), intent(inout) :: cache
         type(status_t), intent(out) :: st
-        integer(i4) :: m, nn
+        integer(i4) :: nn
         integer(i8) :: p, q
-        real(dp) :: x2(2, MAX_CELL_NODES), d3(3, 3), kp(2 * MAX_CELL_NODES, 2 * MAX_CELL_NODES)
+        real(dp) :: x2(2, MAX_CELL_NODES), kp(2 * MAX_CELL_NODES, 2 * MAX_CELL_NODES)
         type(plate_section_t) :: sec
-        m = material_of_cell(s%materials, c)
+        type(plane_law_t) :: law
         nn = cache%nn(i)
         p = cache%k_ptr(i)
         q = cache%k_ptr(i + 1) - 1
-        associate (e => s%materials%materials(m)%elas)
-            if (cache%plate(i)) then
-                call plate_local_frame(cache%x(:, 1:nn, i), nn, cache%rot(:, :, i), &
-                    cache%xy(:, 1:nn, i), st)
-                if (st%ok()) call plate_cell_section(s%mesh, s%materials, s%cara, c, &
-                    cache%rot(:, :, i), sec, st)
-                if (st%failed()) return
-                if (sec%isotropic .and. .not. sec%coupled) then
-                    call plate_local_blocks(cache%xy(:, 1:nn, i), nn, sec%young, sec%nu, &
-                        sec%thickness, s%cara%coef_rigi_drz(c), cache%k(p:q), st)
-                else
-                    call plate_section_blocks(cache%xy(:, 1:nn, i), nn, sec%dm, sec%dmf, &
-                        sec%df, s%cara%coef_rigi_drz(c), cache%k(p:q), st)
-                end if
+        if (cache%plate(i)) then
+            call plate_local_frame(cache%x(:, 1:nn, i), nn, cache%rot(:, :, i), &
+                cache%xy(:, 1:nn, i), st)
+            if (st%ok()) call plate_cell_section(s%mesh, s%materials, s%cara, c, &
+                cache%rot(:, :, i), sec, st)
+            if (st%failed()) return
+            if (sec%isotropic .and. .not. sec%coupled) then
+                call plate_local_blocks(cache%xy(:, 1:nn, i), nn, sec%young, sec%nu, &
+                    sec%thickness, s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             else
-                x2(:, 1:nn) = cache%x(1:2, 1:nn, i)    ! contiguous copy: no array temporary
-                call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(s%model%element(c)), &
-                    d3, st)
-                if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), d3, &
-                    kp(1:2 * nn, 1:2 * nn), st)
-                cache%k(p:q) = reshape(kp(1:2 * nn, 1:2 * nn), [4 * nn * nn])
+                call plate_section_blocks(cache%xy(:, 1:nn, i), nn, sec%dm, sec%dmf, &
+                    sec%df, s%cara%coef_rigi_drz(c), cache%k(p:q), st)
             end if
-        end associate
+        else
+            x2(:, 1:nn) = cache%x(1:2, 1:nn, i)    ! contiguous copy: no array temporary
+            call plane_cell_law(s%mesh, s%model, s%materials, s%cara, c, law, st)
+            if (st%ok()) call plane_stiffness(s%mesh%cell_type(c), x2(:, 1:nn), law%d3, &
+                kp(1:2 * nn, 1:2 * nn), st)
+            cache%k(p:q) = reshape(kp(1:2 * nn, 1:2 * nn), [4 * nn * nn])
+        end if
     end subroutine cache_cell_matrix
 
     !> flin <- flin + K_lin du from the cached matrices, cell by cell in the order of

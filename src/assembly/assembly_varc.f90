@@ -19,15 +19,15 @@ module assembly_varc
     use mesh_types, only: mesh_t, cell_label, CELL_TYPE_NODES, MAX_CELL_NODES, CELL_TRIA3, &
         CELL_QUAD4
     use mesh_cell_shapes, only: cell_shape
-    use model_types, only: model_t, is_plate, is_plane_solid, is_plane_strain, ELEMENT_NAMES
-    use model_material, only: material_field_t, material_of_cell
+    use model_types, only: model_t, is_plate, is_plane_solid, ELEMENT_NAMES
+    use model_material, only: material_field_t, material_t, material_of_cell, behaviour_number
     use model_cara_elem, only: cara_elem_t
     use model_varc, only: cell_temperature_t, varc_cell_temperature, varc_has_any, &
         TEMP_NONE, TEMP_UNIFORM, TEMP_PROFILE, TEMP_SUBPOINTS
     use model_thermal, only: thermal_strain, has_thermal_expansion
     use element_gauss_families, only: gauss_rule_t
-    use element_plane, only: plane_law_t, plane_law_isotropic, plane_rigi_rule, &
-        plane_initial_strain_forces
+    use element_plane, only: plane_law_t, plane_rigi_rule, plane_initial_strain_forces
+    use assembly_plane_law, only: plane_cell_law
     use element_plate_initial_strains, only: plate_rigi_rule, plate_layer_points, &
         plate_initial_strain_forces
     use assembly_system, only: structure_t, element_equations, MAX_ELEMENT_DOFS
@@ -55,6 +55,7 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: c, kind, m, n, j, eqs(MAX_ELEMENT_DOFS)
         real(dp) :: fe(MAX_ELEMENT_DOFS)
+        logical :: orthotropic
         if (.not. varc_has_any(s%materials%varc)) return
         do c = 1, s%mesh%n_cells
             if (s%materials%varc%cell_source(c) == 0) cycle
@@ -62,6 +63,15 @@ contains
             if (.not. (is_plate(kind) .or. is_plane_solid(kind))) cycle
             m = material_of_cell(s%materials, c)
             if (m == 0) cycle
+            orthotropic = .false.
+            if (is_plane_solid(kind)) orthotropic = &
+                orthotropic_expansion(s%materials%materials(m))
+            if (orthotropic) then
+                call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c) // ': the ' &
+                    // 'thermal strains of ELAS_ORTH (ALPHA_L, ALPHA_T, ALPHA_N) are not ' // &
+                    'built; its temperature would be ignored')
+                return
+            end if
             if (.not. has_thermal_expansion(s%materials%materials(m))) cycle
             call element_equations(s, c, eqs, n)
             if (is_plane_solid(kind)) then
@@ -75,6 +85,20 @@ contains
             end do
         end do
     end subroutine add_varc_forces
+
+    ! True when the material's ELAS_ORTH gives a thermal expansion (an ALPHA_* not zero).
+    logical function orthotropic_expansion(mat)
+        type(material_t), intent(in) :: mat
+        character(len=7), parameter :: KEYS(3) = ['ALPHA_L', 'ALPHA_T', 'ALPHA_N']
+        real(dp) :: a
+        logical :: found
+        integer(i4) :: k
+        orthotropic_expansion = .false.
+        do k = 1, 3
+            call behaviour_number(mat, 'ELAS_ORTH', KEYS(k), a, found)
+            if (found .and. abs(a) > 0.0_dp) orthotropic_expansion = .true.
+        end do
+    end function orthotropic_expansion
 
     !> Thermal strains (xx, yy, zz, xy engineering) at the points of `rule` on plane cell c
     !> at instant t; all zero (and has = .false.) without a temperature or ALPHA.
@@ -125,7 +149,7 @@ contains
         type(gauss_rule_t) :: rule
         type(plane_law_t) :: law
         real(dp), allocatable :: eps(:, :), xy(:, :)
-        integer(i4) :: m, nn, p0
+        integer(i4) :: nn, p0
         logical :: has
         fe = 0.0_dp
         call plane_rigi_rule(s%mesh%cell_type(c), rule, st)
@@ -133,11 +157,11 @@ contains
         allocate (eps(4, rule%n))
         call plane_thermal_strains(s%mesh, s%model, s%materials, c, t, rule, eps, has, st)
         if (st%failed() .or. .not. has) return
-        m = material_of_cell(s%materials, c)
-        associate (e => s%materials%materials(m)%elas)
-            call plane_law_isotropic(e%e, e%nu, is_plane_strain(s%model%element(c)), law, st)
-        end associate
-        if (st%failed()) return
+        call plane_cell_law(s%mesh, s%model, s%materials, s%cara, c, law, st)
+        if (st%failed()) then
+            call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // st%message)
+            return
+        end if
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
         xy = s%mesh%coords(1:2, s%mesh%cell_nodes(p0:p0 + nn - 1))

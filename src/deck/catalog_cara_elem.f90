@@ -45,6 +45,17 @@ contains
         call c%key('CARA', 'TXM', req=.true., into='ANGL_VRIL VECT_Y ANGL_NAUT')
         call c%key('VALE', 'R', max=3, req=.true., vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
         call c%end_fact()
+        ! MASSIF: the material frame of solid (here plane) elements, Code_Aster's catalog
+        ! less TOUT and CHAM_ORIE (a field of frames, not built)
+        call c%fact('MASSIF', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('ANGL_REP', 'R', min=1, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ANGL_EULER', 'R', min=1, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ANGL_AXE', 'R', min=2, max=2, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ORIG_AXE', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%rule(RULE_UN_PARMI, 'ANGL_REP ORIG_AXE ANGL_EULER')
+        call c%rule(RULE_PRESENT_PRESENT, 'ANGL_AXE ORIG_AXE')
+        call c%end_fact()
         call c%fact('RIGI_PARASOL', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('GROUP_MA_SEG2', 'TXM', max=MANY)
@@ -63,7 +74,8 @@ contains
         call c%rule(RULE_UN_PARMI, 'COEF_GROUP FONC_GROUP')
         call c%rule(RULE_EXCLUS, 'GROUP_NO_CENTRE NOEUD_CENTRE COOR_CENTRE')
         call c%end_fact()
-        call c%rule(RULE_AU_MOINS_UN, 'COQUE DISCRET DISCRET_2D ORIENTATION RIGI_PARASOL')
+        call c%rule(RULE_AU_MOINS_UN, 'COQUE DISCRET DISCRET_2D ORIENTATION MASSIF ' // &
+                    'RIGI_PARASOL')
         call c%rule(RULE_EXCLUS, 'DISCRET DISCRET_2D')
     end subroutine describe_cara_elem
 

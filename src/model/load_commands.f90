@@ -112,7 +112,8 @@ contains
         type is (model_concept_t)
             do i = 1, cmd%count('MECA_IMPO')
                 call node_item(cmd%occurrence('MECA_IMPO', i), p, LOAD_DDL_IMPO, &
-                    ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
+                    ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st, &
+                    skip_absent=.true.)
                 if (st%failed()) return
             end do
         class default
@@ -221,7 +222,10 @@ contains
 
     !> DDL_IMPO / FORCE_NODALE occurrence: the nodes of TOUT, GROUP_NO, GROUP_MA and NOEUD
     !> less SANS_GROUP_MA and SANS_GROUP_NO (relation_commands select_nodes).
-    subroutine node_item(occ, mc, kind, keys, functions, loads, st)
+    !>  skip_absent : in, optional, AFFE_CHAR_CINE's MECA_IMPO: a component a node does not
+    !>                have is passed over on it (Code_Aster's charci imposes the components
+    !>                of the field that exist), as long as the occurrence imposes something
+    subroutine node_item(occ, mc, kind, keys, functions, loads, st, skip_absent)
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
         integer(i4), intent(in) :: kind
@@ -229,22 +233,40 @@ contains
         logical, intent(in) :: functions
         type(load_set_t), intent(inout) :: loads
         type(status_t), intent(out) :: st
+        logical, intent(in), optional :: skip_absent
         integer(i4), allocatable :: nodes(:)
         integer(i4) :: k, index
         character(len=:), allocatable :: label
+        logical :: lenient, imposes
+        lenient = .false.
+        if (present(skip_absent)) lenient = skip_absent
         call select_nodes(occ, mc, nodes, label, st)
         if (st%failed()) return
         if (any([(occ%has(trim(keys(k))), k = 1, size(keys))])) then
             call load_add_item(loads, kind, nodes, index, label)
             call locate_item(occ, loads, index)
+            loads%items(index)%blocage = lenient       ! skip the absent components
+            imposes = .false.
             do k = 1, size(keys)
                 call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
                 if (st%failed()) return
-                if (occ%has(trim(keys(k)))) then
+                if (.not. occ%has(trim(keys(k)))) cycle
+                if (lenient) then
+                    imposes = imposes .or. any(mc%dofs%equation(k, nodes) /= 0)
+                else
                     call check_component(occ, mc, nodes, trim(keys(k)), k, st)
                     if (st%failed()) return
                 end if
             end do
+            if (lenient .and. .not. imposes) then
+                do k = 1, size(keys)
+                    if (occ%has(trim(keys(k)))) exit
+                end do
+                call occ%error_at(trim(keys(k)), 'imposes nothing: none of the ' // &
+                    to_text(size(nodes, kind=i4)) // ' node(s) has any of its components ' // &
+                    'in the model', st, code=STATUS_MODEL_ERROR)
+                return
+            end if
         end if
         if (occ%has('BLOCAGE')) call blocage_item(occ, mc, nodes, label, keys, loads, st)
     end subroutine node_item

@@ -52,11 +52,23 @@ module model_cara_elem
         integer(i4), allocatable :: discrete_matrix(:)
         type(discrete_matrix_t), allocatable :: matrices(:)   !< one per DISCRET occurrence
         integer(i4) :: n_matrices = 0
+        !> MASSIF: the material frame of plane cells (MASSIF_*): an angle, or the radial
+        !> direction from an axis through massif_origin (ORIG_AXE)
+        integer(i4), allocatable :: massif_frame(:)
+        real(dp), allocatable :: massif_alpha(:)       !< (n_cells) L from global X, radians
+        real(dp), allocatable :: massif_origin(:, :)   !< (2, n_cells) ORIG_AXE
     end type cara_elem_t
+
+    !> The material frame of a plane cell (AFFE_CARA_ELEM MASSIF, Code_Aster's aceama and
+    !> rcangm in 2D): none (the global frame), L turned by an angle about Z (ANGL_REP, or
+    !> the L axis of ANGL_EULER), or L along the radius from an axis along Z through a point
+    !> (ORIG_AXE) to the cell's centre (the mean of its nodes).
+    integer(i4), parameter, public :: MASSIF_NONE = 0, MASSIF_ANGLE = 1, MASSIF_AXIS = 2
 
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
         discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
-        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix
+        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix, &
+        assign_massif, material_axis_angle
 
 contains
 
@@ -79,7 +91,63 @@ contains
         allocate (cara%orientation_values(3, n), source=0.0_dp)
         allocate (cara%discrete_matrix(n), source=0_i4)
         allocate (cara%matrices(4))
+        allocate (cara%massif_frame(n), source=MASSIF_NONE)
+        allocate (cara%massif_alpha(n), source=0.0_dp)
+        allocate (cara%massif_origin(2, n), source=0.0_dp)
     end subroutine cara_elem_init
+
+    !> MASSIF: the material frame of plane cells (module constants MASSIF_*).
+    !>  frame  : in, MASSIF_ANGLE or MASSIF_AXIS
+    !>  alpha  : in, the angle of L from global X (radians; MASSIF_ANGLE)
+    !>  origin : in, a point of the axis (MASSIF_AXIS)
+    subroutine assign_massif(cara, cells, frame, alpha, origin)
+        type(cara_elem_t), intent(inout) :: cara
+        integer(i4), intent(in) :: cells(:), frame
+        real(dp), intent(in) :: alpha, origin(2)
+        integer(i4) :: i
+        cara%massif_frame(cells) = frame
+        cara%massif_alpha(cells) = alpha
+        do i = 1, size(cells)
+            cara%massif_origin(:, cells(i)) = origin
+        end do
+    end subroutine assign_massif
+
+    !> The angle (radians) of the material axis L of plane cell c from global X: 0 without
+    !> MASSIF, its ANGL_REP / ANGL_EULER angle, or the direction from the ORIG_AXE axis to
+    !> the mean of the cell's nodes (Code_Aster's getElemOrientation, rcangm).
+    !>  st : out, STATUS_MODEL_ERROR when the cell's centre is on the ORIG_AXE axis (no
+    !>       radial direction); the caller names the cell
+    subroutine material_axis_angle(mesh, cara, c, alpha, st)
+        type(mesh_t), intent(in) :: mesh
+        type(cara_elem_t), intent(in) :: cara
+        integer(i4), intent(in) :: c
+        real(dp), intent(out) :: alpha
+        type(status_t), intent(out) :: st
+        real(dp) :: centre(2), r(2), size2
+        integer(i4) :: p
+        alpha = 0.0_dp
+        select case (cara%massif_frame(c))
+        case (MASSIF_ANGLE)
+            alpha = cara%massif_alpha(c)
+        case (MASSIF_AXIS)
+            centre = 0.0_dp
+            size2 = 0.0_dp
+            do p = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
+                centre = centre + mesh%coords(1:2, mesh%cell_nodes(p))
+            end do
+            centre = centre / real(mesh%cell_ptr(c + 1) - mesh%cell_ptr(c), dp)
+            do p = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
+                size2 = max(size2, sum((mesh%coords(1:2, mesh%cell_nodes(p)) - centre)**2))
+            end do
+            r = centre - cara%massif_origin(:, c)
+            if (.not. sum(r**2) > 1.0e-24_dp * size2) then
+                call set_error(st, STATUS_MODEL_ERROR, 'MASSIF ORIG_AXE: the axis goes ' // &
+                    'through the centre of the cell, which then has no radial direction')
+                return
+            end if
+            alpha = atan2(r(2), r(1))
+        end select
+    end subroutine material_axis_angle
 
     !> COQUE: thickness (and drilling coefficient) of plate cells.
     !>  cells : in, cells of the occurrence; each must carry a DKT/DKQ element

@@ -132,7 +132,8 @@ contains
     !> Checks every modelled cell has the data its element needs: plates and plane solids
     !> need ELAS with E > 0 and -1 < NU < 0.5 (plates also take ELAS_FO, ELAS_COQUE,
     !> ELAS_COQUE_FO and DEFI_COMPOSITE laminates, model_plate_section; ELAS_ORTH straight
-    !> on a plate is refused); discretes and load edges need nothing (ELAS on springs is
+    !> on a plate is refused; plane solids take ELAS_ORTH, assembly_plane_law); discretes
+    !> and load edges need nothing (ELAS on springs is
     !> accepted and unused, as in Code_Aster).
     !>  st : out, STATUS_MODEL_ERROR naming the first cell (and its group) that lacks data;
     !>       STATUS_NOT_IMPLEMENTED when its material gives another elastic behaviour
@@ -155,6 +156,9 @@ contains
             end if
             associate (mat => field%materials(m))
                 if (is_plate(model%element(c)) .and. plate_elasticity(mat)) cycle
+                ! ELAS_ORTH on a plane solid: its law in the MASSIF frame (assembly_plane_law)
+                if (is_plane_solid(model%element(c)) .and. .not. mat%has_elas .and. &
+                    elastic_behaviour(mat) == 'ELAS_ORTH') cycle
                 if (is_plate(model%element(c)) .and. has_behaviour(mat, 'ELAS_ORTH')) then
                     call set_error(st, STATUS_MODEL_ERROR, 'material ' // label(mat) // &
                         ' on ' // cell_label(mesh, c) // ' gives ELAS_ORTH to a DKT plate:' &

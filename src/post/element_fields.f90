@@ -20,9 +20,7 @@ module element_fields
     use strings, only: string_t, to_text
     use deck_catalog, only: split_words
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2, MAX_CELL_NODES
-    use model_types, only: is_plate, is_discrete, is_discrete_2d, is_plane_solid, &
-        is_plane_strain
-    use model_material, only: material_of_cell
+    use model_types, only: is_plate, is_discrete, is_discrete_2d, is_plane_solid
     use model_cara_elem, only: ORIENT_ANGL_VRIL, ORIENT_ANGL_NAUT
     use element_discrete, only: segment_rotation, segment_rotation_2d, nautical_rotation
     use element_spring_fields, only: SPRING_POINTS
@@ -36,8 +34,8 @@ module element_fields
         PLATE_FORCES
     use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLATE, &
         MAX_GAUSS_POINTS
-    use element_plane, only: plane_law_t, plane_law_isotropic, plane_rigi_rule, &
-        plane_point_state
+    use element_plane, only: plane_law_t, plane_rigi_rule, plane_point_state
+    use assembly_plane_law, only: plane_cell_law
     use assembly_varc, only: plate_thermal_strains, plane_thermal_strains
     implicit none
     private
@@ -255,7 +253,7 @@ contains
         type(plane_law_t) :: law
         real(dp) :: xy(2, MAX_CELL_NODES), ue(2 * MAX_CELL_NODES)
         real(dp) :: sig(4, MAX_GAUSS_POINTS), eps(4, MAX_GAUSS_POINTS)
-        integer(i4) :: nn, i, k, node, eq, m, ctype
+        integer(i4) :: nn, i, k, node, eq, ctype
         ctype = res%mesh%cell_type(c)
         nn = res%mesh%cell_ptr(c + 1) - res%mesh%cell_ptr(c)
         do i = 1, nn
@@ -267,20 +265,7 @@ contains
                 if (eq > 0) ue(2 * i - 2 + k) = u(eq)
             end do
         end do
-        m = material_of_cell(res%materials, c)
-        if (m == 0) then
-            call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ' has no ' // &
-                'material: CALC_CHAMP needs its ELAS (give CHAM_MATER)')
-            return
-        end if
-        if (.not. res%materials%materials(m)%has_elas) then
-            call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': its ' // &
-                'material has no ELAS (E, NU)')
-            return
-        end if
-        associate (e => res%materials%materials(m)%elas)
-            call plane_law_isotropic(e%e, e%nu, is_plane_strain(res%model%element(c)), law, st)
-        end associate
+        call plane_cell_law(res%mesh, res%model, res%materials, res%cara, c, law, st)
         if (st%ok()) call plane_rigi_rule(ctype, rule, st)
         has = .false.
         if (st%ok() .and. present(inst)) call plane_thermal_strains(res%mesh, res%model, &

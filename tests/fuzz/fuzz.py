@@ -199,6 +199,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("plane_thermal", files, [],
                       {"case.export": "export", "thermal_plane.comm": "deck",
                        "thermal_tria6.mail": "mail", "thermal_quad8.mail": "mail"}, 0.6))
+    # ELAS_ORTH plane elements in AFFE_CARA_ELEM MASSIF frames (ANGL_REP, ORIG_AXE).
+    files = {"case.export": os.path.join(plane, "orthotropic_plane.export"),
+             "orthotropic_plane.comm": os.path.join(plane, "orthotropic_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("plane_orthotropic", files, [],
+                      {"case.export": "export", "orthotropic_plane.comm": "deck",
+                       "thermal_quad4.mail": "mail"}, 0.6))
     discrete = os.path.join(SOURCE, "tests", "discrete")
     seeds.append(Seed("discrete", {"case.export": os.path.join(discrete, "discrete.export"),
                                    "discrete.comm": os.path.join(discrete, "discrete.comm"),
