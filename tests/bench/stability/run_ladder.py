@@ -8,7 +8,8 @@ full Newton, RESI_GLOB_RELA 1e-6, the generator's NPREC unless --nprec, TEST_RES
 exact discrete rigid-plate answer at 1e-6), runs parasol once (single-threaded BLAS and
 OpenMP, as by hand) and reports: exit status, the largest relative error of the TEST_RESU
 ANALYTIQUE lines (recomputed from the printed values), the digits the factorizations lost
-and the digits the answer holds (the .mess), factorizations and Newton iterations, wall and
+(the .mess's largest loss, or for a run that stopped the pivot its message names) and the
+digits the answer holds (the .mess), factorizations and Newton iterations, wall and
 CPU seconds and peak RSS (os.wait4), and the first error line. --before PARASOL2 runs a
 second executable on the same decks (the "before" columns). --mpi N runs METHODE MUMPS
 under `mpirun --oversubscribe -np N` with the executable of --mpi-parasol (an MPI MUMPS
@@ -40,6 +41,7 @@ import rigid_bed_exact  # noqa: E402
 GENERATOR = os.path.join(ROOT, "tools", "make_ssnl130_case.py")
 ANALYTIQUE = re.compile(r"TEST_RESU .* (OK|NOOK) ANALYTIQUE \S+ (\S+) (\S+) ")
 LARGEST = re.compile(r"largest loss ([0-9.]+) digits")
+PIVOT_LOST = re.compile(r"pivot lost ([0-9.]+) digits")
 HOLDS = re.compile(r"the answer holds ([0-9.]+) significant digits")
 TOTAL = re.compile(r"STAT_NON_LINE: (\d+) iteration\(s\), (\d+) factorization\(s\)")
 ERROR = re.compile(r"error: (.*)$", re.M)
@@ -78,7 +80,7 @@ def measure(cmd, work, stem, timeout):
     for ok, ref, val in ANALYTIQUE.findall(mess):
         ref, val = float(ref), float(val)
         errors.append(abs(val - ref) / abs(ref) if ref != 0.0 else abs(val))
-    largest = LARGEST.findall(mess)
+    largest = LARGEST.findall(mess) or PIVOT_LOST.findall(mess)
     holds = HOLDS.findall(mess)
     total = TOTAL.findall(mess)
     err_line = ERROR.findall(open(log, encoding="utf-8", errors="replace").read())
