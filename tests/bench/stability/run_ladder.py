@@ -104,9 +104,12 @@ def run_ccx(ccx, mesh, K, E, work, timeout):
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     log = os.path.join(work, job + ".log")
     try:
-        rc, wall, cpu, rss = parasol_case.run_measured([ccx, "-i", job], work, env, log)
+        rc, wall, cpu, rss = parasol_case.run_measured(
+            ["timeout", str(int(timeout)), ccx, "-i", job], work, env, log)
     except subprocess.TimeoutExpired:
-        return dict(ccx="timeout")
+        return dict(ccx_error="timeout")
+    if rc == 124:
+        return dict(ccx_rc=rc, ccx_error=f"timeout ({int(timeout)} s)")
     try:
         dz = make_ccx_bed.parse_corner_dz(os.path.join(work, job + ".dat"), nx, ny)
     except (OSError, ValueError):
@@ -141,6 +144,8 @@ def main(argv=None):
     ap.add_argument("--ccx", default=None,
                     help="the CalculiX executable: also run it on model A's cases (None: no)")
     ap.add_argument("--timeout", type=float, default=3600.0, help="seconds per run")
+    ap.add_argument("--ccx-timeout", type=float, default=600.0,
+                    help="seconds per CalculiX run (ccx iterates long on the softest beds)")
     ap.add_argument("--csv", default=None, help="also write the rows to this CSV (None: no)")
     ap.add_argument("--check", action="store_true",
                     help="exit 1 unless every run exits 0 with every error within --tolerance "
@@ -152,6 +157,8 @@ def main(argv=None):
     runs = [(m, False) for m in o.methods.split(",")]
     if o.mpi:
         runs.append(("MUMPS", True))
+        if os.geteuid() == 0:     # Open MPI refuses root unless told (a container's root)
+            os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     with tempfile.TemporaryDirectory() as work:
         for mesh in o.meshes.split(","):
             for K in o.K.split(","):
@@ -173,7 +180,7 @@ def main(argv=None):
                                          base + ".comm"], work, stem, o.timeout)
                             row.update({"before_" + k: v for k, v in b.items()})
                         if o.ccx and o.model == "a" and methode == runs[0][0] and not mpi:
-                            row.update(run_ccx(o.ccx, mesh, K, E, work, o.timeout))
+                            row.update(run_ccx(o.ccx, mesh, K, E, work, o.ccx_timeout))
                         rows.append(row)
                         print(" | ".join(str(v) for v in row.values()), file=sys.stderr,
                               flush=True)
