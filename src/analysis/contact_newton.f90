@@ -62,7 +62,7 @@ module contact_newton
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
         solve_held, answer_digits, real_digits
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
     use analysis_relations, only: prepare_relations, relations_at
     use assembly_relations, only: elimination_t
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
@@ -126,7 +126,7 @@ contains
         logical, allocatable :: imposed(:), rigid(:)
         type(elimination_t) :: elim
         integer(i4) :: k, step, n_eq
-        real(dp), allocatable :: targets(:)
+        real(dp), allocatable :: targets(:), forc(:)
         integer(i4), allocatable :: levels(:)
         real(dp) :: t_prev
         type(step_start_t) :: saved
@@ -208,7 +208,10 @@ contains
             end if
             step = step + 1
             call result_reserve(res, step + 1 + size(targets, kind=i4) - k)
-            call result_store(res, step, targets(k), state%u, state%fint, &
+            if (.not. allocated(forc)) allocate (forc(size(state%fint)))
+            call recorded_internal_forces(s, targets(k), state%fint, forc, st)
+            if (st%failed()) return
+            call result_store(res, step, targets(k), state%u, forc, &
                 reactions(map, state), state%closed, state%fn)
             call store_spring_fields(s, state%u, res, st)
             if (st%failed()) return

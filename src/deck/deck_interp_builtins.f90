@@ -212,6 +212,8 @@ contains
             v%kind = VK_CO
             v%s = args(1)%s
             v%line = ctx%ast%nodes(id)%line; v%col = ctx%ast%nodes(id)%col
+        case ('TestCase')
+            call new_testcase(ctx, id, args, kwargs, v, st)     ! CA.TestCase()
         case ('callable')
             call want(1, 1, '')
             if (st%failed()) return

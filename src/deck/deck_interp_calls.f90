@@ -10,6 +10,7 @@ submodule(deck_interpreter) deck_interp_calls
     use deck_suggest, only: did_you_mean
     use deck_concept, only: concept_t, placeholder_concept_t, concept_display_name
     use deck_command, only: command_t
+    use deck_testcase, only: testcase_t
     use deck_validate, only: validate_command
     use run_context, only: method_call_t
     implicit none
@@ -247,8 +248,8 @@ contains
                 'loops and math)'
         case ('code_aster')
             text = m%s // ': parasol does not provide Code_Aster''s Python library ' // &
-                '(its objects, macros and test helpers); only its commands are part of the ' // &
-                'deck language'
+                '(its objects and macros); of it the deck language has the commands and ' // &
+                'CA.TestCase'
         case default
             text = m%s // ': parasol does not provide the Python module ' // module
         end select
@@ -471,6 +472,10 @@ contains
             v = obj
         case (VK_CONCEPT)
             allocate (none(0))
+            if (is_testcase(obj)) then
+                call testcase_method(ctx, id, obj, name, .false., none, empty_kwargs(), v, st)
+                return
+            end if
             call use_attribute(ctx, id, obj, name, .false., none, empty_kwargs(), v, st)
         case (VK_MODULE)
             if (obj%i > 0) then                               ! a module of the deck
@@ -495,6 +500,9 @@ contains
                             'atan2 sinh cosh tanh floor ceil fabs hypot degrees radians pi e)')
                     end if
                 end select
+            else if (name == 'TestCase' .and. (obj%s == 'code_aster.CA' .or. &
+                     obj%s == 'code_aster.Utilities')) then
+                v%kind = VK_BUILTIN; v%s = 'TestCase'      ! CA.TestCase: deck_interp_testcase
             else
                 call fail(st, ctx, id, unavailable(str_value(obj%s // '.' // name)))
             end if
@@ -520,6 +528,10 @@ contains
         case (VK_UNKNOWN)
             v = obj
         case (VK_CONCEPT)
+            if (is_testcase(obj)) then
+                call testcase_method(ctx, id, obj, name, .true., args, kwargs, v, st)
+                return
+            end if
             call use_attribute(ctx, id, obj, name, .true., args, kwargs, v, st)
         case (VK_MODULE)
             call get_attribute(ctx, id, obj, name, f, st)
@@ -612,6 +624,17 @@ contains
             text = text // ')'
         end function provided
     end procedure use_attribute
+
+    !> True when value v is a CA.TestCase (its methods are the interpreter's).
+    logical function is_testcase(v)
+        type(value_t), intent(in) :: v
+        is_testcase = .false.
+        if (.not. associated(v%obj)) return
+        select type (o => v%obj)
+        type is (testcase_t)
+            is_testcase = .true.
+        end select
+    end function is_testcase
 
     !> True when value v is a concept (not a placeholder) with a handler for `name`.
     module procedure has_method
