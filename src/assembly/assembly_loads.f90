@@ -1,7 +1,8 @@
 !> Loads of a static analysis on the original equations: which equations DDL_IMPO imposes,
 !> their values at an instant, and the external force vector at an instant (FORCE_NODALE
 !> at nodes; FORCE_COQUE / PRES_REP known at the plate's nodes and FORCE_CONTOUR at the
-!> edge's Gauss points, as Code_Aster discretises them: element_loads, design.md "Loads").
+!> edge's Gauss points, as Code_Aster discretises them: element_loads, design.md "Loads";
+!> PRE_EPSI's initial strains at the RIGI points: assembly_pre_epsi).
 !> Every value is multiplied by the FONC_MULT factor of its EXCIT occurrence (evaluated by
 !> the caller at the instant).
 module assembly_loads
@@ -13,7 +14,8 @@ module assembly_loads
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS
     use model_loads, only: load_set_t, load_item_t, load_value_at, LOAD_DDL_IMPO, &
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
-        LOAD_KIND_NAMES, load_locate, load_slot_name
+        LOAD_KIND_NAMES, load_locate, load_slot_name, LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE
+    use assembly_pre_epsi, only: add_pre_epsi_forces
     use number_limits, only: product_fits
     use element_loads, only: plate_nodal_pressure, plate_nodal_forces, edge_load_points, &
         edge_line_forces, edge_points_t, MAX_EDGE_POINTS, MAX_EDGE_NODES
@@ -221,6 +223,11 @@ contains
                 case (LOAD_FORCE_CONTOUR)
                     do i = 1, size(item%cells)
                         call edge_cell_forces(s, item, item%cells(i), t, factor, fext, st)
+                        if (st%failed()) exit
+                    end do
+                case (LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE)
+                    do i = 1, size(item%cells)
+                        call add_pre_epsi_forces(s, item, item%cells(i), t, factor, fext, st)
                         if (st%failed()) exit
                     end do
                 end select

@@ -14,11 +14,11 @@ module load_commands
         node_name
     use model_dof_numbering, only: COMPONENT_NAMES
     use mesh_command_support, only: relocate_error, group_cells, all_cells
-    use model_types, only: is_plate, is_plane_edge
+    use model_types, only: is_plate, is_plane_edge, is_plane_solid
     use model_concept, only: model_concept_t
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
         LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
-        LOAD_FORCE_CONTOUR, SLOT_PRES, load_set_location
+        LOAD_FORCE_CONTOUR, SLOT_PRES, load_set_location, LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE
     use function_concept, only: function_concept_t
     use relation_commands, only: select_nodes, face_impo_item, liaison_ddl_item, &
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
@@ -164,6 +164,10 @@ contains
             do i = 1, cmd%count('FORCE_CONTOUR')
                 call cell_item(cmd%occurrence('FORCE_CONTOUR', i), p, LOAD_FORCE_CONTOUR, &
                     ['FX', 'FY'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('PRE_EPSI')
+                call pre_epsi_item(cmd%occurrence('PRE_EPSI', i), p, functions, cm%loads, st)
                 if (st%failed()) return
             end do
         class default
@@ -342,8 +346,35 @@ contains
         end do
     end subroutine check_component
 
-    !> FORCE_COQUE / PRES_REP / FORCE_CONTOUR occurrence: cells from TOUT or GROUP_MA, of the
-    !> element kind the load needs.
+    !> PRE_EPSI occurrence: EPXX .. EPXY on plane cells or EXX .. KXY on plate cells (the two
+    !> in one occurrence are refused: each element reads its own, Code_Aster's would pass
+    !> the others over).
+    subroutine pre_epsi_item(occ, mc, functions, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        logical, intent(in) :: functions
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        character(len=4), parameter :: PLANE(4) = ['EPXX', 'EPYY', 'EPZZ', 'EPXY']
+        character(len=3), parameter :: PLATE(6) = ['EXX', 'EYY', 'EXY', 'KXX', 'KYY', 'KXY']
+        integer(i4) :: k
+        if (any([(occ%has(trim(PLANE(k))), k = 1, 4)])) then
+            do k = 1, 6
+                if (occ%has(PLATE(k))) then
+                    call occ%error_at(PLATE(k), 'plate strains (EXX .. KXY) and plane ' // &
+                        'ones (EPXX .. EPXY) in one occurrence: give each its own, on its ' // &
+                        'cells', st, code=STATUS_MODEL_ERROR)
+                    return
+                end if
+            end do
+            call cell_item(occ, mc, LOAD_PRE_EPSI, PLANE, functions, loads, st)
+        else
+            call cell_item(occ, mc, LOAD_PRE_EPSI_PLATE, PLATE, functions, loads, st)
+        end if
+    end subroutine pre_epsi_item
+
+    !> FORCE_COQUE / PRES_REP / FORCE_CONTOUR / PRE_EPSI occurrence: cells from TOUT or
+    !> GROUP_MA, of the element kind the load needs.
     subroutine cell_item(occ, mc, kind, keys, functions, loads, st)
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
@@ -355,23 +386,34 @@ contains
         integer(i4), allocatable :: cells(:)
         integer(i4) :: k, index, slot
         logical, allocatable :: fits(:)
+        character(len=:), allocatable :: need
         if (occ%has('GROUP_MA')) then
             call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
             if (st%failed()) return
         else
             cells = all_cells(mc%mesh)
         end if
-        if (kind == LOAD_FORCE_CONTOUR) then
+        select case (kind)
+        case (LOAD_FORCE_CONTOUR)
             fits = is_plane_edge(mc%model%element(cells))
-        else
+            need = 'the load needs SEG2 edges of a D_PLAN/C_PLAN model'
+        case (LOAD_PRE_EPSI)
+            fits = is_plane_solid(mc%model%element(cells))
+            need = 'EPXX .. EPXY need D_PLAN/C_PLAN cells (plates take EXX .. KXY)'
+        case (LOAD_PRE_EPSI_PLATE)
             fits = is_plate(mc%model%element(cells))
+            need = 'EXX .. KXY need plate (DKT) cells (plane elements take EPXX .. EPXY)'
+        case default
+            fits = is_plate(mc%model%element(cells))
+            need = 'the load needs plate (DKT) cells'
+        end select
+        if (occ%has('TOUT')) then            ! the cells that take the load
+            cells = pack(cells, fits)
+            fits = pack(fits, fits)
         end if
-        if (occ%has('TOUT')) cells = pack(cells, fits)
         if (.not. all(fits) .or. size(cells) == 0) then
-            call occ%error_at(merge('GROUP_MA', 'TOUT    ', occ%has('GROUP_MA')), &
-                merge('the load needs SEG2 edges of a D_PLAN/C_PLAN model', &
-                      'the load needs plate (DKT) cells                  ', &
-                      kind == LOAD_FORCE_CONTOUR) // '; ' // to_text(count(.not. fits)) // &
+            call occ%error_at(trim(merge('GROUP_MA', 'TOUT    ', occ%has('GROUP_MA'))), &
+                need // '; ' // to_text(count(.not. fits)) // &
                 ' cell(s) of ' // to_text(size(fits)) // ' do not fit', st, &
                 code=STATUS_MODEL_ERROR)
             return

@@ -6,6 +6,9 @@
 !>   FORCE_COQUE   plate cells, PRES (force = -PRES n) or FX/FY/FZ per unit area
 !>   PRES_REP      plate cells, PRES
 !>   FORCE_CONTOUR SEG2 edge cells of plane models, FX FY per unit length (unit depth)
+!>   PRE_EPSI      plane cells, EPXX EPYY EPZZ EPXY (LOAD_PRE_EPSI), or plate cells, EXX
+!>                 EYY EXY KXX KYY KXY (LOAD_PRE_EPSI_PLATE): initial strains
+!>                 (assembly_pre_epsi)
 !>   RELATION      linear relations between components of nodes (LIAISON_DDL,
 !>                 LIAISON_OBLIQUE, LIAISON_UNIF, LIAISON_SOLIDE, LIAISON_GROUP,
 !>                 LIAISON_RBE3, LIAISON_MAIL, FACE_IMPO and ARETE_IMPO DNOR/DTAN): each
@@ -34,16 +37,20 @@ module model_loads
     private
 
     integer(i4), parameter, public :: LOAD_DDL_IMPO = 1, LOAD_FORCE_NODALE = 2, &
-        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6
-    character(len=13), parameter, public :: LOAD_KIND_NAMES(6) = ['DDL_IMPO     ', &
-        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR', 'LIAISON      ']
+        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6, &
+        LOAD_PRE_EPSI = 7, LOAD_PRE_EPSI_PLATE = 8
+    character(len=13), parameter, public :: LOAD_KIND_NAMES(8) = ['DDL_IMPO     ', &
+        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR', 'LIAISON      ', &
+        'PRE_EPSI     ', 'PRE_EPSI     ']
     !> Slot of PRES in FORCE_COQUE / PRES_REP items (the FX FY FZ slots are 1..3).
     integer(i4), parameter, public :: SLOT_PRES = 4
     !> Names of the six slots of each kind (messages).
-    character(len=4), parameter :: SLOT_NAMES(6, 6) = reshape([character(len=4) :: &
+    character(len=4), parameter :: SLOT_NAMES(6, 8) = reshape([character(len=4) :: &
         'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', 'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', &
         'FX', 'FY', 'FZ', 'PRES', '', '', 'FX', 'FY', 'FZ', 'PRES', '', '', &
-        'FX', 'FY', '', '', '', '', '', '', '', '', '', ''], [6, 6])
+        'FX', 'FY', '', '', '', '', '', '', '', '', '', '', &
+        'EPXX', 'EPYY', 'EPZZ', 'EPXY', '', '', 'EXX', 'EYY', 'EXY', 'KXX', 'KYY', 'KXY'], &
+        [6, 8])
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
