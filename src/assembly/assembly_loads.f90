@@ -217,7 +217,12 @@ contains
                     call nodal_forces(s, item, t, factor, fext, st)
                 case (LOAD_FORCE_COQUE, LOAD_PRES_REP)
                     do i = 1, size(item%cells)
-                        call plate_cell_forces(s, item, item%cells(i), t, factor, fext, st)
+                        if (item%kind == LOAD_PRES_REP .and. &
+                            is_plane_edge(s%model%element(item%cells(i)))) then
+                            call edge_cell_forces(s, item, item%cells(i), t, factor, fext, st)
+                        else
+                            call plate_cell_forces(s, item, item%cells(i), t, factor, fext, st)
+                        end if
                         if (st%failed()) exit
                     end do
                 case (LOAD_FORCE_CONTOUR)
@@ -339,8 +344,9 @@ contains
         end do
     end subroutine plate_cell_forces
 
-    !> FORCE_CONTOUR FX, FY on one SEG2 / SEG3 edge of a plane model (per unit length, unit
-    !> depth).
+    !> FORCE_CONTOUR FX, FY (per unit length, unit depth) or PRES_REP PRES (the traction
+    !> -PRES n, n the edge's normal: element_loads) on one SEG2 / SEG3 edge of a plane model,
+    !> known at the edge's Gauss points.
     subroutine edge_cell_forces(s, item, c, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
@@ -351,10 +357,11 @@ contains
         real(dp) :: x(2, MAX_EDGE_NODES), q(2, MAX_EDGE_POINTS), fe(2 * MAX_EDGE_NODES)
         type(edge_points_t) :: pts
         integer(i4) :: g, a, comp, p0, eq, nn
+        real(dp) :: pres
         if (.not. is_plane_edge(s%model%element(c))) then
-            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_CONTOUR applies to SEG2 and SEG3 ' &
-                // 'edges of a D_PLAN/C_PLAN model, not to ' // cell_label(s%mesh, c, &
-                item%group))
+            call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(item%kind)) // &
+                ' applies to SEG2 and SEG3 edges of a D_PLAN/C_PLAN model, not to ' // &
+                cell_label(s%mesh, c, item%group))
             return
         end if
         p0 = s%mesh%cell_ptr(c)
@@ -364,6 +371,17 @@ contains
         if (st%failed()) return
         q = 0.0_dp
         do g = 1, pts%n
+            if (item%kind == LOAD_PRES_REP) then
+                call load_value_at(item%values(SLOT_PRES), item%kind, SLOT_PRES, t, &
+                    [pts%x(1, g), pts%x(2, g), 0.0_dp], pres, st)
+                if (st%ok()) call check_factor(pts%w(g), pres, item%kind, SLOT_PRES, st)
+                if (st%ok()) call check_factor(factor, pres * pts%w(g), item%kind, &
+                                               SLOT_PRES, st)
+                call load_locate(item, SLOT_PRES, st)
+                if (st%failed()) return
+                q(:, g) = -pres * pts%normal(:, g)
+                cycle
+            end if
             do comp = 1, 2
                 if (.not. item%values(comp)%given) cycle
                 call load_value_at(item%values(comp), item%kind, comp, t, &

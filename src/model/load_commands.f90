@@ -400,6 +400,11 @@ contains
         case (LOAD_PRE_EPSI)
             fits = is_plane_solid(mc%model%element(cells))
             need = 'EPXX .. EPXY need D_PLAN/C_PLAN cells (plates take EXX .. KXY)'
+        case (LOAD_PRES_REP)
+            fits = is_plate(mc%model%element(cells)) .or. &
+                   is_plane_edge(mc%model%element(cells))
+            need = 'PRES_REP needs plate (DKT) cells or SEG2/SEG3 edges of a D_PLAN/C_PLAN ' &
+                // 'model'
         case (LOAD_PRE_EPSI_PLATE)
             fits = is_plate(mc%model%element(cells))
             need = 'EXX .. KXY need plate (DKT) cells (plane elements take EPXX .. EPXY)'

@@ -207,6 +207,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("plane_orthotropic", files, [],
                       {"case.export": "export", "orthotropic_plane.comm": "deck",
                        "thermal_quad4.mail": "mail"}, 0.6))
+    # PRES_REP on the plane edges.
+    files = {"case.export": os.path.join(plane, "pres_rep_plane.export"),
+             "pres_rep_plane.comm": os.path.join(plane, "pres_rep_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("pres_rep_plane", files, [],
+                      {"case.export": "export", "pres_rep_plane.comm": "deck",
+                       "thermal_tria6.mail": "mail"}, 0.4))
     # PRE_EPSI initial strains: the plane strips (free and held) and the plates.
     pre = os.path.join(SOURCE, "tests", "pre_epsi")
     files = {"case.export": os.path.join(plane, "pre_epsi_plane.export"),
