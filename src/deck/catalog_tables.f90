@@ -36,6 +36,7 @@ contains
         call describe_test_table(c)
         call describe_impr_table(c)
         call describe_post_releve_t(c)
+        call describe_macr_lign_coupe(c)
     end subroutine describe_tables
 
     !> POST_RELEVE_T (U4.81.21): values of fields along a list of nodes, their means,
@@ -287,5 +288,76 @@ contains
         call c%key('TITRE', 'TXM', max=MANY)
         call c%key('INFO', 'I', def='1', into='1 2')
     end subroutine describe_impr_table
+
+    !> MACR_LIGN_COUPE (U4.81.13; Cata/Commands/macr_lign_coupe.py): values of a result's
+    !> field along cut lines. NOM_CHAM has no default here: Code_Aster's depends on the
+    !> result's type (SIGM_NOEU mechanical, TEMP thermal), the handler applies it. The
+    !> blocks of TYPE (SEGMENT, ARC, GROUP_NO, GROUP_MA) and REPERE are checked by the
+    !> handler.
+    subroutine describe_macr_lign_coupe(c)
+        type(catalog_t), intent(inout) :: c
+        call c%command('MACR_LIGN_COUPE', TABLE_TYPE)
+        call c%rule(RULE_UN_PARMI, 'RESULTAT CHAM_GD')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('CHAM_GD', 'cham_no_sdaster|cham_elem')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('NUME_MODE', 'I', max=MANY)
+        call c%key('LIST_ORDRE', 'listis')
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'NUME_ORDRE NUME_MODE LIST_ORDRE INST LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('NOM_CHAM', 'TXM')
+        call c%key('UNITE_MAILLAGE', 'I', noop=.true.)
+        call c%key('MODELE', 'modele_sdaster', noop=.true.)
+        call c%fact('VIS_A_VIS', max=MANY)
+        call c%rule(RULE_EXCLUS, 'GROUP_MA_1 MAILLE_1')
+        call c%key('GROUP_MA_1', 'TXM')
+        call c%key('MAILLE_1', 'TXM', max=MANY)
+        call c%end_fact()
+        call c%fact('LIGN_COUPE', max=MANY, req=.true.)
+        call c%rule(RULE_EXCLUS, 'NOM_CMP INVARIANT ELEM_PRINCIPAUX RESULTANTE')
+        call c%rule(RULE_PRESENT_PRESENT, 'TRAC_DIR DIRECTION')
+        call c%rule(RULE_EXCLUS, 'TRAC_DIR TRAC_NOR')
+        call c%rule(RULE_PRESENT_PRESENT, 'TRAC_DIR NOM_CMP')
+        call c%rule(RULE_PRESENT_PRESENT, 'TRAC_NOR NOM_CMP')
+        call c%rule(RULE_ENSEMBLE, 'MOMENT POINT')
+        call c%key('INTITULE', 'TXM')
+        call c%key('TYPE', 'TXM', def='SEGMENT', into='GROUP_NO SEGMENT ARC GROUP_MA')
+        call c%key('REPERE', 'TXM', def='GLOBAL', &
+                   into='GLOBAL LOCAL POLAIRE UTILISATEUR CYLINDRIQUE')
+        call c%key('OPERATION', 'TXM', def='EXTRACTION', into='EXTRACTION MOYENNE')
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%key('INVARIANT', 'TXM', into='OUI')
+        call c%key('ELEM_PRINCIPAUX', 'TXM', into='OUI')
+        call c%key('TRAC_NOR', 'TXM', into='OUI')
+        call c%key('TRAC_DIR', 'TXM', into='OUI')
+        call c%key('DIRECTION', 'R', max=MANY, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('RESULTANTE', 'TXM', max=MANY, into='DX DY DZ NXX NYY NXY')
+        call c%key('MOMENT', 'TXM', max=MANY, into='DRX DRY DRZ MXX MYY MXY')
+        call c%key('POINT', 'R', max=MANY, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('VECT_Y', 'R', min=2, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ANGL_NAUT', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('GROUP_NO', 'TXM')
+        call c%key('GROUP_MA', 'TXM')
+        call c%key('MAILLAGE', 'maillage_sdaster')
+        call c%key('GROUP_NO_ORIG', 'TXM')
+        call c%key('GROUP_NO_EXTR', 'TXM')
+        call c%key('VECT_ORIE', 'R', max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('NB_POINTS', 'I', vmin=2.0_dp, vmax=1.0e5_dp)   ! parasol's bound
+        call c%key('COOR_ORIG', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('COOR_EXTR', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%rule(RULE_EXCLUS, 'COOR_ORIG GROUP_NO_ORIG')
+        call c%rule(RULE_EXCLUS, 'COOR_EXTR GROUP_NO_EXTR')
+        call c%key('CENTRE', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('ANGLE', 'R', vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('DNOR', 'R', min=2, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ORIGINE', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('AXE_Z', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('DISTANCE_MAX', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('DISTANCE_ALARME', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%end_fact()
+    end subroutine describe_macr_lign_coupe
 
 end module catalog_tables
