@@ -17,8 +17,13 @@
 !>    rows by line, then instant (NUME_ORDRE / INST / LIST_INST, all by default), then
 !>    point.
 !> NOM_CHAM defaults to SIGM_NOEU for a mechanical result and TEMP for a thermal one, as
-!> Code_Aster's catalog has it. Not built, each a located error saying so: CHAM_GD,
-!> TYPE='ARC' and 'GROUP_MA', REPERE other than GLOBAL, OPERATION='MOYENNE', INVARIANT,
+!> Code_Aster's catalog has it. REPERE='UTILISATEUR' (ANGL_NAUT) and 'LOCAL' on a SEGMENT
+!> (x along the line, y the part of VECT_Y orthogonal to it) turn the components of DEPL,
+!> SIEF_ELNO, SIGM_NOEU, SIGM_ELNO, FLUX_ELNO and FLUX_NOEU as Code_Aster's
+!> crea_resu_local does (MODI_REPERE UTILISATEUR with those nautical angles; alpha alone in
+!> a 2D mesh); other fields keep the global frame, with an alarm.
+!> Not built, each a located error saying so: CHAM_GD, TYPE='ARC' and 'GROUP_MA', REPERE
+!> POLAIRE and CYLINDRIQUE, LOCAL on a GROUP_NO, OPERATION='MOYENNE', INVARIANT,
 !> ELEM_PRINCIPAUX, TRAC_NOR / TRAC_DIR, RESULTANTE, VIS_A_VIS, ELGA fields (Code_Aster
 !> itself warns they are not meant for it) and element fields with sub-points (plate
 !> layers: extract a layer with POST_CHAMP EXTR_COQUE first).
@@ -40,7 +45,7 @@ module macr_lign_coupe_command
         table_set_int, table_set_real, table_set_text, TABLE_INT, TABLE_REAL, TABLE_TEXT
     use table_keywords, only: relocate_at, warn_at
     use crea_table_command, only: result_of_occurrence
-    use releve_frames, only: path_abscissae
+    use releve_frames, only: path_abscissae, user_frame, rotate_vector, rotate_tensor
     use point_location, only: located_point_t, locate_point
     implicit none
     private
@@ -52,7 +57,17 @@ module macr_lign_coupe_command
         real(dp), allocatable :: x(:, :)            !< (3, n) the points asked for
         type(string_t), allocatable :: asked(:)     !< NOM_CMP, none: every component
         real(dp) :: distance_max = 0.0_dp
+        !> REPERE UTILISATEUR / LOCAL: the components are turned by pgl (rows: the axes)
+        logical :: turned = .false.
+        real(dp) :: pgl(3, 3) = 0.0_dp
     end type line_t
+
+    !> The fields whose components MACR_LIGN_COUPE turns (crea_resu_local); the others are
+    !> read in the global frame with an alarm, as Code_Aster reads them.
+    character(len=*), parameter :: TURNED_FIELDS = ' DEPL SIEF_ELNO SIGM_NOEU SIGM_ELNO ' // &
+        'FLUX_ELNO FLUX_NOEU '
+    !> Precision of Code_Aster's crea_resu_local (epsi): parallel or orthogonal axes.
+    real(dp), parameter :: LOCAL_EPSILON = 1.0e-8_dp
 
 contains
 
@@ -225,7 +240,76 @@ contains
             if (st%failed()) return
             line%label = text
         end if
+        call read_frame(occ, mesh, line, st)
     end subroutine read_line
+
+    !> REPERE UTILISATEUR (ANGL_NAUT) and LOCAL (a SEGMENT's direction and VECT_Y), as
+    !> Code_Aster's crea_resu_local turns them (MODI_REPERE UTILISATEUR with the nautical
+    !> angles; in a 2D mesh alpha alone).
+    subroutine read_frame(occ, mesh, line, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(mesh_t), intent(in) :: mesh
+        type(line_t), intent(inout) :: line
+        type(status_t), intent(inout) :: st
+        character(len=:), allocatable :: frame
+        real(dp), allocatable :: v(:)
+        real(dp) :: angles(3), cx(3), cy(3), cz(3)
+        integer :: n
+        call occ%get_text('REPERE', frame, st)
+        if (st%failed() .or. frame == 'GLOBAL') return
+        angles = 0.0_dp
+        if (frame == 'UTILISATEUR') then
+            if (.not. occ%has('ANGL_NAUT')) then
+                call occ%error_at('REPERE', 'REPERE=''UTILISATEUR'' needs ANGL_NAUT, the ' // &
+                    'frame''s nautical angles in degrees', st)
+                return
+            end if
+            call occ%get_reals('ANGL_NAUT', v, st)
+            if (st%failed()) return
+            angles = v(1:3)
+        else                                            ! LOCAL on a SEGMENT
+            if (.not. occ%has('VECT_Y')) then
+                call occ%error_at('REPERE', 'REPERE=''LOCAL'' needs VECT_Y, the direction ' // &
+                    'of the local y axis', st)
+                return
+            end if
+            call occ%get_reals('VECT_Y', v, st)
+            if (st%failed()) return
+            n = size(line%x, 2)
+            cx = line%x(:, n) - line%x(:, 1)
+            cy = 0.0_dp
+            cy(1:min(size(v), mesh%dim)) = v(1:min(size(v), mesh%dim))
+            if (mesh%dim == 2) cx(3) = 0.0_dp
+            cx = cx / norm2(cx)
+            if (.not. norm2(cy) >= LOCAL_EPSILON) then
+                call occ%error_at('VECT_Y', 'VECT_Y has no direction (its length is 0)', st)
+                return
+            end if
+            cy = cy / norm2(cy)
+            if (all(abs(cx - cy) < LOCAL_EPSILON) .or. all(abs(cx + cy) < LOCAL_EPSILON)) then
+                call occ%error_at('VECT_Y', 'VECT_Y is along the line: it does not make ' // &
+                    'a frame with it', st)
+                return
+            end if
+            cz = [cx(2) * cy(3) - cx(3) * cy(2), cx(3) * cy(1) - cx(1) * cy(3), &
+                  cx(1) * cy(2) - cx(2) * cy(1)]
+            cz = cz / norm2(cz)
+            ! VECT_Y not orthogonal to the line: its part orthogonal to it (z x x)
+            cy = [cz(2) * cx(3) - cz(3) * cx(2), cz(3) * cx(1) - cz(1) * cx(3), &
+                  cz(1) * cx(2) - cz(2) * cx(1)]
+            if (mesh%dim == 2) then
+                angles(1) = atan2(cx(2), cx(1))
+            else if (cx(1)**2 + cx(2)**2 > LOCAL_EPSILON) then
+                angles = [atan2(cx(2), cx(1)), -asin(cx(3)), atan2(cy(3), cz(3))]
+            else
+                angles = [atan2(-cy(1), cy(2)), -asin(cx(3)), 0.0_dp]
+            end if
+            angles = angles * (45.0_dp / atan(1.0_dp))
+        end if
+        if (mesh%dim == 2) angles(2:3) = 0.0_dp
+        call user_frame(angles, line%pgl)
+        line%turned = .true.
+    end subroutine read_frame
 
     !> The keywords and values of LIGN_COUPE parasol does not build (module header).
     subroutine refuse_unbuilt(occ, kind, st)
@@ -242,9 +326,10 @@ contains
             return
         end if
         call occ%get_text('REPERE', text, st)
-        if (st%ok() .and. text /= 'GLOBAL') call occ%error_at('REPERE', 'REPERE=''' // &
-            text // ''' is not built by MACR_LIGN_COUPE in parasol: the components are ' // &
-            'read in the GLOBAL frame (POST_RELEVE_T turns them)', st, STATUS_NOT_IMPLEMENTED)
+        if (st%ok() .and. (text == 'POLAIRE' .or. text == 'CYLINDRIQUE' .or. &
+            (text == 'LOCAL' .and. kind /= 'SEGMENT'))) call occ%error_at('REPERE', &
+            'REPERE=''' // text // ''' is not built by MACR_LIGN_COUPE in parasol ' // &
+            '(GLOBAL, UTILISATEUR, and LOCAL on a SEGMENT are)', st, STATUS_NOT_IMPLEMENTED)
         if (st%ok()) call occ%get_text('OPERATION', text, st)
         if (st%ok() .and. text /= 'EXTRACTION') call occ%error_at('OPERATION', &
             'OPERATION=''' // text // ''' is not built by MACR_LIGN_COUPE in parasol: ' // &
@@ -373,12 +458,18 @@ contains
         logical, allocatable :: candidate(:), kept(:)
         real(dp), allocatable :: absc(:), xk(:, :)
         integer, allocatable :: cols(:), ks(:)
-        real(dp) :: v
-        logical :: has
+        real(dp), allocatable :: vals(:)
+        logical, allocatable :: has(:)
+        logical :: turn
         integer :: i, j, r, m
         cmps = line%asked
         if (size(cmps) == 0) cmps = held_components(f)
-        allocate (cols(size(cmps)), ks(size(cmps)))
+        allocate (cols(size(cmps)), ks(size(cmps)), vals(size(cmps)), has(size(cmps)))
+        turn = line%turned .and. index(TURNED_FIELDS, ' ' // nom_cham // ' ') > 0
+        if (first .and. line%turned .and. .not. turn) call warn_at(ctx, occ, 'REPERE', &
+            'the components of ' // nom_cham // ' are not turned by MACR_LIGN_COUPE ' // &
+            '(only those of DEPL, SIEF_ELNO, SIGM_NOEU, SIGM_ELNO, FLUX_ELNO, FLUX_NOEU ' // &
+            'are): they are given in the global frame, as Code_Aster gives them')
         do j = 1, size(cmps)
             ks(j) = field_component(f, cmps(j)%s)
             do m = 1, t%n_columns
@@ -420,8 +511,11 @@ contains
             call table_set_real(t, 7, r, line%x(2, i), st)
             call table_set_real(t, 8, r, line%x(3, i), st)
             do j = 1, size(cmps)
-                call value_at(mesh, f, loc(i), ks(j), v, has)
-                if (has) call table_set_real(t, cols(j), r, v, st)
+                call value_at(mesh, f, loc(i), ks(j), vals(j), has(j))
+            end do
+            if (turn) call turn_values(mesh, f, loc(i), nom_cham, line%pgl, cmps, vals, has)
+            do j = 1, size(cmps)
+                if (has(j)) call table_set_real(t, cols(j), r, vals(j), st)
             end do
             if (st%failed()) return
         end do
@@ -485,6 +579,51 @@ contains
         end do
         has = .true.
     end subroutine value_at
+
+    !> The components of a vector (DX DY DZ, DRX DRY DRZ, FLUX FLUY FLUZ) or a tensor
+    !> (SIXX .. SIYZ) turned: P v, P S P^T (a component the point lacks counts 0).
+    subroutine turn_values(mesh, f, loc, nom_cham, pgl, cmps, vals, has)
+        type(mesh_t), intent(in) :: mesh
+        type(field_t), intent(in) :: f
+        type(located_point_t), intent(in) :: loc
+        character(len=*), intent(in) :: nom_cham
+        real(dp), intent(in) :: pgl(3, 3)
+        type(string_t), intent(in) :: cmps(:)
+        real(dp), intent(inout) :: vals(:)
+        logical, intent(in) :: has(:)
+        if (nom_cham == 'DEPL') then
+            call turn_group([character(len=4) :: 'DX', 'DY', 'DZ'])
+            call turn_group([character(len=4) :: 'DRX', 'DRY', 'DRZ'])
+        else if (nom_cham(1:4) == 'FLUX') then
+            call turn_group([character(len=4) :: 'FLUX', 'FLUY', 'FLUZ'])
+        else
+            call turn_group([character(len=4) :: 'SIXX', 'SIYY', 'SIZZ', 'SIXY', 'SIXZ', &
+                             'SIYZ'])
+        end if
+    contains
+        subroutine turn_group(names)
+            character(len=4), intent(in) :: names(:)
+            real(dp) :: g(size(names)), turned(size(names))
+            logical :: present
+            integer :: k, j, kf
+            do k = 1, size(names)
+                g(k) = 0.0_dp
+                kf = field_component(f, trim(names(k)))
+                if (kf > 0) call value_at(mesh, f, loc, kf, g(k), present)
+                if (kf > 0 .and. .not. present) g(k) = 0.0_dp
+            end do
+            if (size(names) == 3) then
+                turned = rotate_vector(pgl, g)
+            else
+                turned = rotate_tensor(pgl, g)
+            end if
+            do j = 1, size(cmps)
+                do k = 1, size(names)
+                    if (has(j) .and. cmps(j)%s == trim(names(k))) vals(j) = turned(k)
+                end do
+            end do
+        end subroutine turn_group
+    end subroutine turn_values
 
     !> The components the field holds somewhere, in its quantity's order.
     function held_components(f) result(names)
