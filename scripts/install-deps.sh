@@ -9,6 +9,7 @@ packages=(gfortran cmake ninja-build liblapack-dev libblas-dev libopenblas-dev l
           python3 python3-numpy python3-meshio libsuitesparse-dev libmumps-seq-dev
           libmumps-dev libopenmpi-dev openmpi-bin python3-matplotlib
           libmedc-dev libmed-tools python3-h5py    # MED plug-in; mdump and h5py check MED files
+          python3-mpmath                           # tests/extremes/slab_reference.py: exact
           valgrind)                                 # the valgrind.* tests (memcheck)
 missing=()
 for p in "${packages[@]}"; do

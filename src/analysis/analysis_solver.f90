@@ -9,12 +9,15 @@ module analysis_solver
     use status, only: status_t, set_error, STATUS_SINGULAR
     use strings, only: to_text, real_e13, real_short
     use model_dof_numbering, only: describe_equation
-    use sparse_matrix, only: sym_matrix_t, sym_diagonal, sym_matvec
+    use sparse_matrix, only: sym_matrix_t, sym_diagonal
     use direct_solver, only: direct_solver_t, solver_options_t, factor_report_t, &
         effective_nprec, check_disabled, nprec_text
     use solver_factory, only: create_solver
+    use two_level_solver, only: two_level_solver_t, wrap_solver, set_modes, &
+        isolate_anchors, set_coarse, to_hat, hat_product
     use assembly_system, only: structure_t, assembly_map_t, assemble_stiffness, &
-        renumbering_lines, linear_cache_t, contact_history_t
+        renumbering_lines, linear_cache_t, contact_history_t, support_product
+    use rigid_bodies, only: rigid_modes_t, find_rigid_modes
     use analysis_log, only: analysis_log_t, log_add
     use number_limits, only: is_finite, MAX_BINARY_EXPONENT
     use progress, only: progress_update
@@ -81,21 +84,29 @@ module analysis_solver
 
     public :: open_solver, log_numbering, factor_and_diagnose_linear, assemble_and_factor, &
         factor_and_classify, classify_pivots, report_pivots, solve_held, accumulate_pivots, &
-        solver_diagnostics_line, real_digits
+        solver_diagnostics_line, real_digits, modes_support, rigid_modes_of, answer_digits
 
 contains
 
     !> Creates the solver of SOLVEUR (create_solver) and analyses the pattern once. The
     !> solver never stops on a flagged pivot (the analysis classifies them); with the check
     !> off (check_disabled) it holds the free pivots (FREE_PIVOT_DIGITS, RIGID_PIVOT_RATIO).
+    !> Bodies held only by springs (rigid_bodies) get a two-level solver that keeps their
+    !> rigid modes apart (two_level_solver; doc/analysis.md "Rigid modes"): what is factored
+    !> is then the bodies held at their anchors, and NPREC judges that.
+    !>  s, map : in, the structure and its numbering (the bodies and their modes)
     !>  st : out, a RENUM the method lacks, a back-end that cannot load or analyse
-    subroutine open_solver(options, matrix, solver, log, st)
+    subroutine open_solver(s, map, options, matrix, solver, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
         type(solver_options_t), intent(in) :: options
         type(sym_matrix_t), intent(in) :: matrix
         class(direct_solver_t), allocatable, intent(out) :: solver
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         type(solver_options_t) :: lenient
+        type(rigid_modes_t) :: modes
+        class(direct_solver_t), allocatable :: inner
         character(len=:), allocatable :: text
         lenient = options
         lenient%stop_singular = .false.
@@ -103,8 +114,20 @@ contains
             lenient%hold_digits = FREE_PIVOT_DIGITS
             lenient%hold_ratio = RIGID_PIVOT_RATIO
         end if
-        call create_solver(lenient, solver, st)
+        call create_solver(lenient, inner, st)
         if (st%failed()) return
+        call find_rigid_modes(s, map, modes, log, st)
+        if (st%failed()) return
+        if (modes%n_modes > 0) then
+            call wrap_solver(inner, solver)
+            select type (solver)
+            type is (two_level_solver_t)
+                call set_modes(solver, modes%r, modes%anchors, st)
+            end select
+            if (st%failed()) return
+        else
+            call move_alloc(inner, solver)
+        end if
         call solver%analyse(matrix, st)
         if (st%failed()) return
         text = 'SOLVEUR: METHODE ' // trim(solver%options%method) // ', RENUM ' // &
@@ -116,6 +139,42 @@ contains
             real_short(solver%factor_flops) // ' flop'
         call log_add(log, text // ' estimated')
     end subroutine open_solver
+
+    !> The rigid modes a solver keeps apart (n_modes = 0 for a plain solver).
+    subroutine rigid_modes_of(solver, r, anchors)
+        class(direct_solver_t), intent(in) :: solver
+        real(dp), allocatable, intent(out) :: r(:, :)
+        integer(i4), allocatable, intent(out) :: anchors(:)
+        select type (solver)
+        type is (two_level_solver_t)
+            if (solver%m > 0) then
+                r = solver%r
+                anchors = solver%anchors
+                return
+            end if
+        end select
+        allocate (r(0, 0), anchors(0))
+    end subroutine rigid_modes_of
+
+    !> K_s R for the solver's rigid modes: the springs' stiffness at u (elastic or at their
+    !> status there: as assemble_stiffness) times the modes; an empty array without modes.
+    !>  ksr : out, (n_free, m)
+    subroutine modes_support(s, map, solver, u, elastic, ksr, st, history)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        class(direct_solver_t), intent(in) :: solver
+        real(dp), intent(in) :: u(:)
+        logical, intent(in) :: elastic
+        real(dp), allocatable, intent(out) :: ksr(:, :)
+        type(status_t), intent(out) :: st
+        type(contact_history_t), intent(in), optional :: history
+        real(dp), allocatable :: r(:, :)
+        integer(i4), allocatable :: anchors(:)
+        call rigid_modes_of(solver, r, anchors)
+        allocate (ksr(size(r, 1), size(r, 2)))
+        if (size(anchors) == 0) return
+        call support_product(s, map, u, elastic, r, ksr, st, history)
+    end subroutine modes_support
 
     !> The .mess lines on the numbering: LDLT's renumbering figures (the skyline stores that
     !> envelope), or the method's own ordering.
@@ -155,7 +214,7 @@ contains
         call assemble_and_factor(s, map, u, .false., matrix, solver, diag, st, held=held, &
             log=log)
         if (st%failed()) return
-        call accumulate_pivots(diag, one)
+        if (diag%kind /= PIVOT_FREE) call accumulate_pivots(diag, one)
         call log_add(log, solver_diagnostics_line(one, options%nprec, options%method))
         if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(options)) &
             call report_pivots(diag, options, 0.0_dp, log, st)
@@ -182,20 +241,29 @@ contains
         type(contact_history_t), intent(in), optional :: history
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
+        real(dp), allocatable :: ksr(:, :)
         call progress_update(solver%progress, 'assembly of the ' // &
             trim(merge('elastic', 'tangent', elastic)) // ' matrix')
         call assemble_stiffness(s, map, u, elastic, matrix, st, cache, history)
         if (st%failed()) return
-        call factor_and_classify(s, map, matrix, solver, diag, st, held, log)
+        call modes_support(s, map, solver, u, elastic, ksr, st, history)
+        if (st%failed()) return
+        call factor_and_classify(s, map, matrix, solver, ksr, diag, st, held, log)
     end subroutine assemble_and_factor
 
     !> Factors the assembled matrix without stopping and classifies its pivots
-    !> (classify_pivots); held and log as assemble_and_factor.
-    subroutine factor_and_classify(s, map, matrix, solver, diag, st, held, log)
+    !> (classify_pivots); held and log as assemble_and_factor. With rigid modes kept apart
+    !> (two_level_solver) the anchors are isolated in the matrix first, and the coarse
+    !> matrix formed from ksr = K_s R: its pivots are judged with the factor's.
+    !>  matrix : inout, the assembled matrix (anchor rows and columns zeroed on return when
+    !>           modes are kept apart)
+    !>  ksr    : in, (n_free, m) K_s R at the assembled state (modes_support)
+    subroutine factor_and_classify(s, map, matrix, solver, ksr, diag, st, held, log)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
-        type(sym_matrix_t), intent(in) :: matrix
+        type(sym_matrix_t), intent(inout) :: matrix
         class(direct_solver_t), intent(inout) :: solver
+        real(dp), intent(in) :: ksr(:, :)
         type(pivot_diagnosis_t), intent(out) :: diag
         type(status_t), intent(out) :: st
         type(held_t), intent(inout), optional :: held
@@ -207,9 +275,18 @@ contains
         if (matrix%n > 0) largest = maxval(abs(sym_diagonal(matrix)))
         call progress_update(solver%progress, 'factorization (' // &
             trim(solver%options%method) // ')')
+        select type (solver)
+        type is (two_level_solver_t)
+            call isolate_anchors(solver, matrix)
+        end select
         call solver%factor(matrix, report, st)
         if (st%failed()) return
         if (present(log)) call log_add(log, factorization_line(report))
+        select type (solver)
+        type is (two_level_solver_t)
+            call set_coarse(solver, ksr, report, st)
+            if (st%failed()) return
+        end select
         if (present(held)) held%equations = report%held_equations(1:report%n_held)
         if (report%pivots_known) then
             pivots = report%pivots
@@ -228,6 +305,20 @@ contains
             map%free_to_eq(diag%n_flagged)) // diag%where
         diag%n_flagged = report%n_flagged
     end subroutine factor_and_classify
+
+    !> The significant digits an answer u holds when e estimates its error (the correction
+    !> a solve gives for the final residual, computed element by element without the
+    !> contrast's cancellation): -log10(max|e| / max|u|), between 0 and -log10(eps).
+    pure real(dp) function answer_digits(e, u) result(digits)
+        real(dp), intent(in) :: e(:), u(:)
+        real(dp) :: top, err
+        digits = -log10(epsilon(1.0_dp))
+        if (size(u) == 0) return
+        top = maxval(abs(u))
+        err = maxval(abs(e))
+        if (.not. top > 0.0_dp) return
+        if (err > epsilon(1.0_dp) * top) digits = max(0.0_dp, -log10(err / top))
+    end function answer_digits
 
     !> One .mess line per factorization: method, ordering, factor size, memory and time.
     function factorization_line(report) result(text)
@@ -313,8 +404,10 @@ contains
     !> Solves with the factor; with held equations (check off) the penalty that holds each
     !> one must carry (almost) nothing: then the equation is free and unloaded, solved with
     !> zero displacement and named once in the .mess; otherwise a load drives a free
-    !> motion and STATUS_SINGULAR names its node and component.
-    !>  r : inout, right-hand side (free equations) in, solution out
+    !> motion and STATUS_SINGULAR names its node and component. With rigid modes kept apart
+    !> the solution is in hat coordinates (two_level_solver: from_hat gives the
+    !> displacements, hat_body_part what the bodies see).
+    !>  r : inout, right-hand side (free equations) in, solution out (hat coordinates)
     !>  loaded_at : out, optional: when given, a loaded held equation is not an error; it is
     !>              named here (node, component, load carried) and r is zeroed; unallocated
     !>              when no held equation is loaded
@@ -335,11 +428,13 @@ contains
         logical :: have_held
         have_held = .false.
         if (allocated(held%equations)) have_held = size(held%equations) > 0
-        if (have_held) rhs = r
+        allocate (rhs(size(r)))
+        call to_hat(solver, r, rhs)
+        r = rhs
         call solve_in_range(s, map, matrix, solver, r, t, st)
         if (st%failed() .or. .not. have_held) return
         allocate (ax(size(r)))
-        call sym_matvec(matrix, r, ax)
+        call hat_product(solver, matrix, r, ax)
         scale = maxval(abs(rhs))
         roundoff = HELD_ROUNDOFF_FACTOR * epsilon(1.0_dp) * maxval(abs(sym_diagonal(matrix))) &
             * maxval(abs(r))

@@ -15,6 +15,7 @@ module contact_globalisation
     use contact_status, only: spring_law, spring_group
     use newton_factor, only: factor_status
     use factor_reuse, only: tangent_product
+    use two_level_solver, only: from_hat
     implicit none
     private
 
@@ -31,25 +32,27 @@ contains
     !> The step along the tangent correction p (contact_line_search): 1 unless springs
     !> change status on it and the full step fails Armijo's condition on the energy.
     !>  b : in, the residual the correction was solved for (f_ext - f_int, free equations)
-    !>  p : in, the correction
+    !>  ph : in, the correction, in the solver's hat coordinates (two_level_solver)
     !>  alpha : out, the step; full : out, alpha = 1
-    subroutine line_search(s, map, state, b, p, log, alpha, full, st)
+    subroutine line_search(s, map, state, b, ph, log, alpha, full, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(inout) :: state
-        real(dp), intent(in) :: b(:), p(:)
+        real(dp), intent(in) :: b(:), ph(:)
         type(analysis_log_t), intent(inout) :: log
         real(dp), intent(out) :: alpha
         logical, intent(out) :: full
         type(status_t), intent(out) :: st
         type(choc_line_t), allocatable :: lines(:)
-        real(dp), allocatable :: q(:)
+        real(dp), allocatable :: q(:), p(:)
         type(step_choice_t) :: choice
         character(len=16) :: buf
         real(dp) :: scale
         alpha = 1.0_dp
         full = .true.
-        if (size(map%springs) == 0 .or. .not. state%fac_valid .or. size(p) == 0) return
+        if (size(map%springs) == 0 .or. .not. state%fac_valid .or. size(ph) == 0) return
+        allocate (p(size(ph)))
+        call from_hat(state%solver, ph, p)
         ! energies in units of scale^2 (the search does not depend on it): no overflow
         scale = max(maxval(abs(state%u)), maxval(abs(p)))
         if (.not. scale > 0.0_dp) return
@@ -60,9 +63,9 @@ contains
         if (st%failed() .or. .not. any_crossing(lines)) return
         ! the curvature p^T K_S p of the tangent at u (element by element, as the residual)
         allocate (q(size(p)))
-        call tangent_product(s, map, state, state%closed, p / scale, q, st)
+        call tangent_product(s, map, state, state%closed, ph / scale, q, st)
         if (st%failed()) return
-        call choose_step(lines, -dot_product(p / scale, b / scale), dot_product(p / scale, q), &
+        call choose_step(lines, -dot_product(p / scale, b / scale), dot_product(ph / scale, q), &
             choice)
         if (.not. choice%damped) return
         alpha = choice%alpha

@@ -59,7 +59,8 @@ module contact_newton
     use analysis_result, only: result_concept_t, result_init, result_store, result_reserve
     use spring_results, only: store_spring_fields
     use analysis_log, only: analysis_log_t, log_add, log_flush
-    use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line
+    use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
+        solve_held, answer_digits, real_digits
     use analysis_excitation, only: excitation_t, loads_at
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
         step_pivots_t, residual_measures, criteria_met, absolute_tol, prediction_is_elastic, &
@@ -71,6 +72,7 @@ module contact_newton
     use factor_reuse, only: correction, judge_converged_tangent
     use contact_globalisation, only: line_search, check_no_equilibrium
     use newton_log, only: history_text, step_line, seconds_text, iteration_row
+    use two_level_solver, only: from_hat, hat_body_part
     use progress, only: wall_seconds, progress_note, progress_update, progress_done, &
         progress_context
     implicit none
@@ -138,7 +140,7 @@ contains
         if (st%failed()) return
         call log_numbering(map, options%factor, log)
         call sym_move(map%pattern, state%matrix)
-        call open_solver(options%factor, state%matrix, state%solver, log, st)
+        call open_solver(s, map, options%factor, state%matrix, state%solver, log, st)
         if (st%failed()) return
         state%solver%progress => options%progress
         call log_add(log, to_text(size(map%springs)) // ' ' // spring_law(s, map) // ' springs')
@@ -332,7 +334,7 @@ contains
         type(newton_summary_t), intent(inout) :: summary
         type(status_t), intent(out) :: st
         logical, allocatable :: start(:), history(:, :), full(:), tight(:)
-        real(dp), allocatable :: r(:), b(:), resi_history(:)
+        real(dp), allocatable :: r(:), b(:), x(:), du_body(:), resi_history(:)
         real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start, alpha
         integer(i4) :: iter, changed, use, mode
         logical :: zero_load, converged, said_zero, settled, solve_tightly, searchable
@@ -349,7 +351,8 @@ contains
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
             full(0:options%iter_glob_maxi), tight(0:options%iter_glob_maxi), &
-            resi_history(0:options%iter_glob_maxi), r(map%n_free))
+            resi_history(0:options%iter_glob_maxi), r(map%n_free), x(map%n_free), &
+            du_body(size(state%u)))
         state%factorizations = 0
         state%solves = 0
         state%updated = 0
@@ -397,12 +400,20 @@ contains
                 call line_search(s, map, state, b, r, log, alpha, full(iter), st)
             if (st%failed()) return
             call progress_update(options%progress, 'internal forces')
+            ! the correction r is in the solver's hat coordinates (two_level_solver): the
+            ! displacements move by all of it, the plates and plane solids see only the
+            ! part that deforms them (their forces on the rigid modes are zero)
+            call from_hat(state%solver, r, x)
             state%du = 0.0_dp
-            state%du(map%free_to_eq) = alpha * r
+            state%du(map%free_to_eq) = alpha * x
             state%u(map%free_to_eq) = state%u(map%free_to_eq) + state%du(map%free_to_eq)
+            call hat_body_part(state%solver, r, x)
+            du_body = 0.0_dp
+            du_body(map%free_to_eq) = alpha * x
             history(:, iter) = state%closed
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st, state%linear, history=state%history)
+                state%fint, state%closed, state%fn, st, state%linear, history=state%history, &
+                du_body=du_body)
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
@@ -445,6 +456,8 @@ contains
         end if
         call judge_converged_tangent(s, map, state, options, piv, t, log, st)
         if (st%failed()) return
+        call log_answer_digits(s, map, state, t, log, st)
+        if (st%failed()) return
         call contact_history_update(s, map, state%u, state%fn, state%history)
         call log_add(log, '  converged in ' // to_text(iter) // ' iteration(s), ' // &
             to_text(state%factorizations) // ' factorization(s); ' // &
@@ -479,6 +492,33 @@ contains
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
+
+    !> The .mess line on the digits the converged answer holds: one solve with the factor
+    !> for the final residual (computed from the increments, element by element: without
+    !> the contrast's cancellation) estimates the answer's error (answer_digits). Nothing
+    !> when no factor is usable (a loaded held equation, check off).
+    subroutine log_answer_digits(s, map, state, t, log, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: t
+        type(analysis_log_t), intent(inout) :: log
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: r(:), e(:)
+        character(len=:), allocatable :: loaded_at
+        if (.not. state%fac_valid .or. map%n_free == 0) return
+        r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
+        allocate (e(size(r)))
+        call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st, &
+            loaded_at)
+        if (st%failed() .or. allocated(loaded_at)) return
+        state%solves = state%solves + 1
+        call from_hat(state%solver, r, e)
+        call log_add(log, '  the answer holds ' // real_digits(answer_digits(e, &
+            state%u(map%free_to_eq))) // ' significant digits (correction for the final ' // &
+            'residual ' // real_short(maxval(abs(e))) // ' against the largest ' // &
+            'displacement ' // real_short(maxval(abs(state%u))) // ')')
+    end subroutine log_answer_digits
 
     !> Which matrix iteration `iter` of step `step` uses; marks a tangent to rebuild by
     !> dropping it (factor_and_diagnose then assembles and factors). With DIS_CHOC springs

@@ -9,7 +9,9 @@ module factor_reuse
     use status, only: status_t
     use strings, only: to_text, real_short
     use direct_solver, only: check_disabled, effective_nprec, DIGITS_ALL_LOST
-    use assembly_system, only: structure_t, assembly_map_t, linear_product
+    use assembly_system, only: structure_t, assembly_map_t, linear_product, body_product
+    use two_level_solver, only: to_hat, from_hat, hat_body_part, hat_anchors_from, &
+        modes_kept_apart
     use low_rank_update, only: pcg_work_t, pcg_begin, pcg_continue, pcg_options_t, &
         pcg_report_t, PCG_CONVERGED, PCG_BREAKDOWN
     use analysis_solver, only: pivot_diagnosis_t, report_pivots, solve_held, real_digits, &
@@ -200,7 +202,10 @@ contains
     !> q = K_S p on the free equations, K_S the tangent of contact status `closed`: every
     !> cell but the DIS_CHOC springs element by element (linear_product, the arithmetic
     !> of the residual, so CG can reach the tolerance the residual is judged by), plus the
-    !> closed matrix of each spring closed in `closed`.
+    !> closed matrix of each spring closed in `closed`. With rigid modes kept apart
+    !> (two_level_solver) p and q are in its hat coordinates: the plates and plane solids
+    !> see only the part of p that deforms them (hat_body_part), the springs all of it
+    !> (from_hat), and the anchors get R^T of the springs' forces alone (R^T K_b = 0).
     subroutine tangent_product(s, map, state, closed, p, q, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -209,13 +214,42 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: q(:)
         type(status_t), intent(out) :: st
+        real(dp), allocatable :: x(:), qs(:)
+        if (.not. modes_kept_apart(state%solver)) then
+            state%du = 0.0_dp
+            state%du(map%free_to_eq) = p
+            call linear_product(s, map, state%linear, state%du, state%work, st)
+            if (st%failed()) return
+            q = state%work(map%free_to_eq)
+            call add_closed_blocks(state, closed, p, q)
+            return
+        end if
+        allocate (x(size(p)), qs(size(p)))
+        call from_hat(state%solver, p, x)
+        state%du = 0.0_dp
+        state%du(map%free_to_eq) = x
+        call linear_product(s, map, state%linear, state%du, state%work, st, support_only=.true.)
+        if (st%failed()) return
+        qs = state%work(map%free_to_eq)
+        call add_closed_blocks(state, closed, x, qs)
+        call hat_body_part(state%solver, p, x)
+        state%du = 0.0_dp
+        state%du(map%free_to_eq) = x
+        call body_product(s, map, state%linear, state%du, state%work, st)
+        if (st%failed()) return
+        q = qs + state%work(map%free_to_eq)
+        call to_hat(state%solver, qs, x)
+        call hat_anchors_from(state%solver, x, q)
+    end subroutine tangent_product
+
+    !> q <- q + the closed matrix of every spring closed in `closed` times p.
+    subroutine add_closed_blocks(state, closed, p, q)
+        type(newton_state_t), intent(in) :: state
+        logical, intent(in) :: closed(:)
+        real(dp), intent(in) :: p(:)
+        real(dp), intent(inout) :: q(:)
         integer(i4) :: b, i, j, m, ei, ej
         real(dp) :: t
-        state%du = 0.0_dp
-        state%du(map%free_to_eq) = p
-        call linear_product(s, map, state%linear, state%du, state%work, st)
-        if (st%failed()) return
-        q = state%work(map%free_to_eq)
         do b = 1, size(closed, kind=i4)
             if (.not. closed(b)) cycle
             m = state%blocks%sizes(b)
@@ -230,10 +264,12 @@ contains
                 q(ei) = q(ei) + t
             end do
         end do
-    end subroutine tangent_product
+    end subroutine add_closed_blocks
 
     !> K_S x = b by CG preconditioned with the factor (low_rank_update), the products
     !> with K_S by tangent_product: the factor's status may be S (refinement) or another.
+    !>  b : in, the right-hand side (original coordinates)
+    !>  x : out, the solution in the solver's hat coordinates (two_level_solver)
     subroutine tangent_solve(s, map, state, closed, b, options, x, report, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
@@ -245,8 +281,11 @@ contains
         type(pcg_report_t), intent(out) :: report
         type(status_t), intent(out) :: st
         type(pcg_work_t) :: work
+        real(dp), allocatable :: bh(:)
         logical :: more
-        call pcg_begin(work, state%solver, b, options, report, more, st)
+        allocate (bh(size(b)))
+        call to_hat(state%solver, b, bh)
+        call pcg_begin(work, state%solver, bh, options, report, more, st)
         do while (more .and. st%ok())
             call tangent_product(s, map, state, closed, work%p, work%q, st)
             if (st%ok()) call pcg_continue(work, state%solver, report, more, st)

@@ -12,8 +12,8 @@ module newton_factor
     use direct_solver, only: solver_options_t, check_disabled
     use assembly_system, only: structure_t, assembly_map_t, assemble_stiffness
     use analysis_solver, only: pivot_diagnosis_t, factor_and_classify, report_pivots, &
-        solve_held, accumulate_pivots, PIVOT_REGULAR, PIVOT_FREE, PIVOT_ILL_CONDITIONED, &
-        PIVOT_UNKNOWN
+        solve_held, accumulate_pivots, modes_support, rigid_modes_of, PIVOT_REGULAR, &
+        PIVOT_FREE, PIVOT_ILL_CONDITIONED, PIVOT_UNKNOWN
     use analysis_log, only: analysis_log_t, log_add
     use newton_state, only: newton_state_t, step_pivots_t, MATRIX_NONE, MATRIX_ELASTIC, &
         MATRIX_TANGENT
@@ -72,7 +72,10 @@ contains
         if (st%ok() .and. use == MATRIX_ELASTIC) state%elastic_kind = diag%kind
         if (st%failed()) return
         state%factored = use
-        call accumulate_pivots(diag, state%pivots)
+        ! a free matrix is an error (its message gives its pivot), an overshooting
+        ! iterate's tangent that the elastic matrix replaces, or held equations (check
+        ! off, named in the .mess): no figure of the matrices the answer was solved with
+        if (diag%kind /= PIVOT_FREE) call accumulate_pivots(diag, state%pivots)
         if (diag%kind /= PIVOT_REGULAR .and. .not. check_disabled(state%solver%options)) &
             call log_add(log, '  INST ' // real_e13(t) // ': pivot ' // &
             trim(merge('free           ', 'ill-conditioned', diag%kind == PIVOT_FREE)) // &
@@ -100,25 +103,41 @@ contains
         type(status_t), intent(out) :: st
         type(analysis_log_t), intent(inout), optional :: log
         integer(i4), allocatable :: active(:), signs(:)
-        integer(i4) :: k, b, m
+        real(dp), allocatable :: ksr(:, :), r(:, :)
+        integer(i4), allocatable :: anchors(:)
+        integer(i4) :: k, b, m, i, j
         state%fac_valid = .false.
         call progress_update(state%solver%progress, 'assembly of the ' // &
             trim(merge('elastic', 'tangent', elastic)) // ' matrix')
         call assemble_stiffness(s, map, u_asm, elastic, state%matrix, st, state%linear, &
             state%history)
         if (st%failed()) return
+        call modes_support(s, map, state%solver, u_asm, elastic, ksr, st, state%history)
+        if (st%failed()) return
         if (.not. elastic .and. state%by_status) then
             call status_difference(closed, state%closed, active, signs)
+            if (size(ksr) > 0) call rigid_modes_of(state%solver, r, anchors)
             do k = 1, size(active)
                 b = active(k)
                 m = state%blocks%sizes(b)
                 call sym_add_element(state%matrix, state%blocks%eqs(1:m, b), &
                     real(signs(k), dp) * state%blocks%k(1:m, 1:m, b), st)
                 if (st%failed()) return
+                if (size(ksr) == 0) cycle
+                ! the same change in K_s R
+                do i = 1, m
+                    if (state%blocks%eqs(i, b) == 0) cycle
+                    do j = 1, m
+                        if (state%blocks%eqs(j, b) == 0) cycle
+                        ksr(state%blocks%eqs(i, b), :) = ksr(state%blocks%eqs(i, b), :) + &
+                            real(signs(k), dp) * state%blocks%k(i, j, b) * &
+                            r(state%blocks%eqs(j, b), :)
+                    end do
+                end do
             end do
         end if
-        call factor_and_classify(s, map, state%matrix, state%solver, diag, st, state%held, &
-            log)
+        call factor_and_classify(s, map, state%matrix, state%solver, ksr, diag, st, &
+            state%held, log)
         if (st%failed()) return
         state%fac_valid = .true.
         state%fac_closed = closed

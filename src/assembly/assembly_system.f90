@@ -11,18 +11,21 @@ module assembly_system
     use strings, only: to_text
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, MAX_CELL_NODES
     use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
-        is_discrete_2d, is_plane_strain, ELEM_NONE, ELEM_DIS_T_SEG2, ELEM_2D_DIS_T_SEG2, &
+        is_discrete_2d, is_plane_strain, is_discrete_rotational, ELEM_NONE, ELEM_DIS_T_SEG2, &
+        ELEM_2D_DIS_T_SEG2, &
         ELEM_DIS_T_POI1, ELEM_2D_DIS_T_POI1, ELEMENT_NAMES
     use model_material, only: material_field_t, material_t, material_of_cell, elastic_behaviour
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
-        ORIENT_ANGL_NAUT
+        ORIENT_ANGL_NAUT, cara_is_diagonal, cara_is_rotational
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
         rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
         expand_plate_blocks
     use element_plane, only: plane_elasticity_matrix, plane_stiffness
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
-        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness
+        dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness, discrete_local_matrix, &
+        discrete_rotate_to_global, plane_rotation, segment_rotation, segment_rotation_2d, &
+        nautical_rotation
     use element_dis_choc, only: dis_choc_seg2, dis_choc_2d_seg2, dis_choc_line_seg2, &
         choc_line_t
     use element_dis_contact, only: dis_contact_seg2, dis_contact_start
@@ -100,7 +103,8 @@ module assembly_system
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
-        spring_lines, linear_product, cell_response
+        spring_lines, linear_product, body_product, support_product, is_body_cell, &
+        cell_response
 
 contains
 
@@ -145,6 +149,12 @@ contains
                         what = law // ' but no material (AFFE_MATERIAU with DIS_CONTACT)'
                     else if (.not. s%materials%materials(m)%has_dis_contact) then
                         what = law // ' but no DIS_CONTACT in its material'
+                    else if (is_discrete_rotational(kind)) then
+                        call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
+                            cell_label(s%mesh, c, group_of) // ' (' // &
+                            trim(ELEMENT_NAMES(kind)) // ') is not built; use DIS_T or ' // &
+                            '2D_DIS_T springs')
+                        return
                     else if (s%mesh%cell_type(c) == CELL_POI1) then
                         call set_error(st, STATUS_NOT_IMPLEMENTED, law // ' on ' // &
                             cell_label(s%mesh, c, group_of) // ' (POI1) is not built; ' // &
@@ -414,26 +424,36 @@ contains
         if (allocated(s%dis_contact)) is_dis_contact = s%dis_contact(c)
     end function is_dis_contact
 
-    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation).
+    !> The discrete's own stiffness matrix (DISCRET / RIGI_PARASOL values, orientation:
+    !> ORIENTATION's angles are degrees, as Code_Aster's). Diagonal translational ones
+    !> (K_T_D_*) through the DIS_T kernels; the others (DIS_TR, full matrices) through
+    !> discrete_local_matrix / discrete_rotate_to_global (element_discrete).
     subroutine discrete_matrix(s, c, x, n, ke, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: c, n
         real(dp), intent(in) :: x(:, :)
         real(dp), intent(out) :: ke(n, n)
         type(status_t), intent(out) :: st
-        integer(i4) :: kind
+        real(dp), parameter :: DEGREE = acos(-1.0_dp) / 180.0_dp
+        integer(i4) :: kind, code
         real(dp) :: kv(6), angles(3), k6(6, 6), k4(4, 4), c3(3, 2), c2(2, 2)
         logical :: global
         kind = s%model%element(c)
-        c3 = x(:, 1:2)
+        code = s%cara%discrete_cara(c)
+        c3 = x(1:3, 1:2)
         c2 = x(1:2, 1:2)
         kv = s%cara%discrete_values(:, c)
         global = s%cara%discrete_repere(c) == REPERE_GLOBAL
         angles = 0.0_dp
         if (s%cara%orientation(c) == ORIENT_ANGL_VRIL) angles(3) = &
-            s%cara%orientation_values(1, c)
-        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = s%cara%orientation_values(:, c)
+            s%cara%orientation_values(1, c) * DEGREE
+        if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = &
+            s%cara%orientation_values(:, c) * DEGREE
         ke = 0.0_dp
+        if (.not. (cara_is_diagonal(code) .and. .not. cara_is_rotational(code))) then
+            call general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
+            return
+        end if
         select case (kind)
         case (ELEM_DIS_T_SEG2)
             call dis_t_seg2_stiffness(c3, kv(1:3), global, angles(3), k6, st)
@@ -447,6 +467,50 @@ contains
             call dis_2d_t_poi1_stiffness(kv(1:2), global, angles(1), ke)
         end select
     end subroutine discrete_matrix
+
+    ! A DIS_TR / 2D_DIS_TR discrete, or a full matrix (K_T_N, K_T_L, K_TR_N, K_TR_L): the
+    ! matrix in the discrete's frame, turned to the global one unless REPERE='GLOBAL'. The
+    ! frame: a SEG2's (local x along it, ANGL_VRIL), a POI1's ORIENTATION (2D: its first
+    ! angle about Z).
+    subroutine general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, n
+        real(dp), intent(in) :: x(:, :), kv(6), angles(3)
+        logical, intent(in) :: global
+        real(dp), intent(out) :: ke(n, n)
+        type(status_t), intent(out) :: st
+        integer(i4) :: kind, n_nodes, node_dofs, id
+        real(dp) :: kl(n, n), r(3, 3), r2(2, 2)
+        logical :: two_d
+        kind = s%model%element(c)
+        two_d = is_discrete_2d(kind)
+        n_nodes = merge(1_i4, 2_i4, s%mesh%cell_type(c) == CELL_POI1)
+        node_dofs = n / n_nodes
+        id = s%cara%discrete_matrix(c)
+        if (id > 0) then
+            kl = s%cara%matrices(id)%k
+        else
+            call discrete_local_matrix(kv(1:node_dofs), n_nodes, kl)
+        end if
+        if (global) then
+            ke = kl
+            return
+        end if
+        if (n_nodes == 2 .and. two_d) then
+            call segment_rotation_2d(x(1:2, 1), x(1:2, 2), r2, st)
+            r = 0.0_dp
+            r(1:2, 1:2) = r2
+            r(3, 3) = 1.0_dp
+        else if (n_nodes == 2) then
+            call segment_rotation(x(1:3, 1), x(1:3, 2), angles(3), r, st)
+        else if (two_d) then
+            r = plane_rotation(angles(1))
+        else
+            call nautical_rotation(angles, r)
+        end if
+        if (st%failed()) return
+        call discrete_rotate_to_global(kl, n_nodes, node_dofs, two_d, r, ke)
+    end subroutine general_discrete_matrix
 
     !> DIS_CONTACT on a SEG2 (element_dis_contact), from the spring's state at the start of
     !> the step (history) or, without one, the state before the first step.
@@ -781,7 +845,10 @@ contains
     !>  closed : out, (size(map%springs)) status of each DIS_CHOC spring
     !>  fn     : out, (size(map%springs)) normal force of each (<= 0 when closed)
     !>  history: in, optional, DIS_CONTACT state at the start of the step
-    subroutine internal_forces(s, map, u, fint, closed, fn, st, history)
+    !>  u_body : in, optional, (n_equations) what the plates and plane solids see: u minus
+    !>           the rigid modes the analysis keeps apart (their forces are zero, and
+    !>           leaving them out keeps the round-off of the stiff bodies' forces off them)
+    subroutine internal_forces(s, map, u, fint, closed, fn, st, history, u_body)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -789,18 +856,26 @@ contains
         logical, intent(out) :: closed(:)
         type(status_t), intent(out) :: st
         type(contact_history_t), intent(in), optional :: history
+        real(dp), intent(in), optional :: u_body(:)
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: f
-        logical :: is_closed
+        logical :: is_closed, body
         fint = 0.0_dp
         i_spring = 0
         do k = 1, size(map%cells)
             c = map%cells(k)
             call element_equations(s, c, eqs, n)
             call size_element_arrays(n, ke, fe)
-            call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
-                is_closed, f, st, map, history)
+            body = .false.
+            if (present(u_body)) body = is_body_cell(s, c)
+            if (body) then
+                call cell_response(s, c, gather(u_body, eqs, n), n, .false., .false., ke, &
+                    fe, is_closed, f, st, map, history)
+            else
+                call cell_response(s, c, gather(u, eqs, n), n, .false., .false., ke, fe, &
+                    is_closed, f, st, map, history)
+            end if
             if (st%failed()) return
             do j = 1, n
                 if (eqs(j) > 0) fint(eqs(j)) = fint(eqs(j)) + fe(j)
@@ -832,8 +907,11 @@ contains
     !>           tangent matrix at u_ref, and closed/fn are their state at u_ref. This is
     !>           the force of Code_Aster's prediction with imposed-value increments (the
     !>           second member of nsassp: the increments enter through the matrix).
+    !>  du_body: in, optional, (n_equations) the increment the plates and plane solids see:
+    !>           du minus the rigid modes the analysis keeps apart (K_lin R = 0; leaving
+    !>           them out keeps their round-off off f_lin)
     subroutine internal_forces_incremental(s, map, u, du, flin, fint, closed, fn, st, cache, &
-                                           u_ref, elastic_ref, history)
+                                           u_ref, elastic_ref, history, du_body)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:), du(:)
@@ -845,6 +923,7 @@ contains
         real(dp), intent(in), optional :: u_ref(:)
         logical, intent(in), optional :: elastic_ref
         type(contact_history_t), intent(in), optional :: history
+        real(dp), intent(in), optional :: du_body(:)
         integer(i4) :: k, c, n, j, i_spring, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: ue(MAX_ELEMENT_DOFS), ur(MAX_ELEMENT_DOFS)
@@ -854,7 +933,11 @@ contains
         if (present(cache)) then
             if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
             if (st%failed()) return
-            call add_cached_linear_forces(cache, du, flin)
+            if (present(du_body)) then
+                call add_cached_linear_forces(cache, du_body, flin)
+            else
+                call add_cached_linear_forces(cache, du, flin)
+            end if
         else
             do k = 1, size(map%cells)
                 c = map%cells(k)
@@ -862,8 +945,13 @@ contains
                 if (.not. linear) cycle
                 call element_equations(s, c, eqs, n)
                 call size_element_arrays(n, ke, fe)
-                call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, fe, &
-                    is_closed, f, st)
+                if (present(du_body)) then
+                    call cell_response(s, c, gather(du_body, eqs, n), n, .false., .false., &
+                        ke, fe, is_closed, f, st)
+                else
+                    call cell_response(s, c, gather(du, eqs, n), n, .false., .false., ke, &
+                        fe, is_closed, f, st)
+                end if
                 if (st%failed()) return
                 do j = 1, n
                     if (eqs(j) > 0) flin(eqs(j)) = flin(eqs(j)) + fe(j)
@@ -1002,21 +1090,26 @@ contains
     !>  cache : inout, the linear cells' matrices (built on the first call if needed)
     !>  du    : in, (n_equations); f : out, (n_equations)
     !>  st    : out, element failures, naming the cell
-    subroutine linear_product(s, map, cache, du, f, st)
+    !>  support_only : in, optional, .true.: leave the plates and plane solids (the cached
+    !>          cells, body_product) out
+    subroutine linear_product(s, map, cache, du, f, st, support_only)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(linear_cache_t), intent(inout) :: cache
         real(dp), intent(in) :: du(:)
         real(dp), intent(out) :: f(:)
         type(status_t), intent(out) :: st
+        logical, intent(in), optional :: support_only
         integer(i4) :: k, c, n, j, eqs(MAX_ELEMENT_DOFS)
         real(dp), allocatable :: ke(:, :), fe(:)
         real(dp) :: ue(MAX_ELEMENT_DOFS), fn
-        logical :: closed
+        logical :: closed, body
         if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
         if (st%failed()) return
         f = 0.0_dp
-        call add_cached_linear_forces(cache, du, f)
+        body = .true.
+        if (present(support_only)) body = .not. support_only
+        if (body) call add_cached_linear_forces(cache, du, f)
         do k = 1, size(map%cells)
             c = map%cells(k)
             if (cache%slot(k) > 0 .or. s%choc(c)) cycle
@@ -1030,6 +1123,72 @@ contains
             end do
         end do
     end subroutine linear_product
+
+    !> f = K_b du: the product of the plates and plane solids (the bodies' cells, cached)
+    !> with du, element by element with each cell's rigid motion removed first (as the
+    !> incremental forces).
+    !>  du, f : (n_equations)
+    !>  st    : out, element failures while the cache is built, naming the cell
+    subroutine body_product(s, map, cache, du, f, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        real(dp), intent(in) :: du(:)
+        real(dp), intent(out) :: f(:)
+        type(status_t), intent(out) :: st
+        if (.not. cache%ready) call build_linear_cache(s, map, cache, st)
+        if (st%failed()) return
+        f = 0.0_dp
+        call add_cached_linear_forces(cache, du, f)
+    end subroutine body_product
+
+    !> y = K_s x for several vectors on the free equations: K_s the stiffness of every cell
+    !> but the plates and plane solids (springs, discrete elements), as assemble_stiffness
+    !> builds it at u (elastic or at the springs' status there). What the rigid modes of
+    !> spring-held bodies need (K_s R): the bodies' own cells give K_b R = 0.
+    !>  u       : in, (n_equations) the displacements the matrix is assembled at
+    !>  elastic : in, as assemble_stiffness
+    !>  x       : in, (n_free, m); y : out, (n_free, m)
+    !>  st      : out, element failures, naming the cell
+    !>  history : in, optional, DIS_CONTACT state at the start of the step
+    subroutine support_product(s, map, u, elastic, x, y, st, history)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: u(:), x(:, :)
+        logical, intent(in) :: elastic
+        real(dp), intent(out) :: y(:, :)
+        type(status_t), intent(out) :: st
+        type(contact_history_t), intent(in), optional :: history
+        integer(i4) :: k, c, n, i, j, eqs(MAX_ELEMENT_DOFS), free(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:)
+        real(dp) :: fn
+        logical :: closed
+        y = 0.0_dp
+        do k = 1, size(map%cells)
+            c = map%cells(k)
+            if (is_body_cell(s, c)) cycle
+            call element_equations(s, c, eqs, n)
+            call size_element_arrays(n, ke, fe)
+            call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
+                fn, st, map, history)
+            if (st%failed()) return
+            free(1:n) = free_of(map, eqs(1:n))
+            do i = 1, n
+                if (free(i) == 0) cycle
+                do j = 1, n
+                    if (free(j) > 0) y(free(i), :) = y(free(i), :) + ke(i, j) * x(free(j), :)
+                end do
+            end do
+        end do
+    end subroutine support_product
+
+    !> Plates and plane solids: the cells whose rigid motions have zero energy (the bodies
+    !> of analysis rigid_bodies; the linear cells of the cache).
+    pure logical function is_body_cell(s, c)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        is_body_cell = is_plate(s%model%element(c)) .or. is_plane_solid(s%model%element(c))
+    end function is_body_cell
 
     !> Computes the linear cells' data of `cache` (see linear_cache_t), in map%cells order.
     !>  st : out, element failures (material, geometry), naming the cell

@@ -10,6 +10,8 @@ module command_registration
     use impr_resu_command, only: run_impr_resu
     use crea_champ_command, only: run_crea_champ
     use calc_champ_command, only: run_calc_champ
+    use crea_resu_command, only: run_crea_resu
+    use post_champ_command, only: run_post_champ
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage
@@ -24,6 +26,10 @@ module command_registration
     use crea_table_command, only: run_crea_table
     use calc_table_command, only: run_calc_table
     use lire_table_command, only: run_lire_table
+    use recu_fonction_command, only: run_recu_fonction
+    use calc_fonction_command, only: run_calc_fonction
+    use test_fonction_command, only: run_test_fonction
+    use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
     use impr_table_command, only: run_impr_table
     implicit none
@@ -48,6 +54,8 @@ contains
         call ctx%register('IMPR_RESU', run_impr_resu)
         call ctx%register('CREA_CHAMP', run_crea_champ)
         call ctx%register('CALC_CHAMP', run_calc_champ, reuse=.true.)
+        call ctx%register('CREA_RESU', run_crea_resu, reuse=.true.)
+        call ctx%register('POST_CHAMP', run_post_champ)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)
@@ -67,6 +75,10 @@ contains
         call ctx%register('CREA_TABLE', run_crea_table)
         call ctx%register('CALC_TABLE', run_calc_table)
         call ctx%register('LIRE_TABLE', run_lire_table)
+        call ctx%register('RECU_FONCTION', run_recu_fonction)
+        call ctx%register('CALC_FONCTION', run_calc_fonction)
+        call ctx%register('TEST_FONCTION', run_test_fonction)
+        call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)
         call ctx%register('IMPR_TABLE', run_impr_table)
     end subroutine register_commands

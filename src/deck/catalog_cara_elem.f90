@@ -18,6 +18,7 @@ contains
         call c%command('AFFE_CARA_ELEM', 'cara_elem')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('VERIF', 'TXM', max=MANY, into='MAILLE')
         call c%fact('COQUE', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('EPAIS', 'R', req=.true., vmax=MAX_LENGTH, vtiny=MIN_LENGTH)  ! > 0: handler
@@ -32,10 +33,10 @@ contains
         call c%rule(RULE_EXCLUS, 'ANGL_REP VECTEUR')
         call c%end_fact()
         call c%fact('DISCRET', max=MANY)
-        call describe_discrete(c, K_CARA)
+        call describe_discrete(c, .false.)
         call c%end_fact()
         call c%fact('DISCRET_2D', max=MANY)
-        call describe_discrete(c, K_CARA)
+        call describe_discrete(c, .true.)
         call c%end_fact()
         call c%fact('ORIENTATION', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
@@ -61,17 +62,60 @@ contains
         call c%rule(RULE_EXCLUS, 'GROUP_NO_CENTRE NOEUD_CENTRE COOR_CENTRE')
         call c%end_fact()
         call c%rule(RULE_AU_MOINS_UN, 'COQUE DISCRET DISCRET_2D ORIENTATION RIGI_PARASOL')
+        call c%rule(RULE_EXCLUS, 'DISCRET DISCRET_2D')
     end subroutine describe_cara_elem
 
-    subroutine describe_discrete(c, cara)
+    ! DISCRET / DISCRET_2D as Code_Aster's catalog (affe_cara_elem.py): SYME 'OUI' takes
+    ! the 24 characteristics K_, M_, A_ (stiffness, mass, damping), SYME 'NON' the 12 full
+    ! ones; each CARA its GROUP_MA and its number of VALE (3D | 2D): a diagonal one its
+    ! DOFs per node; a full one the upper triangle by column (SYME 'OUI') or the whole
+    ! matrix by column ('NON'); M_T_D_* the mass, M_TR_D_N the mass, inertia tensor and
+    ! offset, M_TR_D_L the mass and inertia.
+    subroutine describe_discrete(c, two_d)
         type(catalog_t), intent(inout) :: c
-        character(len=*), intent(in) :: cara
-        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
-        call c%key('CARA', 'TXM', req=.true., into=cara)
-        call c%key('VALE', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
-                   vtiny=MIN_MODULUS)
-        call c%key('REPERE', 'TXM', def='GLOBAL', into='GLOBAL LOCAL')
+        logical, intent(in) :: two_d
+        character(len=*), parameter :: SYMMETRIC = 'K_T_D_N K_T_D_L K_TR_D_N K_TR_D_L ' // &
+            'K_T_N K_T_L K_TR_N K_TR_L M_T_D_N M_T_D_L M_TR_D_N M_TR_D_L M_T_N M_T_L ' // &
+            'M_TR_N M_TR_L A_T_D_N A_T_D_L A_TR_D_N A_TR_D_L A_T_N A_T_L A_TR_N A_TR_L'
+        character(len=*), parameter :: FULL = 'K_T_N K_T_L K_TR_N K_TR_L M_T_N M_T_L ' // &
+            'M_TR_N M_TR_L A_T_N A_T_L A_TR_N A_TR_L'
+        call c%key('REPERE', 'TXM', def='GLOBAL', into='LOCAL GLOBAL')
+        call c%key('AMOR_HYST', 'R', noop=.true.)
         call c%key('SYME', 'TXM', def='OUI', into=OUI_NON)
+        call c%bloc(key='SYME', equals='OUI')
+        call c%key('CARA', 'TXM', into=SYMMETRIC)
+        call values_bloc('K_T_D_N A_T_D_N', 3, 2)
+        call values_bloc('K_T_D_L A_T_D_L', 3, 2)
+        call values_bloc('K_TR_D_N A_TR_D_N', 6, 3)
+        call values_bloc('K_TR_D_L A_TR_D_L', 6, 3)
+        call values_bloc('K_T_N A_T_N M_T_N', 6, 3)
+        call values_bloc('K_T_L A_T_L M_T_L', 21, 10)
+        call values_bloc('K_TR_N A_TR_N M_TR_N', 21, 6)
+        call values_bloc('K_TR_L A_TR_L M_TR_L', 78, 21)
+        call values_bloc('M_T_D_N', 1, 1)
+        call values_bloc('M_T_D_L', 1, 1)
+        call values_bloc('M_TR_D_N', 10, 4)
+        call values_bloc('M_TR_D_L', 4, 2)
+        call c%end_bloc()
+        call c%bloc(key='SYME', equals='NON')
+        call c%key('CARA', 'TXM', into=FULL)
+        call values_bloc('K_T_N A_T_N M_T_N', 9, 4)
+        call values_bloc('K_T_L A_T_L M_T_L', 36, 16)
+        call values_bloc('K_TR_N A_TR_N M_TR_N', 36, 9)
+        call values_bloc('K_TR_L A_TR_L M_TR_L', 144, 36)
+        call c%end_bloc()
+    contains
+        subroutine values_bloc(caras, n3, n2)
+            character(len=*), intent(in) :: caras
+            integer, intent(in) :: n3, n2
+            integer :: n
+            n = merge(n2, n3, two_d)
+            call c%bloc(key='CARA', equals=caras)
+            call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+            call c%key('VALE', 'R', min=n, max=n, req=.true., vmin=-MAX_MODULUS, &
+                       vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+            call c%end_bloc()
+        end subroutine values_bloc
     end subroutine describe_discrete
 
 end module catalog_cara_elem

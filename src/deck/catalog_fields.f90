@@ -139,7 +139,102 @@ contains
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%key('TITRE', 'TXM', noop=.true.)
         call describe_calc_champ(c)
+        call describe_crea_resu(c)
+        call describe_post_champ(c)
     end subroutine describe_fields
+
+    !> POST_CHAMP (code_aster/Cata/Commands/post_champ.py, U4.81.05): the result's type.
+    subroutine describe_post_champ(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI
+        type(catalog_t), intent(inout) :: c
+        character(len=*), parameter :: EXTR = 'EPEQ_ELGA EPEQ_ELNO EPSI_ELGA EPSI_ELNO ' // &
+            'SIEF_ELGA SIEF_ELNO SIEQ_ELGA SIEQ_ELNO SIGM_ELGA SIGM_ELNO VARC_ELGA VARC_ELNO ' // &
+            'VARI_ELGA VARI_ELNO EPVC_ELGA EPVC_ELNO EPME_ELGA EPME_ELNO EPSP_ELGA EPSP_ELNO'
+        call c%command('POST_CHAMP', '@RESULTAT')
+        call c%key('RESULTAT', 'RESU', req=.true.)
+        call c%rule(RULE_UN_PARMI, 'EXTR_COQUE EXTR_TUYAU EXTR_PMF MIN_MAX_SP COQU_EXCENT')
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('NUME_MODE', 'I', max=MANY, noop=.true.)
+        call c%key('NOEUD_CMP', 'TXM', max=MANY, noop=.true.)
+        call c%key('NOM_CAS', 'TXM', max=MANY, noop=.true.)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%key('FREQ', 'R', max=MANY, noop=.true.)
+        call c%key('LIST_FREQ', 'listr8', noop=.true.)
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST FREQ NUME_MODE NOEUD_CMP ' // &
+            'LIST_INST LIST_FREQ NOM_CAS')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
+        call c%fact('EXTR_COQUE')
+        call c%key('NOM_CHAM', 'TXM', req=.true., max=MANY, into=EXTR)
+        call c%key('NUME_COUCHE', 'I', req=.true., vmin=1.0_dp)
+        call c%key('NIVE_COUCHE', 'TXM', req=.true., into='SUP INF MOY')
+        call c%end_fact()
+        call c%fact('EXTR_TUYAU')
+        call c%key('NOM_CHAM', 'TXM', req=.true., max=MANY, into=EXTR)
+        call c%key('NUME_COUCHE', 'I', req=.true., vmin=1.0_dp)
+        call c%key('NIVE_COUCHE', 'TXM', req=.true., into='SUP INF MOY')
+        call c%key('ANGLE', 'I', req=.true., vmin=0.0_dp, vmax=360.0_dp)
+        call c%end_fact()
+        call c%fact('EXTR_PMF')
+        call c%key('NOM_CHAM', 'TXM', req=.true., max=MANY, into=EXTR)
+        call c%key('NUME_FIBRE', 'I', req=.true., vmin=1.0_dp)
+        call c%end_fact()
+        call c%fact('MIN_MAX_SP', max=MANY)
+        call c%key('NOM_CHAM', 'TXM', req=.true., into=EXTR)
+        call c%key('NOM_CMP', 'TXM')
+        call c%key('NOM_VARI', 'TXM')
+        call c%rule(RULE_UN_PARMI, 'NOM_CMP NOM_VARI')
+        call c%key('TYPE_MAXI', 'TXM', req=.true., into='MAXI MINI MAXI_ABS MINI_ABS')
+        call c%key('NUME_CHAM_RESU', 'I', req=.true., vmin=1.0_dp, vmax=20.0_dp)
+        call c%end_fact()
+        call c%fact('COQU_EXCENT', max=2)
+        call c%key('NOM_CHAM', 'TXM', req=.true., into='EFGE_ELNO EFGE_ELGA')
+        call c%key('MODI_PLAN', 'TXM', req=.true., into='OUI')
+        call c%end_fact()
+    end subroutine describe_post_champ
+
+    !> CREA_RESU (code_aster/Cata/Commands/crea_resu.py, U4.44.12): its result type is
+    !> TYPE_RESU's ('@TYPE_RESU'); the AFFE block's keywords; the other operations are
+    !> refused by the handler as not built.
+    subroutine describe_crea_resu(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+        type(catalog_t), intent(inout) :: c
+        call c%command('CREA_RESU', '@TYPE_RESU', reentrant='f:RESULTAT')
+        call c%key('OPERATION', 'TXM', req=.true., into='AFFE ASSE PERM_CHAM PROL_RTZ ' // &
+            'PREP_VARC KUCV CONV_CHAR CONV_RESU')
+        call c%key('TYPE_RESU', 'TXM', req=.true., into='MODE_MECA MODE_MECA_C MULT_ELAS ' // &
+            'EVOL_ELAS EVOL_NOLI DYNA_HARMO DYNA_TRANS FOURIER_ELAS FOURIER_THER EVOL_THER ' // &
+            'EVOL_VARC EVOL_CHAR EVOL_SECH')
+        call c%key('RESULTAT', 'RESU')
+        call c%fact('AFFE', max=MANY)
+        call c%key('CHAM_GD', 'CHAM_GD', req=.true.)
+        call c%key('NOM_CHAM', 'TXM', req=.true., into=NOM_CHAM_NAMES // ' FLUN')
+        call c%key('MODELE', 'modele')
+        call c%key('CHAM_MATER', 'cham_mater')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%key('CHARGE', 'char_meca', max=MANY, noop=.true.)
+        call c%key('NOM_CAS', 'TXM')
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'INST LIST_INST NOM_CAS')
+        call c%key('NUME_INIT', 'I', vmin=1.0_dp)
+        call c%key('NUME_FIN', 'I', vmin=1.0_dp)
+        call c%key('PRECISION', 'R', def='0.0', vmin=0.0_dp)
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%end_fact()
+        call c%fact('PREP_VARC')
+        call c%key('MODELE', 'modele', req=.true.)
+        call c%key('CARA_ELEM', 'cara_elem', req=.true.)
+        call c%key('EVOL_THER', 'evol_ther', req=.true.)
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('TITRE', 'TXM', noop=.true.)
+    end subroutine describe_crea_resu
 
     !> CALC_CHAMP (code_aster/Cata/Commands/calc_champ.py, U4.81.04): the result's own type
     !> ('@RESULTAT'); the options of each keyword are Code_Aster's for linear and non-linear

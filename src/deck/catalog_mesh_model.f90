@@ -22,7 +22,7 @@ contains
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('PHENOMENE', 'TXM', req=.true., into='MECANIQUE')
         call c%key('MODELISATION', 'TXM', max=MANY, req=.true., &
-                   into='DKT D_PLAN C_PLAN DIS_T 2D_DIS_T')
+                   into='DKT D_PLAN C_PLAN DIS_T 2D_DIS_T DIS_TR 2D_DIS_TR')
         call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
         call c%end_fact()
         call c%key('INFO', 'I', def='1', into='1 2')

@@ -18,6 +18,7 @@ module deck_catalog_data
     use catalog_results, only: describe_outputs
     use catalog_fields, only: describe_fields
     use catalog_tables, only: describe_tables
+    use catalog_result_functions, only: describe_result_functions
     implicit none
     private
     public :: build_catalog
@@ -39,6 +40,7 @@ contains
         call describe_outputs(cat)
         call describe_fields(cat)
         call describe_tables(cat)
+        call describe_result_functions(cat)
     end subroutine build_catalog
 
 end module deck_catalog_data

@@ -776,7 +776,7 @@ contains
             case ('FUNC')
                 out = out // ' fonction formule'
             case ('RESU', '@TYPE_RESU', '@RESULTAT')
-                out = out // ' evol_elas evol_noli evol_ther'
+                out = out // ' evol_elas evol_noli evol_ther evol_sech evol_varc evol_char'
             case ('CHAM_GD', '@TYPE_CHAM')   ! Code_Aster's cham_gd_sdaster: any field
                 out = out // ' cham_no_sdaster cham_elem carte_sdaster'
             case default

@@ -13,6 +13,15 @@
 !>   local y is horizontal (in the global XY plane). In 2D the local x is along v and
 !>   local y = z x local x.
 !> SEG2 matrix (Code_Aster K_T_D_L): [[K, -K], [-K, K]] with K = P^T diag(k) P.
+!>
+!> Any other discrete (DIS_TR, 2D_DIS_TR, full matrices K_T_N, K_T_L, K_TR_N, K_TR_L) goes
+!> through the general pair discrete_local_matrix / discrete_rotate_to_global: the element
+!> matrix in the discrete's frame (a diagonal characteristic gives diag(k) on a node and
+!> [[K, -K], [-K, K]] on a link; a full one is the matrix itself), then
+!> K_global = T^T K_local T, T = blockdiag over the nodes of the node rotation: P on the
+!> translations and P again on the rotations (DIS_TR: DRX, DRY, DRZ turn as a vector);
+!> in 2D the 2x2 rotation on (DX, DY), DRZ unchanged. DOF order node by node: DIS_TR
+!> (DX, DY, DZ, DRX, DRY, DRZ), 2D_DIS_TR (DX, DY, DRZ).
 module element_discrete
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -23,6 +32,7 @@ module element_discrete
     public :: dis_t_seg2_stiffness, dis_t_poi1_stiffness
     public :: dis_2d_t_seg2_stiffness, dis_2d_t_poi1_stiffness
     public :: spring_internal_forces
+    public :: discrete_local_matrix, discrete_rotate_to_global, plane_rotation
 
 contains
 
@@ -181,6 +191,69 @@ contains
         real(dp), intent(out) :: fe(:)
         fe = matmul(ke, ue)
     end subroutine spring_internal_forces
+
+    !> The element matrix of a diagonal characteristic in the discrete's frame: diag(k) on a
+    !> node, [[K, -K], [-K, K]] with K = diag(k) on a link.
+    !>  k       : in, k(node_dofs) the diagonal (K_T_D_*, K_TR_D_* values)
+    !>  n_nodes : in, 1 (POI1) or 2 (SEG2)
+    !>  kl      : out, kl(n_nodes node_dofs, n_nodes node_dofs)
+    pure subroutine discrete_local_matrix(k, n_nodes, kl)
+        real(dp), intent(in) :: k(:)
+        integer(i4), intent(in) :: n_nodes
+        real(dp), intent(out) :: kl(:, :)
+        integer(i4) :: i, nd
+        nd = size(k, kind=i4)
+        kl = 0.0_dp
+        do i = 1, nd
+            kl(i, i) = k(i)
+            if (n_nodes == 2) then
+                kl(nd + i, nd + i) = k(i)
+                kl(i, nd + i) = -k(i)
+                kl(nd + i, i) = -k(i)
+            end if
+        end do
+    end subroutine discrete_local_matrix
+
+    !> K_global = T^T K_local T (module header).
+    !>  kl        : in, kl(nd, nd), nd = n_nodes node_dofs, in the discrete's frame
+    !>  n_nodes   : in, 1 or 2
+    !>  node_dofs : in, 2 (2D_DIS_T), 3 (DIS_T or 2D_DIS_TR) or 6 (DIS_TR)
+    !>  two_d     : in, a 2D discrete (r(1:2, 1:2) is its rotation)
+    !>  r         : in, 3x3 rotation, rows = local axes (2D: in r(1:2, 1:2))
+    !>  ke        : out, ke(nd, nd)
+    pure subroutine discrete_rotate_to_global(kl, n_nodes, node_dofs, two_d, r, ke)
+        real(dp), intent(in) :: kl(:, :), r(3, 3)
+        integer(i4), intent(in) :: n_nodes, node_dofs
+        logical, intent(in) :: two_d
+        real(dp), intent(out) :: ke(:, :)
+        real(dp) :: t(12, 12), tn(6, 6)
+        integer(i4) :: nd, a
+        nd = n_nodes * node_dofs
+        tn = 0.0_dp
+        if (two_d) then
+            tn(1:2, 1:2) = r(1:2, 1:2)
+            if (node_dofs == 3) tn(3, 3) = 1.0_dp
+        else
+            tn(1:3, 1:3) = r
+            if (node_dofs == 6) tn(4:6, 4:6) = r
+        end if
+        t = 0.0_dp
+        do a = 0, n_nodes - 1
+            t(a * node_dofs + 1:(a + 1) * node_dofs, a * node_dofs + 1:(a + 1) * node_dofs) = &
+                tn(1:node_dofs, 1:node_dofs)
+        end do
+        ke(1:nd, 1:nd) = matmul(transpose(t(1:nd, 1:nd)), matmul(kl(1:nd, 1:nd), t(1:nd, 1:nd)))
+    end subroutine discrete_rotate_to_global
+
+    !> The 2D rotation of angle a about Z as a 3x3 (rows = local axes; r(3,3) = 1).
+    pure function plane_rotation(a) result(r)
+        real(dp), intent(in) :: a
+        real(dp) :: r(3, 3)
+        r = 0.0_dp
+        r(1, 1:2) = [cos(a), sin(a)]
+        r(2, 1:2) = [-sin(a), cos(a)]
+        r(3, 3) = 1.0_dp
+    end function plane_rotation
 
     pure function diagonal3(k) result(d)
         real(dp), intent(in) :: k(3)

@@ -12,7 +12,7 @@ module cara_elem_commands
     use mesh_command_support, only: relocate_error, read_groups, group_cells
     use model_concept, only: model_concept_t
     use model_cara_elem, only: cara_elem_init, assign_coque, assign_discrete, &
-        assign_orientation, discrete_value_count, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N
+        assign_orientation, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N
     use model_rigi_parasol, only: rigi_parasol_table_t, compute_rigi_parasol, &
         apply_rigi_parasol, rigi_parasol_lines, cell_centre_distances, raft_from_groups, &
         parasol_centre
@@ -42,12 +42,16 @@ contains
         type(cara_elem_concept_t), allocatable :: cc
         class(concept_t), pointer :: p
         integer(i4) :: i, info
+        logical :: verify
         call cmd%get_concept('MODELE', p, st)
         if (st%failed()) return
         select type (p)
         type is (model_concept_t)
             call cmd%get_int('INFO', info, st)
             if (st%failed()) return
+            ! VERIF='MAILLE': a cell of a DISCRET group without a discrete element is an
+            ! error (Code_Aster's vafcar); without it such cells are passed over
+            verify = cmd%given('VERIF')
             allocate (cc)
             call cara_elem_init(cc%cara, p%mesh)
             do i = 1, cmd%count('COQUE')
@@ -55,12 +59,13 @@ contains
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('DISCRET')
-                call discrete_occurrence(cmd%occurrence('DISCRET', i), 'DISCRET', p, cc, st)
+                call discrete_occurrence(ctx, cmd%occurrence('DISCRET', i), 'DISCRET', p, cc, &
+                                         verify, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('DISCRET_2D')
-                call discrete_occurrence(cmd%occurrence('DISCRET_2D', i), 'DISCRET_2D', p, &
-                                         cc, st)
+                call discrete_occurrence(ctx, cmd%occurrence('DISCRET_2D', i), 'DISCRET_2D', &
+                                         p, cc, verify, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('ORIENTATION')
@@ -136,37 +141,49 @@ contains
         end do
     end subroutine coque_occurrence
 
-    ! DISCRET / DISCRET_2D: CARA, VALE (count checked at VALE), REPERE on each group.
-    subroutine discrete_occurrence(occ, keyword, mc, cc, st)
+    ! DISCRET / DISCRET_2D: CARA, VALE (count checked at VALE), REPERE, SYME on each
+    ! group; an occurrence without CARA (the catalog allows it) does nothing. Cells without
+    ! a discrete element are passed over unless VERIF (a note in the .mess says how many).
+    subroutine discrete_occurrence(ctx, occ, keyword, mc, cc, verify, st)
+        type(run_context_t), intent(inout) :: ctx
         type(keyword_set_t), intent(in) :: occ
         character(len=*), intent(in) :: keyword
         type(model_concept_t), intent(in) :: mc
         type(cara_elem_concept_t), intent(inout) :: cc
+        logical, intent(in) :: verify
         type(status_t), intent(out) :: st
         type(string_t), allocatable :: names(:)
         integer(i4), allocatable :: groups(:)
-        character(len=:), allocatable :: cara, repere
+        character(len=:), allocatable :: cara, repere, syme
         real(dp), allocatable :: vale(:)
-        integer(i4) :: g, n
+        integer(i4) :: g, skipped, total
+        if (.not. occ%has('CARA')) return
         call occ%get_text('CARA', cara, st)
         if (st%ok()) call occ%get_text('REPERE', repere, st)
+        if (st%ok()) call occ%get_text('SYME', syme, st)
         if (st%ok()) call occ%get_reals('VALE', vale, st)
         if (st%failed()) return
-        n = discrete_value_count(parse_cara(cara), keyword == 'DISCRET_2D')
-        if (size(vale) /= n) then
-            call occ%error_at('VALE', cara // ' needs ' // to_text(n) // ' values, got ' // &
-                to_text(size(vale, kind=i4)), st, code=STATUS_MODEL_ERROR)
-            return
-        end if
         call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
         if (st%failed()) return
+        total = 0
         do g = 1, size(groups)
             call assign_discrete(cc%cara, mc%model, mc%mesh, &
                 cells_of_group(mc%mesh, groups(g)), keyword, cara, vale, repere, st, &
-                group=names(g)%s)
-            call relocate_error(occ, 'CARA', st)
+                group=names(g)%s, symmetric=to_upper(syme) == 'OUI', verify=verify, &
+                n_skipped=skipped)
+            if (index(st%message, 'values in VALE') > 0) then
+                call relocate_error(occ, 'VALE', st)
+            else if (index(st%message, 'SYME') > 0) then
+                call relocate_error(occ, 'SYME', st)
+            else
+                call relocate_error(occ, 'CARA', st)
+            end if
             if (st%failed()) return
+            total = total + skipped
         end do
+        if (total > 0) call ctx%write_mess('    ' // keyword // ' ' // to_upper(cara) // &
+            ': ' // to_text(total) // ' cell(s) of its groups carry no discrete element: ' &
+            // 'passed over (VERIF=''MAILLE'' makes that an error)')
     end subroutine discrete_occurrence
 
     ! ORIENTATION: CARA and VALE (count checked at VALE) on the discrete cells of each group.

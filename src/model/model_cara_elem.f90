@@ -2,22 +2,31 @@
 !> stored per cell. RIGI_PARASOL (model_rigi_parasol) fills the DISCRET data of springs.
 module model_cara_elem
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text, to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
-    use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, ELEMENT_NAMES
+    use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, &
+        is_discrete_rotational, ELEMENT_NAMES
     implicit none
     private
 
     !> Code_Aster default of COQUE/COEF_RIGI_DRZ (fictitious drilling stiffness ratio).
     real(dp), parameter, public :: DEFAULT_COEF_RIGI_DRZ = 1.0e-5_dp
 
-    !> Discrete characteristics (CARA of DISCRET): K = stiffness, T = translations,
-    !> TR = translations + rotations, D = diagonal, N = on a node (POI1), L = on a link (SEG2).
+    !> Discrete stiffness characteristics (CARA of DISCRET, U4.42.01): K = stiffness,
+    !> T = translations, TR = translations + rotations, D = diagonal (else the full matrix),
+    !> N = on a node (POI1), L = on a link (SEG2). The masses (M_*) and dampings (A_*) of the
+    !> same names are accepted and checked against the cells, and play no part in statics.
     integer(i4), parameter, public :: CARA_NONE = 0, CARA_K_T_D_N = 1, CARA_K_T_D_L = 2, &
-        CARA_K_TR_D_N = 3, CARA_K_TR_D_L = 4
-    character(len=8), parameter, public :: CARA_NAMES(4) = ['K_T_D_N ', 'K_T_D_L ', &
-        'K_TR_D_N', 'K_TR_D_L']
+        CARA_K_TR_D_N = 3, CARA_K_TR_D_L = 4, CARA_K_T_N = 5, CARA_K_T_L = 6, &
+        CARA_K_TR_N = 7, CARA_K_TR_L = 8
+    character(len=8), parameter, public :: CARA_NAMES(8) = ['K_T_D_N ', 'K_T_D_L ', &
+        'K_TR_D_N', 'K_TR_D_L', 'K_T_N   ', 'K_T_L   ', 'K_TR_N  ', 'K_TR_L  ']
+
+    !> A full discrete matrix (K_T_N, K_T_L, K_TR_N, K_TR_L), in the frame of its REPERE.
+    type, public :: discrete_matrix_t
+        real(dp), allocatable :: k(:, :)
+    end type discrete_matrix_t
     integer(i4), parameter, public :: REPERE_GLOBAL = 1, REPERE_LOCAL = 2
     integer(i4), parameter, public :: ORIENT_NONE = 0, ORIENT_ANGL_VRIL = 1, &
         ORIENT_VECT_Y = 2, ORIENT_ANGL_NAUT = 3
@@ -38,10 +47,15 @@ module model_cara_elem
         real(dp), allocatable :: discrete_values(:, :) !< (6, n_cells); first n used
         integer(i4), allocatable :: orientation(:)     !< ORIENT_* per cell
         real(dp), allocatable :: orientation_values(:, :)  !< (3, n_cells)
+        !> (n_cells) index in `matrices` of a cell's full matrix, 0 for a diagonal one
+        integer(i4), allocatable :: discrete_matrix(:)
+        type(discrete_matrix_t), allocatable :: matrices(:)   !< one per DISCRET occurrence
+        integer(i4) :: n_matrices = 0
     end type cara_elem_t
 
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
-        discrete_value_count, discrete_misfit, parse_cara, parse_repere
+        discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
+        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix
 
 contains
 
@@ -61,6 +75,8 @@ contains
         allocate (cara%discrete_values(6, n), source=0.0_dp)
         allocate (cara%orientation(n), source=ORIENT_NONE)
         allocate (cara%orientation_values(3, n), source=0.0_dp)
+        allocate (cara%discrete_matrix(n), source=0_i4)
+        allocate (cara%matrices(4))
     end subroutine cara_elem_init
 
     !> COQUE: thickness (and drilling coefficient) of plate cells.
@@ -106,7 +122,7 @@ contains
         if (present(layers)) cara%coque_layers(cells) = layers
     end subroutine assign_coque
 
-    !> CARA code of a name (CARA_NONE if unknown), case-insensitive.
+    !> CARA code of a stiffness name (CARA_NONE if unknown), case-insensitive.
     pure integer(i4) function parse_cara(name) result(code)
         character(len=*), intent(in) :: name
         integer(i4) :: k
@@ -116,6 +132,68 @@ contains
         end do
     end function parse_cara
 
+    !> The shape of any discrete characteristic name K_*, M_*, A_* (module header):
+    !>  what : out, 'K', 'M' or 'A' (' ' when the name is not one of Code_Aster's 24)
+    !>  rotational, diagonal, on_link : out, TR, D, L
+    pure subroutine parse_discrete_name(name, what, rotational, diagonal, on_link)
+        character(len=*), intent(in) :: name
+        character, intent(out) :: what
+        logical, intent(out) :: rotational, diagonal, on_link
+        character(len=:), allocatable :: n, rest
+        n = to_upper(trim(name))
+        what = ' '
+        rotational = .false.
+        diagonal = .false.
+        on_link = .false.
+        if (len(n) < 5) return
+        if (index('KMA', n(1:1)) == 0 .or. n(2:2) /= '_') return
+        rest = n(3:)
+        if (rest(1:2) == 'TR') then
+            rotational = .true.
+            rest = rest(3:)
+        else if (rest(1:1) == 'T') then
+            rest = rest(2:)
+        else
+            return
+        end if
+        if (len(rest) >= 3) then
+            if (rest(1:3) == '_D_') then
+                diagonal = .true.
+                rest = rest(3:)
+            end if
+        end if
+        if (rest /= '_N' .and. rest /= '_L') return
+        on_link = rest == '_L'
+        what = n(1:1)
+    end subroutine parse_discrete_name
+
+    !> Properties of a stiffness code: TR, D, L.
+    elemental logical function cara_is_rotational(code)
+        integer(i4), intent(in) :: code
+        cara_is_rotational = any(code == [CARA_K_TR_D_N, CARA_K_TR_D_L, CARA_K_TR_N, &
+                                          CARA_K_TR_L])
+    end function cara_is_rotational
+
+    elemental logical function cara_is_diagonal(code)
+        integer(i4), intent(in) :: code
+        cara_is_diagonal = code >= CARA_K_T_D_N .and. code <= CARA_K_TR_D_L
+    end function cara_is_diagonal
+
+    elemental logical function cara_on_link(code)
+        integer(i4), intent(in) :: code
+        cara_on_link = any(code == [CARA_K_T_D_L, CARA_K_TR_D_L, CARA_K_T_L, CARA_K_TR_L])
+    end function cara_on_link
+
+    !> DOFs per node of a discrete: T 3 (2D: 2), TR 6 (2D: 3).
+    elemental integer(i4) function discrete_node_dofs(rotational, two_d) result(n)
+        logical, intent(in) :: rotational, two_d
+        if (rotational) then
+            n = merge(3, 6, two_d)
+        else
+            n = merge(2, 3, two_d)
+        end if
+    end function discrete_node_dofs
+
     !> REPERE code of 'GLOBAL' / 'LOCAL', 0 otherwise.
     pure integer(i4) function parse_repere(name) result(code)
         character(len=*), intent(in) :: name
@@ -124,64 +202,147 @@ contains
         if (to_upper(trim(name)) == 'LOCAL') code = REPERE_LOCAL
     end function parse_repere
 
-    !> Number of values of CARA `code` for a 3D (DIS_*) or 2D (2D_DIS_*) discrete, as in
-    !> Code_Aster: K_T_D_*: 3 / 2, K_TR_D_*: 6 / 3.
-    pure integer(i4) function discrete_value_count(code, two_d) result(n)
+    !> Number of values of stiffness CARA `code` for a 3D (DIS_*) or 2D (2D_DIS_*)
+    !> discrete, as Code_Aster's catalog: a diagonal one its DOFs per node; a full one the
+    !> upper triangle (by column) of its matrix, or with symmetric = .false. (SYME='NON') the
+    !> whole matrix (by column).
+    pure integer(i4) function discrete_value_count(code, two_d, symmetric) result(n)
         integer(i4), intent(in) :: code
         logical, intent(in) :: two_d
-        select case (code)
-        case (CARA_K_T_D_N, CARA_K_T_D_L)
-            n = merge(2, 3, two_d)
-        case (CARA_K_TR_D_N, CARA_K_TR_D_L)
-            n = merge(3, 6, two_d)
-        case default
-            n = 0
-        end select
+        logical, intent(in), optional :: symmetric
+        integer(i4) :: order
+        logical :: sym
+        n = 0
+        if (code == CARA_NONE) return
+        sym = .true.
+        if (present(symmetric)) sym = symmetric
+        n = discrete_node_dofs(cara_is_rotational(code), two_d)
+        if (cara_is_diagonal(code)) return
+        order = n * merge(2, 1, cara_on_link(code))
+        n = merge(order * (order + 1) / 2, order * order, sym)
     end function discrete_value_count
 
-    !> Checks that CARA `code` fits cell c (modelisation and cell type); '' if it does,
-    !> else the reason. Shared with RIGI_PARASOL.
-    function discrete_misfit(model, mesh, c, code, keyword, group) result(reason)
+    ! Number of values of a mass or damping name (M_T_D_N: the mass; M_TR_D_N: the mass,
+    ! the inertia tensor, the offset; A_*: as K_*).
+    pure integer(i4) function inertia_value_count(name, two_d, symmetric) result(n)
+        character(len=*), intent(in) :: name
+        logical, intent(in) :: two_d, symmetric
+        character :: what
+        logical :: rotational, diagonal, on_link
+        integer(i4) :: code
+        call parse_discrete_name(name, what, rotational, diagonal, on_link)
+        code = parse_cara('K' // to_upper(trim(name(2:))))
+        n = discrete_value_count(code, two_d, symmetric)
+        if (what /= 'M' .or. .not. diagonal) return
+        if (.not. rotational) then
+            n = 1
+        else if (on_link) then
+            n = merge(2, 4, two_d)
+        else
+            n = merge(4, 10, two_d)
+        end if
+    end function inertia_value_count
+
+    !> The full matrix of a full stiffness CARA from its VALE: the upper triangle by column
+    !> (K11, K12, K22, K13, ... : Code_Aster's vecma), or with symmetric = .false. the whole
+    !> matrix by column.
+    !>  st : out, STATUS_NOT_IMPLEMENTED for values that are not symmetric (SYME='NON'):
+    !>       parasol's matrices and solvers are symmetric
+    subroutine discrete_full_matrix(values, order, symmetric, k, st)
+        real(dp), intent(in) :: values(:)
+        integer(i4), intent(in) :: order
+        logical, intent(in) :: symmetric
+        real(dp), allocatable, intent(out) :: k(:, :)
+        type(status_t), intent(out) :: st
+        integer(i4) :: i, j, p
+        real(dp) :: scale
+        allocate (k(order, order), source=0.0_dp)
+        p = 0
+        do j = 1, order
+            do i = 1, merge(j, order, symmetric)
+                p = p + 1
+                k(i, j) = values(p)
+                if (symmetric) k(j, i) = values(p)
+            end do
+        end do
+        if (symmetric) return
+        scale = maxval(abs(k))
+        if (maxval(abs(k - transpose(k))) > 1.0e-12_dp * scale) call set_error(st, &
+            STATUS_NOT_IMPLEMENTED, 'SYME=''NON'' with a matrix that is not symmetric ' // &
+            '(K(i,j) /= K(j,i)) is not built: parasol''s matrices and solvers are symmetric')
+    end subroutine discrete_full_matrix
+
+    !> Checks that a discrete characteristic fits cell c (modelisation and cell type);
+    !> '' if it does, else the reason. Shared with RIGI_PARASOL.
+    !>  code    : in, a stiffness code, or CARA_NONE with `name` for a mass or damping
+    !>  keyword : in, DISCRET, DISCRET_2D or RIGI_PARASOL
+    !>  name    : in, optional, the CARA as written (messages; masses and dampings)
+    function discrete_misfit(model, mesh, c, code, keyword, group, name) result(reason)
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
         integer(i4), intent(in) :: c, code
         character(len=*), intent(in) :: keyword
-        character(len=*), intent(in), optional :: group
+        character(len=*), intent(in), optional :: group, name
         character(len=:), allocatable :: reason
         character(len=:), allocatable :: cara_name
+        character :: what
+        logical :: rotational, diagonal, on_link
+        integer(i4) :: kind
         reason = ''
-        cara_name = trim(CARA_NAMES(code))
-        if (.not. is_discrete(model%element(c))) then
+        if (present(name)) then
+            cara_name = to_upper(trim(name))
+        else
+            cara_name = trim(CARA_NAMES(code))
+        end if
+        call parse_discrete_name(cara_name, what, rotational, diagonal, on_link)
+        kind = model%element(c)
+        if (.not. is_discrete(kind)) then
             reason = cara_name // ' on ' // cell_label(mesh, c, group) // ', which is ' // &
-                trim(ELEMENT_NAMES(model%element(c))) // ' (needs DIS_T or 2D_DIS_T)'
-        else if (code == CARA_K_TR_D_N .or. code == CARA_K_TR_D_L) then
-            reason = cara_name // ' on ' // cell_label(mesh, c, group) // ' needs the ' // &
-                'DIS_TR modelisation, which parasol does not have (use K_T_D_N / K_T_D_L)'
-        else if (is_discrete_2d(model%element(c)) .neqv. keyword == 'DISCRET_2D') then
+                trim(ELEMENT_NAMES(kind)) // ' (needs DIS_T, 2D_DIS_T, DIS_TR or 2D_DIS_TR)'
+        else if (rotational .neqv. is_discrete_rotational(kind)) then
+            reason = cara_name // ' on ' // cell_label(mesh, c, group) // ', which is ' // &
+                trim(ELEMENT_NAMES(kind)) // ' (' // trim(merge('K_TR_*, M_TR_*, A_TR_* ', &
+                'K_T_*, M_T_*, A_T_*    ', rotational)) // ' go with ' // &
+                trim(merge('DIS_TR or 2D_DIS_TR', 'DIS_T or 2D_DIS_T  ', rotational)) // ')'
+        else if (is_discrete_2d(kind) .neqv. keyword == 'DISCRET_2D') then
             if (keyword /= 'RIGI_PARASOL') reason = keyword // ' on ' // &
-                cell_label(mesh, c, group) // ', which is ' // &
-                trim(ELEMENT_NAMES(model%element(c))) // ' (use ' // &
-                trim(merge('DISCRET_2D', 'DISCRET   ', is_discrete_2d(model%element(c)))) // ')'
+                cell_label(mesh, c, group) // ', which is ' // trim(ELEMENT_NAMES(kind)) // &
+                ' (use ' // trim(merge('DISCRET_2D', 'DISCRET   ', is_discrete_2d(kind))) // ')'
         end if
         if (len(reason) > 0) return
-        if ((code == CARA_K_T_D_N) .neqv. (mesh%cell_type(c) == CELL_POI1)) then
+        if (on_link .eqv. (mesh%cell_type(c) == CELL_POI1)) then
             reason = cara_name // ' does not fit ' // cell_label(mesh, c, group) // ': ' // &
-                trim(merge('K_T_D_N is for POI1 cells, K_T_D_L for SEG2', &
-                           'K_T_D_L is for SEG2 cells, K_T_D_N for POI1', &
-                           code == CARA_K_T_D_N))
+                trim(merge(cara_name // ' is for SEG2 cells, ' // partner() // ' for POI1', &
+                           cara_name // ' is for POI1 cells, ' // partner() // ' for SEG2', &
+                           on_link))
         end if
         if (mesh%cell_type(c) /= CELL_POI1 .and. mesh%cell_type(c) /= CELL_SEG2) &
             reason = cara_name // ' on ' // cell_label(mesh, c, group) // ': not a discrete cell'
+    contains
+        ! The same characteristic on the other cell type (K_T_D_L <-> K_T_D_N).
+        function partner() result(other)
+            character(len=:), allocatable :: other
+            other = cara_name(1:len(cara_name) - 1) // merge('N', 'L', on_link)
+        end function partner
     end function discrete_misfit
 
-    !> DISCRET / DISCRET_2D: stiffness values of discrete cells.
-    !>  keyword : in, 'DISCRET' (DIS_T cells) or 'DISCRET_2D' (2D_DIS_T cells)
-    !>  cara_name : in, K_T_D_N | K_T_D_L | K_TR_D_N | K_TR_D_L
-    !>  values  : in, as many as discrete_value_count;  repere : in, 'GLOBAL' | 'LOCAL'
-    !>  st      : out, STATUS_MODEL_ERROR for an unknown CARA or REPERE, a wrong value count,
-    !>            a CARA that does not fit the cell type or modelisation (naming the cell)
+    !> DISCRET / DISCRET_2D: the characteristic of discrete cells. A stiffness (K_*) is
+    !> stored (a later one replaces an earlier one on a cell); a mass or damping (M_*, A_*)
+    !> is checked against the cells and otherwise accepted: it plays no part in statics.
+    !>  keyword   : in, 'DISCRET' (3D discretes) or 'DISCRET_2D' (2D ones)
+    !>  cara_name : in, one of Code_Aster's 24 (K_T_D_N ... A_TR_L)
+    !>  values    : in, as many as the catalog says (discrete_value_count)
+    !>  repere    : in, 'GLOBAL' | 'LOCAL'
+    !>  st        : out, STATUS_MODEL_ERROR for an unknown CARA or REPERE, a wrong value
+    !>              count, a characteristic that does not fit a cell (naming it);
+    !>              STATUS_NOT_IMPLEMENTED for a non-symmetric matrix (SYME='NON')
+    !>  symmetric : in, optional, SYME='OUI' (default) or 'NON'
+    !>  verify    : in, optional, VERIF='MAILLE' (default .true.): a cell of the groups that
+    !>              carries no discrete element is an error; without it (Code_Aster's
+    !>              default) such cells are passed over and counted in n_skipped
+    !>  n_skipped : out, optional, the cells passed over
     subroutine assign_discrete(cara, model, mesh, cells, keyword, cara_name, values, &
-                               repere, st, group)
+                               repere, st, group, symmetric, verify, n_skipped)
         type(cara_elem_t), intent(inout) :: cara
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
@@ -190,36 +351,77 @@ contains
         real(dp), intent(in) :: values(:)
         type(status_t), intent(out) :: st
         character(len=*), intent(in), optional :: group
-        integer(i4) :: code, rep, i, c, n
+        logical, intent(in), optional :: symmetric, verify
+        integer(i4), intent(out), optional :: n_skipped
+        integer(i4) :: code, rep, i, c, n, skipped, matrix
+        logical :: sym, check_all, rotational, diagonal, on_link, two_d
+        character :: what
         character(len=:), allocatable :: reason
+        real(dp), allocatable :: k(:, :)
+        sym = .true.
+        if (present(symmetric)) sym = symmetric
+        check_all = .true.
+        if (present(verify)) check_all = verify
+        skipped = 0
+        if (present(n_skipped)) n_skipped = 0
+        two_d = keyword == 'DISCRET_2D'
+        call parse_discrete_name(cara_name, what, rotational, diagonal, on_link)
         code = parse_cara(cara_name)
         rep = parse_repere(repere)
-        if (code == CARA_NONE .or. rep == 0) then
-            call set_error(st, STATUS_MODEL_ERROR, merge('CARA   ', 'REPERE ', code == &
-                CARA_NONE) // trim(merge(cara_name, repere, code == CARA_NONE)) // &
-                ' is not supported (CARA: K_T_D_N, K_T_D_L, K_TR_D_N, K_TR_D_L; ' // &
+        if (what == ' ' .or. rep == 0) then
+            call set_error(st, STATUS_MODEL_ERROR, merge('CARA   ', 'REPERE ', what == ' ') &
+                // trim(merge(cara_name, repere, what == ' ')) // ' is not supported ' // &
+                '(CARA: K_, M_ or A_ then T_ or TR_, D_ for a diagonal, N or L; ' // &
                 'REPERE: GLOBAL, LOCAL)')
             return
         end if
-        n = discrete_value_count(code, keyword == 'DISCRET_2D')
+        n = inertia_value_count(cara_name, two_d, sym)
         if (size(values) /= n) then
-            call set_error(st, STATUS_MODEL_ERROR, keyword // ' ' // trim(CARA_NAMES(code)) &
+            call set_error(st, STATUS_MODEL_ERROR, keyword // ' ' // to_upper(trim(cara_name)) &
                 // ' needs ' // to_text(n) // ' values in VALE, got ' // &
                 to_text(size(values, kind=i4)))
             return
         end if
+        matrix = 0
+        if (what == 'K' .and. .not. diagonal) then
+            n = discrete_node_dofs(rotational, two_d) * merge(2, 1, on_link)
+            call discrete_full_matrix(values, n, sym, k, st)
+            if (st%failed()) return
+        end if
         do i = 1, size(cells)
             c = cells(i)
-            reason = discrete_misfit(model, mesh, c, code, keyword, group)
+            if (.not. check_all .and. .not. is_discrete(model%element(c))) then
+                skipped = skipped + 1       ! Code_Aster's default: passed over (vafcar)
+                cycle
+            end if
+            reason = discrete_misfit(model, mesh, c, code, keyword, group, cara_name)
             if (len(reason) > 0) then
                 call set_error(st, STATUS_MODEL_ERROR, reason)
                 return
             end if
+            if (what /= 'K') cycle
+            if (.not. diagonal .and. matrix == 0) call store_matrix(k, matrix)
             cara%discrete_cara(c) = code
             cara%discrete_repere(c) = rep
             cara%discrete_values(:, c) = 0.0_dp
-            cara%discrete_values(1:n, c) = values
+            cara%discrete_matrix(c) = matrix
+            if (diagonal) cara%discrete_values(1:size(values), c) = values
         end do
+        if (present(n_skipped)) n_skipped = skipped
+    contains
+        subroutine store_matrix(k, index)
+            real(dp), intent(in) :: k(:, :)
+            integer(i4), intent(out) :: index
+            type(discrete_matrix_t), allocatable :: bigger(:)
+            if (cara%n_matrices == size(cara%matrices)) then
+                allocate (bigger(2 * size(cara%matrices)))
+                bigger(1:cara%n_matrices) = cara%matrices(1:cara%n_matrices)
+                call move_alloc(bigger, cara%matrices)
+            end if
+            cara%n_matrices = cara%n_matrices + 1
+            cara%matrices(cara%n_matrices)%k = k
+            index = cara%n_matrices
+        end subroutine store_matrix
     end subroutine assign_discrete
 
     !> ORIENTATION: local frame data of discrete cells, stored as given.

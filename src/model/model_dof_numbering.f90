@@ -5,7 +5,9 @@ module model_dof_numbering
     use kinds, only: i4
     use mesh_types, only: mesh_t, node_name
     use model_types, only: model_t, ELEM_NONE, ELEM_DKQ, ELEM_DKT, ELEM_DIS_T_SEG2, &
-        ELEM_DIS_T_POI1, ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1, is_plane_solid, is_plane_edge
+        ELEM_DIS_T_POI1, ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1, ELEM_DIS_TR_SEG2, &
+        ELEM_DIS_TR_POI1, ELEM_2D_DIS_TR_SEG2, ELEM_2D_DIS_TR_POI1, is_plane_solid, &
+        is_plane_edge
     implicit none
     private
 
@@ -39,8 +41,10 @@ contains
             return
         end if
         select case (kind)
-        case (ELEM_DKQ, ELEM_DKT)
+        case (ELEM_DKQ, ELEM_DKT, ELEM_DIS_TR_SEG2, ELEM_DIS_TR_POI1)
             mask = .true.
+        case (ELEM_2D_DIS_TR_SEG2, ELEM_2D_DIS_TR_POI1)
+            mask([DOF_DX, DOF_DY, DOF_DRZ]) = .true.
         case (ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1)
             mask(DOF_DX:DOF_DY) = .true.
         case (ELEM_DIS_T_SEG2, ELEM_DIS_T_POI1)

@@ -9,14 +9,14 @@
 !> plate); its stiffness per direction is VALE x weight (Code_Aster U4.42.01, RIGI_PARASOL).
 module model_rigi_parasol
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text, real_e13, string_t
     use mesh_types, only: mesh_t, cell_measure, cell_centre, cell_name, node_name, &
         cell_label, find_cell_group, find_node_group, find_node, cells_of_group, &
         nodes_of_group, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_discrete_2d
     use model_cara_elem, only: cara_elem_t, parse_cara, parse_repere, discrete_misfit, &
-        CARA_NONE, CARA_K_T_D_N, CARA_K_T_D_L, CARA_NAMES
+        CARA_NONE, CARA_K_T_D_N, CARA_K_T_D_L, CARA_K_TR_D_N, CARA_K_TR_D_L, CARA_NAMES
     implicit none
     private
 
@@ -245,6 +245,18 @@ contains
         n_raft = count(on_raft, kind=i4)
         counts = ' (' // to_text(n_raft) // ' raft nodes, ' // &
             to_text(size(spring_cells, kind=i4)) // ' discretes)'
+        if (code == CARA_K_TR_D_N .or. code == CARA_K_TR_D_L) then
+            ! the catalog takes them; the raft's rotational stiffnesses are not built
+            reason = ''
+            if (size(spring_cells) > 0) reason = discrete_misfit(model, mesh, &
+                spring_cells(1), code, 'RIGI_PARASOL', group)
+            if (len(reason) == 0) reason = 'RIGI_PARASOL ' // trim(CARA_NAMES(code)) // &
+                ' (the rotational stiffnesses of the raft on DIS_TR springs) is not built' &
+                // '; use K_T_D_N or K_T_D_L on DIS_T springs'
+            call set_error(st, merge(STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED, &
+                index(reason, ' is not built') == 0), reason, keyword='RIGI_PARASOL/CARA')
+            return
+        end if
         do i = 1, size(spring_cells)
             c = spring_cells(i)
             reason = discrete_misfit(model, mesh, c, code, 'RIGI_PARASOL', group)
@@ -298,6 +310,7 @@ contains
             cara%discrete_repere(c) = parse_repere(repere)
             cara%discrete_values(:, c) = 0.0_dp
             cara%discrete_values(1:table%n_values, c) = table%stiffness(:, k)
+            cara%discrete_matrix(c) = 0
         end do
     end subroutine apply_rigi_parasol
 

@@ -5,7 +5,8 @@
 !> 'D_PLAN'/'C_PLAN' on TRIA3, TRIA6, QUAD4, QUAD8, QUAD9 are plane strain/stress solids
 !> (Code_Aster's MEDPTR3 ... MECPQU9) and on SEG2, SEG3 load-carrying edges (no stiffness:
 !> FORCE_CONTOUR, PRES_REP); 'DIS_T' and '2D_DIS_T' are translational discrete springs on
-!> SEG2 or POI1.
+!> SEG2 or POI1, 'DIS_TR' and '2D_DIS_TR' the same with the rotations (DRX, DRY, DRZ; in
+!> 2D DRZ).
 module model_types
     use kinds, only: i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -23,7 +24,8 @@ module model_types
         ELEM_C_PLAN_TRIA3 = 12, ELEM_D_PLAN_TRIA6 = 13, ELEM_C_PLAN_TRIA6 = 14, &
         ELEM_D_PLAN_QUAD8 = 15, ELEM_C_PLAN_QUAD8 = 16, ELEM_D_PLAN_QUAD9 = 17, &
         ELEM_C_PLAN_QUAD9 = 18, ELEM_D_PLAN_SEG3 = 19, ELEM_C_PLAN_SEG3 = 20, &
-        N_ELEMENT_KINDS = 20
+        ELEM_DIS_TR_SEG2 = 21, ELEM_DIS_TR_POI1 = 22, ELEM_2D_DIS_TR_SEG2 = 23, &
+        ELEM_2D_DIS_TR_POI1 = 24, N_ELEMENT_KINDS = 24
     !> Names of the element kinds (for the .mess model summary).
     character(len=14), parameter, public :: ELEMENT_NAMES(0:N_ELEMENT_KINDS) = [ &
         'NONE          ', 'DKQ           ', 'DKT           ', 'D_PLAN_QUAD4  ', &
@@ -31,10 +33,11 @@ module model_types
         'DIS_T_POI1    ', '2D_DIS_T_SEG2 ', '2D_DIS_T_POI1 ', 'D_PLAN_TRIA3  ', &
         'C_PLAN_TRIA3  ', 'D_PLAN_TRIA6  ', 'C_PLAN_TRIA6  ', 'D_PLAN_QUAD8  ', &
         'C_PLAN_QUAD8  ', 'D_PLAN_QUAD9  ', 'C_PLAN_QUAD9  ', 'D_PLAN_SEG3   ', &
-        'C_PLAN_SEG3   ']
+        'C_PLAN_SEG3   ', 'DIS_TR_SEG2   ', 'DIS_TR_POI1   ', '2D_DIS_TR_SEG2', &
+        '2D_DIS_TR_POI1']
     !> Modelisations accepted by AFFE_MODELE.
-    character(len=8), parameter, public :: MODELISATIONS(5) = ['DKT     ', 'D_PLAN  ', &
-        'C_PLAN  ', 'DIS_T   ', '2D_DIS_T']
+    character(len=9), parameter, public :: MODELISATIONS(7) = ['DKT      ', 'D_PLAN   ', &
+        'C_PLAN   ', 'DIS_T    ', '2D_DIS_T ', 'DIS_TR   ', '2D_DIS_TR']
 
     !> The plane kinds by cell type (D_PLAN, C_PLAN), 0 where the type has none.
     integer(i4), parameter :: D_PLAN_KINDS(N_CELL_TYPES) = [0, ELEM_D_PLAN_SEG2, &
@@ -51,7 +54,8 @@ module model_types
     end type model_t
 
     public :: model_init, assign_modelisation, element_for, is_plate, is_plane_solid, &
-        is_plane_edge, is_plane_strain, is_discrete, is_discrete_2d, n_modelled_cells
+        is_plane_edge, is_plane_strain, is_discrete, is_discrete_2d, is_discrete_rotational, &
+        n_modelled_cells
 
 contains
 
@@ -83,6 +87,12 @@ contains
         case ('2D_DIS_T')
             if (cell_type == CELL_SEG2) kind = ELEM_2D_DIS_T_SEG2
             if (cell_type == CELL_POI1) kind = ELEM_2D_DIS_T_POI1
+        case ('DIS_TR')
+            if (cell_type == CELL_SEG2) kind = ELEM_DIS_TR_SEG2
+            if (cell_type == CELL_POI1) kind = ELEM_DIS_TR_POI1
+        case ('2D_DIS_TR')
+            if (cell_type == CELL_SEG2) kind = ELEM_2D_DIS_TR_SEG2
+            if (cell_type == CELL_POI1) kind = ELEM_2D_DIS_TR_POI1
         case default
             kind = -1
         end select
@@ -114,7 +124,7 @@ contains
         if (present(skip_incompatible)) skip = skip_incompatible
         if (element_for(name, CELL_QUAD4) < 0) then
             call set_error(st, STATUS_MODEL_ERROR, 'unknown MODELISATION ' // name // &
-                ' (DKT, D_PLAN, C_PLAN, DIS_T or 2D_DIS_T)')
+                ' (DKT, D_PLAN, C_PLAN, DIS_T, 2D_DIS_T, DIS_TR or 2D_DIS_TR)')
             return
         end if
         n_fit = 0
@@ -177,17 +187,26 @@ contains
         is_plane_strain = any(kind == D_PLAN_KINDS) .and. kind /= ELEM_NONE
     end function is_plane_strain
 
-    !> Any discrete (DIS_T or 2D_DIS_T).
+    !> Any discrete (DIS_T, 2D_DIS_T, DIS_TR, 2D_DIS_TR).
     elemental logical function is_discrete(kind)
         integer(i4), intent(in) :: kind
         is_discrete = kind == ELEM_DIS_T_SEG2 .or. kind == ELEM_DIS_T_POI1 .or. &
-            kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1
+            kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1 .or. &
+            is_discrete_rotational(kind)
     end function is_discrete
 
     elemental logical function is_discrete_2d(kind)
         integer(i4), intent(in) :: kind
-        is_discrete_2d = kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1
+        is_discrete_2d = kind == ELEM_2D_DIS_T_SEG2 .or. kind == ELEM_2D_DIS_T_POI1 .or. &
+            kind == ELEM_2D_DIS_TR_SEG2 .or. kind == ELEM_2D_DIS_TR_POI1
     end function is_discrete_2d
+
+    !> DIS_TR and 2D_DIS_TR (rotations too).
+    elemental logical function is_discrete_rotational(kind)
+        integer(i4), intent(in) :: kind
+        is_discrete_rotational = kind == ELEM_DIS_TR_SEG2 .or. kind == ELEM_DIS_TR_POI1 .or. &
+            kind == ELEM_2D_DIS_TR_SEG2 .or. kind == ELEM_2D_DIS_TR_POI1
+    end function is_discrete_rotational
 
     !> Number of cells that carry an element.
     integer(i4) function n_modelled_cells(model)

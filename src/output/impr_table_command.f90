@@ -89,12 +89,8 @@ contains
             call table_text_lines(selected, columns, all_rows(selected), title, layout, lines)
         end if
         if (st%failed()) return
-        call write_unit_text(ctx, unit, lines, where, st)
-        if (st%failed()) then
-            call relocate_at(cmd, 'UNITE', st)
-            return
-        end if
-        if (len(where) == 0) where = 'the .resu'
+        call write_unit_text(ctx, unit, lines, where, st, cmd, 'UNITE')
+        if (st%failed()) return
         call ctx%write_mess('    IMPR_TABLE: ' // concept_display_name(t) // ' (' // &
             to_text(int(selected%n_rows, i4)) // ' rows, ' // &
             to_text(int(size(columns), i4)) // ' columns, FORMAT ' // format // ') -> ' // &

@@ -39,7 +39,7 @@ module test_table_command
         character(len=:), allocatable :: k
     end type tested_value_t
 
-    public :: run_test_table
+    public :: run_test_table, text_check_line
 
 contains
 
@@ -128,12 +128,12 @@ contains
         lines(2)%s = repeat(' ', 6) // pad(17, cols%values(1)%s) // cols%values(2)%s
         lines(1)%s = trim(lines(1)%s)
         lines(3)%s = test_resu_header_line()
-        lines(4)%s = text_line('NON_REGRESSION', '', calc, computed)
+        lines(4)%s = text_check_line('NON_REGRESSION', '', calc, computed)
         if (cmd%has('REFERENCE')) then
             call cmd%get_text('REFERENCE', kind, st)
             if (st%ok()) call cmd%get_texts('VALE_REFE_K', refe, st)
             if (st%failed()) return
-            lines(5)%s = text_line(kind, legend, refe, computed)
+            lines(5)%s = text_check_line(kind, legend, refe, computed)
         end if
         do k = 1, size(lines)
             call ctx%write_resu(listing_safe_text(lines(k)%s))
@@ -146,8 +146,9 @@ contains
         end do
     end subroutine test_texts
 
-    !> One check line of texts.
-    function text_line(kind, legend, expected, computed) result(line)
+    !> One check line of texts (TEST_TABLE VALE_CALC_K, TEST_FONCTION ATTRIBUT): OK when
+    !> the computed text equals one of the expected ones (without surrounding blanks).
+    function text_check_line(kind, legend, expected, computed) result(line)
         character(len=*), intent(in) :: kind, legend, computed
         type(string_t), intent(in) :: expected(:)
         character(len=:), allocatable :: line, reference, shown_legend
@@ -166,7 +167,7 @@ contains
         line = merge(' OK   ', 'NOOK  ', ok) // pad(17, kind) // pad(17, shown_legend) // &
             pad(24, '''' // reference // '''') // &
             pad(24, '''' // trim(adjustl(computed)) // '''') // pad(16, '-') // '-'
-    end function text_line
+    end function text_check_line
 
     pure function pad(width, text) result(out)
         integer, intent(in) :: width

@@ -12,18 +12,35 @@ module unit_text_output
     use run_context, only: run_context_t
     use text_file, only: read_text_file, split_text_lines
     use unit_files, only: unit_file_path, unit_written_in_run
+    use deck_command, only: keyword_set_t
+    use table_keywords, only: relocate_at
     implicit none
     private
-
 
     public :: write_unit_text
 
 contains
 
     !> Writes `lines` to unit `unit`.
-    !>  where : out, the file written ('' for the .resu)
-    !>  st : STATUS_IO_ERROR naming the file when it cannot be written
-    subroutine write_unit_text(ctx, unit, lines, where, st)
+    !>  where : out, the file written ('the .resu' for unit 8)
+    !>  st    : STATUS_IO_ERROR naming the file when it cannot be written, located at `key`
+    !>          of `scope` when given (the UNITE keyword that named the unit)
+    subroutine write_unit_text(ctx, unit, lines, where, st, scope, key)
+        type(run_context_t), intent(inout) :: ctx
+        integer, intent(in) :: unit
+        type(string_t), intent(in) :: lines(:)
+        character(len=:), allocatable, intent(out) :: where
+        type(status_t), intent(out) :: st
+        class(keyword_set_t), intent(in), optional :: scope
+        character(len=*), intent(in), optional :: key
+        call write_lines(ctx, unit, lines, where, st)
+        if (st%failed() .and. present(scope) .and. present(key)) &
+            call relocate_at(scope, key, st)
+        if (len(where) == 0) where = 'the .resu'
+    end subroutine write_unit_text
+
+    !> write_unit_text without the location; `where` is '' for the .resu.
+    subroutine write_lines(ctx, unit, lines, where, st)
         type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: unit
         type(string_t), intent(in) :: lines(:)
@@ -54,7 +71,7 @@ contains
         call file%commit(st)
         if (st%failed()) return
         call note_written(ctx, where)
-    end subroutine write_unit_text
+    end subroutine write_lines
 
     subroutine note_written(ctx, path)
         type(run_context_t), intent(inout) :: ctx

@@ -32,9 +32,9 @@ module calc_champ_command
         result_field_index
     use analysis_result, only: result_concept_t
     use result_access, only: result_field_at
-    use element_fields, only: plate_field
-    use plate_options, only: PLATE_FORCES, PLATE_GENERAL, PLATE_STRAIN, PLATE_FORCES_CMPS, &
-        PLATE_GENERAL_CMPS, PLATE_STRAIN_CMPS
+    use element_fields, only: plate_field, strain_field
+    use plate_options, only: PLATE_FORCES, PLATE_GENERAL, PLATE_FORCES_CMPS, &
+        PLATE_GENERAL_CMPS
     use field_transforms, only: gauss_to_nodes, nodes_average, equivalent_field
     implicit none
     private
@@ -277,8 +277,7 @@ contains
                     PLATE_GENERAL_CMPS, made, st, job%cells)
             case ('EPSI_ELGA')
                 call require_state(r, st)
-                if (st%ok()) call plate_field(r, r%depl(:, at), PLATE_STRAIN, FIELD_ELGA, &
-                    'EPSI_R', PLATE_STRAIN_CMPS, made, st, job%cells)
+                if (st%ok()) call strain_field(r, r%depl(:, at), made, st, job%cells)
             case ('SIEQ_ELGA', 'SIEQ_ELNO')
                 call input_field(job, at, 'SIGM' // name(5:), source, st)
                 if (st%ok()) call equivalent_field(source, 'SIGM', made, st)

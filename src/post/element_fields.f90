@@ -6,6 +6,11 @@
 !>             2D) in its element frame, at its points (SEG2: its two nodes, POI1: its
 !>             node): linear springs from K u (Code_Aster ef0042: node 1 gives -f1, node 2
 !>             f2), DIS_CHOC springs from the state the analysis stored;
+!>             a plane element's (D_PLAN, C_PLAN) SIXX SIYY SIZZ SIXY at its RIGI points
+!>             (element_plane: D_PLAN's SIZZ from the restrained expansion, C_PLAN's 0);
+!>  EPSI_ELGA  the strains at the same points: a plate's EPXX EPYY EPZZ EPXY EPXZ EPYZ at
+!>             its layer sub-points, a plane element's EPXX EPYY EPZZ EPXY (C_PLAN's EPZZ
+!>             from sig_zz = 0, D_PLAN's 0);
 !>  plate-only options at RIGI points or at the nodes (plate_options kinds).
 !> Two passes: the layout of every cell (points, sub-points, components), then the values,
 !> written in place (no per-cell allocation: the 128x512 plate has 65 536 cells).
@@ -14,8 +19,10 @@ module element_fields
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: string_t, to_text
     use deck_catalog, only: split_words
-    use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
-    use model_types, only: is_plate, is_discrete, is_discrete_2d
+    use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2, MAX_CELL_NODES
+    use model_types, only: is_plate, is_discrete, is_discrete_2d, is_plane_solid, &
+        is_plane_strain
+    use model_material, only: material_of_cell
     use model_cara_elem, only: ORIENT_ANGL_VRIL, ORIENT_ANGL_NAUT
     use element_discrete, only: segment_rotation, segment_rotation_2d, nautical_rotation
     use element_spring_fields, only: SPRING_POINTS
@@ -24,12 +31,16 @@ module element_fields
     use field_types, only: field_t, component_set_t, field_init_cells, field_define_cells, &
         FIELD_ELGA, FIELD_ELNO
     use analysis_result, only: result_concept_t
-    use plate_options, only: plate_cell_t, plate_prepare, plate_values, plate_rigi_points, &
-        plate_node_points, plate_value_count, PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS
+    use plate_options, only: plate_cell_t, plate_prepare, plate_values, plate_value_count, &
+        PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS, PLATE_STRAIN_CMPS
+    use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLATE, &
+        MAX_GAUSS_POINTS
+    use element_plane, only: plane_law_t, plane_law_isotropic, plane_rigi_rule, &
+        plane_point_state
     implicit none
     private
 
-    public :: state_sief_elga, plate_field, result_structure
+    public :: state_sief_elga, strain_field, plate_field, result_structure
 
 contains
 
@@ -64,7 +75,7 @@ contains
         logical, intent(in), optional :: cells(:)
         type(structure_t) :: s
         type(string_t), allocatable :: cmps(:)
-        type(component_set_t) :: sets(3)
+        type(component_set_t) :: sets(4)
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:), spring_of(:)
         integer(i4) :: c, kind
         logical :: want
@@ -74,6 +85,7 @@ contains
         sets(1)%cmp = [1_i4, 2_i4, 3_i4, 4_i4, 5_i4, 6_i4]     ! plates
         sets(2)%cmp = [7_i4, 8_i4, 9_i4]                       ! 3D springs
         sets(3)%cmp = [7_i4, 8_i4]                             ! 2D springs
+        sets(4)%cmp = [1_i4, 2_i4, 3_i4, 4_i4]                 ! plane elements
         allocate (n_points(res%mesh%n_cells), n_sub(res%mesh%n_cells), &
             cell_set(res%mesh%n_cells), source=0_i4)
         allocate (spring_of(res%mesh%n_cells), source=0_i4)
@@ -96,10 +108,18 @@ contains
                 n_points(c) = merge(1_i4, SPRING_POINTS, res%mesh%cell_type(c) == CELL_POI1)
                 n_sub(c) = 1
                 cell_set(c) = merge(3_i4, 2_i4, is_discrete_2d(kind))
-            end if          ! plane elements: their stresses come with the plane family
+            else if (is_plane_solid(kind)) then
+                n_points(c) = plane_point_count(res, c)
+                n_sub(c) = 1
+                cell_set(c) = 4
+            end if
         end do
         call field_define_cells(f, n_points, n_sub, cell_set, sets, st)
         if (st%failed()) return
+        if (any(n_points == 0 .and. cell_set > 0)) then
+            call plane_rule_error(res, n_points, cell_set, st)
+            return
+        end if
         if (any(cell_set == 2 .or. cell_set == 3)) then
             call result_structure(res, s, st)
             if (st%failed()) return
@@ -108,6 +128,9 @@ contains
             if (n_points(c) == 0) cycle
             if (cell_set(c) == 1) then
                 call plate_cell_values(res, c, res%depl(:, at), PLATE_STRESS, .false., &
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+            else if (cell_set(c) == 4) then
+                call plane_cell_values(res, c, res%depl(:, at), .true., &
                     f%values(f%offset(c) + 1:f%offset(c + 1)), st)
             else if (spring_of(c) > 0 .and. res%choc(c)) then
                 call stored_spring_values(res, spring_of(c), at, n_points(c), &
@@ -121,6 +144,143 @@ contains
             if (st%failed()) return
         end do
     end subroutine state_sief_elga
+
+    !> EPSI_ELGA at the Gauss points of the plates and plane elements of `cells` (every
+    !> cell when absent) for the displacements u (module header).
+    !>  st : element failures naming the cell
+    subroutine strain_field(res, u, f, st, cells)
+        type(result_concept_t), intent(in) :: res
+        real(dp), intent(in) :: u(:)
+        type(field_t), intent(out) :: f
+        type(status_t), intent(out) :: st
+        logical, intent(in), optional :: cells(:)
+        type(string_t), allocatable :: cmps(:)
+        type(component_set_t) :: sets(2)
+        integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:)
+        integer(i4) :: c, kind
+        logical :: want
+        call split_words(PLATE_STRAIN_CMPS, cmps)
+        call field_init_cells(f, FIELD_ELGA, 'EPSI_R', cmps, res%mesh%n_cells, st)
+        if (st%failed()) return
+        sets(1)%cmp = [1_i4, 2_i4, 3_i4, 4_i4, 5_i4, 6_i4]     ! plates
+        sets(2)%cmp = [1_i4, 2_i4, 3_i4, 4_i4]                 ! plane elements
+        allocate (n_points(res%mesh%n_cells), n_sub(res%mesh%n_cells), &
+            cell_set(res%mesh%n_cells), source=0_i4)
+        do c = 1, res%mesh%n_cells
+            want = .true.
+            if (present(cells)) want = cells(c)
+            if (.not. want) cycle
+            kind = res%model%element(c)
+            if (is_plate(kind)) then
+                n_points(c) = merge(4_i4, 3_i4, res%mesh%cell_ptr(c + 1) - &
+                    res%mesh%cell_ptr(c) == 4)
+                n_sub(c) = 3 * max(1_i4, res%cara%coque_layers(c))
+                cell_set(c) = 1
+            else if (is_plane_solid(kind)) then
+                n_points(c) = plane_point_count(res, c)
+                n_sub(c) = 1
+                cell_set(c) = 2
+            end if
+        end do
+        if (any(n_points == 0 .and. cell_set > 0)) then
+            call plane_rule_error(res, n_points, cell_set, st)
+            return
+        end if
+        call field_define_cells(f, n_points, n_sub, cell_set, sets, st)
+        if (st%failed()) return
+        do c = 1, res%mesh%n_cells
+            if (cell_set(c) == 1) then
+                call plate_cell_values(res, c, u, PLATE_STRAIN, .false., &
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+            else if (cell_set(c) == 2) then
+                call plane_cell_values(res, c, u, .false., &
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+            end if
+            if (st%failed()) return
+        end do
+    end subroutine strain_field
+
+    !> The RIGI points of a plane cell (0 for a cell type without them).
+    integer(i4) function plane_point_count(res, c) result(n)
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: c
+        type(gauss_rule_t) :: rule
+        type(status_t) :: st
+        call plane_rigi_rule(res%mesh%cell_type(c), rule, st)
+        n = 0
+        if (st%ok()) n = rule%n
+    end function plane_point_count
+
+    !> The error of the first plane cell whose type has no RIGI points.
+    subroutine plane_rule_error(res, n_points, cell_set, st)
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: n_points(:), cell_set(:)
+        type(status_t), intent(out) :: st
+        type(gauss_rule_t) :: rule
+        integer(i4) :: c
+        do c = 1, size(n_points, kind=i4)
+            if (n_points(c) > 0 .or. cell_set(c) == 0) cycle
+            call plane_rigi_rule(res%mesh%cell_type(c), rule, st)
+            if (st%ok()) call set_error(st, STATUS_MODEL_ERROR, 'no Gauss points')
+            st%message = cell_label(res%mesh, c) // ': ' // st%message
+            return
+        end do
+    end subroutine plane_rule_error
+
+    !> A plane cell's stresses SIXX SIYY SIZZ SIXY (stresses) or strains EPXX EPYY EPZZ
+    !> EPXY at its RIGI points, point by point (element_plane plane_point_state), from its
+    !> material's ELAS and the displacements u (an equation vector of the result's dofs).
+    !>  st : STATUS_MODEL_ERROR naming the cell (no material, no ELAS, a degenerate cell)
+    subroutine plane_cell_values(res, c, u, stresses, values, st)
+        type(result_concept_t), intent(in) :: res
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: u(:)
+        logical, intent(in) :: stresses
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: st
+        type(gauss_rule_t) :: rule
+        type(plane_law_t) :: law
+        real(dp) :: xy(2, MAX_CELL_NODES), ue(2 * MAX_CELL_NODES)
+        real(dp) :: sig(4, MAX_GAUSS_POINTS), eps(4, MAX_GAUSS_POINTS)
+        integer(i4) :: nn, i, k, node, eq, m, ctype
+        ctype = res%mesh%cell_type(c)
+        nn = res%mesh%cell_ptr(c + 1) - res%mesh%cell_ptr(c)
+        do i = 1, nn
+            node = res%mesh%cell_nodes(res%mesh%cell_ptr(c) + i - 1)
+            xy(:, i) = res%mesh%coords(1:2, node)
+            do k = 1, 2
+                eq = res%dofs%equation(k, node)
+                ue(2 * i - 2 + k) = 0.0_dp
+                if (eq > 0) ue(2 * i - 2 + k) = u(eq)
+            end do
+        end do
+        m = material_of_cell(res%materials, c)
+        if (m == 0) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ' has no ' // &
+                'material: CALC_CHAMP needs its ELAS (give CHAM_MATER)')
+            return
+        end if
+        if (.not. res%materials%materials(m)%has_elas) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': its ' // &
+                'material has no ELAS (E, NU)')
+            return
+        end if
+        associate (e => res%materials%materials(m)%elas)
+            call plane_law_isotropic(e%e, e%nu, is_plane_strain(res%model%element(c)), law, st)
+        end associate
+        if (st%ok()) call plane_rigi_rule(ctype, rule, st)
+        if (st%ok()) call plane_point_state(ctype, xy(:, 1:nn), law, ue(1:2 * nn), rule, &
+            sig(:, 1:rule%n), eps(:, 1:rule%n), st)
+        if (st%failed()) then
+            st%message = cell_label(res%mesh, c) // ': ' // st%message
+            return
+        end if
+        if (stresses) then
+            values(1:4 * rule%n) = reshape(sig(:, 1:rule%n), [4 * rule%n])
+        else
+            values(1:4 * rule%n) = reshape(eps(:, 1:rule%n), [4 * rule%n])
+        end if
+    end subroutine plane_cell_values
 
     !> A plate option (plate_options kind) on the plate cells of `cells` (every plate cell
     !> when absent), at RIGI points (ELGA) or at the nodes (ELNO, evaluated there).
@@ -174,21 +334,20 @@ contains
         real(dp), intent(out) :: values(:)
         type(status_t), intent(out) :: st
         type(plate_cell_t) :: pc
-        real(dp) :: xi(2, 4)
+        type(gauss_rule_t) :: rule
         integer(i4) :: np
         call plate_prepare(res%mesh, res%dofs, res%cara, res%materials, c, u, pc, st)
         if (st%failed()) return
-        if (at_nodes) then
-            call plate_node_points(pc%nn, xi, np)
-        else
-            call plate_rigi_points(pc%nn, xi, np)
-        end if
+        call gauss_family(FORMULATION_PLATE, res%mesh%cell_type(c), &
+            trim(merge('NOEU', 'RIGI', at_nodes)), rule, st)
+        if (st%failed()) return
+        np = rule%n
         if (size(values) /= np * plate_value_count(kind, pc%layers)) then
             call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': ' // &
                 to_text(size(values)) // ' values expected')
             return
         end if
-        call plate_values(pc, kind, xi, np, values)
+        call plate_values(pc, kind, rule%xi(:, 1:np), np, values)
     end subroutine plate_cell_values
 
     !> N VY (VZ) of a DIS_CHOC spring as the analysis stored it (both points alike).

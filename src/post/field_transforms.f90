@@ -1,12 +1,12 @@
 !> Fields made from other fields, as Code_Aster's CALC_CHAMP makes them (doc/fields.md):
 !>  gauss_to_nodes  ELGA -> ELNO: each cell's Gauss values extrapolated to its nodes, sub-point
-!>                  by sub-point. Points that are the nodes (discrete springs, RIGI=NOEU)
-!>                  are copied; one point is given to every node; otherwise the values of
-!>                  the cell's corners are the least-squares fit of its linear shape
-!>                  functions to the Gauss values (Code_Aster's inmat4, R3.06.03: the exact
-!>                  extrapolation when there are as many points as corners: DKQ FPG4, DKT
-!>                  FPG3), side-middle nodes the mean of their two corners, a QUAD9 centre
-!>                  the mean of its four;
+!>                  by sub-point, by element_gauss_families' matrix of the element family
+!>                  the points are (Code_Aster's inmat4-6, R3.06.03): points that are the
+!>                  nodes (discrete springs, RIGI=NOEU) copied, one point given to every
+!>                  node, otherwise the corners the least-squares fit of the linear shape
+!>                  functions (exact when the points are as many as the corners: DKQ and
+!>                  plane QUAD4 FPG4, DKT FPG3), side-middle nodes the mean of their two
+!>                  corners, a QUAD9 centre the mean of its four;
 !>  nodes_average   ELNO -> NOEU: at each node the mean of the values the cells around it
 !>                  give (Code_Aster's arithmetic mean), a component where some cell gives
 !>                  it; a field with sub-points (plate layers) must first be reduced to one
@@ -20,9 +20,11 @@ module field_transforms
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: string_t, to_text
     use deck_catalog, only: split_words
-    use mesh_types, only: mesh_t, cell_label, CELL_TYPE_CORNERS, CELL_POI1, CELL_SEG2, &
-        CELL_TRIA3, CELL_QUAD4, CELL_SEG3, CELL_TRIA6, CELL_QUAD8, CELL_QUAD9
-    use model_types, only: model_t, is_discrete
+    use mesh_types, only: mesh_t, cell_label, MAX_CELL_NODES
+    use model_types, only: model_t
+    use element_gauss_families, only: gauss_rule_t, MAX_GAUSS_POINTS, &
+        rule_to_nodes => gauss_to_nodes
+    use field_layout, only: element_points
     use field_types, only: field_t, component_set_t, field_init_cells, field_init_nodes, &
         field_define_cells, field_component, FIELD_ELNO, FIELD_NOEU
     implicit none
@@ -35,116 +37,27 @@ module field_transforms
         'INVA_2SG VECT_1_X VECT_1_Y VECT_1_Z VECT_2_X VECT_2_Y VECT_2_Z VECT_3_X VECT_3_Y ' // &
         'VECT_3_Z'
 
-    public :: gauss_to_nodes, nodes_average, equivalent_field, gauss_points_of
+    public :: gauss_to_nodes, nodes_average, equivalent_field
 
 contains
 
-    !> The reference coordinates of a cell's RIGI points when they are Gauss points (plates:
-    !> FPG4 on QUAD4, FPG3 on TRIA3), for the extrapolation (field_transforms header).
-    pure subroutine gauss_points_of(ctype, ng, xi, known)
-        integer(i4), intent(in) :: ctype, ng
-        real(dp), intent(out) :: xi(2, 9)
-        logical, intent(out) :: known
-        real(dp) :: g
-        xi = 0.0_dp
-        known = .true.
-        if (ctype == CELL_QUAD4 .and. ng == 4) then
-            g = 1.0_dp / sqrt(3.0_dp)
-            xi(:, 1:4) = reshape([-g, -g, g, -g, g, g, -g, g], [2, 4])
-        else if (ctype == CELL_TRIA3 .and. ng == 3) then
-            xi(:, 1:3) = reshape([1.0_dp / 6.0_dp, 1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp, &
-                1.0_dp / 6.0_dp, 1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp], [2, 3])
-        else
-            known = .false.
-        end if
-    end subroutine gauss_points_of
-
-    !> The extrapolation matrix e(node, point) of a cell (module header).
-    !>  st : STATUS_MODEL_ERROR for a layout it does not know
+    !> The extrapolation matrix e(node, point) of a cell (module header): the points are
+    !> those of the element family with as many points (field_layout element_points).
+    !>  st : STATUS_MODEL_ERROR naming the cell when no family has that many points
     subroutine extrapolation_matrix(mesh, model, c, ng, e, nn, st)
         type(mesh_t), intent(in) :: mesh
         type(model_t), intent(in) :: model
         integer(i4), intent(in) :: c, ng
-        real(dp), intent(out) :: e(9, 9)
+        real(dp), intent(out) :: e(MAX_CELL_NODES, MAX_GAUSS_POINTS)
         integer(i4), intent(out) :: nn
         type(status_t), intent(out) :: st
-        real(dp) :: xi(2, 9), n(9, 4), a(4, 4), inv(4, 4)
-        integer(i4) :: ctype, nc, g, i
-        logical :: known
+        type(gauss_rule_t) :: rule
         e = 0.0_dp
-        ctype = mesh%cell_type(c)
         nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
-        if (is_discrete(model%element(c)) .and. ng == nn) then
-            do i = 1, nn
-                e(i, i) = 1.0_dp            ! RIGI = NOEU: the points are the nodes
-            end do
-            return
-        end if
-        if (ng == 1) then
-            e(1:nn, 1) = 1.0_dp
-            return
-        end if
-        call gauss_points_of(ctype, ng, xi, known)
-        if (.not. known) then
-            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, c) // ': no Gauss -> ' // &
-                'node extrapolation for ' // to_text(ng) // ' points on this cell type')
-            return
-        end if
-        nc = CELL_TYPE_CORNERS(ctype)
-        do g = 1, ng
-            call corner_shapes(ctype, xi(:, g), n(g, 1:nc))
-        end do
-        a(1:nc, 1:nc) = matmul(transpose(n(1:ng, 1:nc)), n(1:ng, 1:nc))
-        call invert_small(nc, a(1:nc, 1:nc), inv(1:nc, 1:nc))
-        e(1:nc, 1:ng) = matmul(inv(1:nc, 1:nc), transpose(n(1:ng, 1:nc)))
+        call element_points(model%element(c), mesh%cell_type(c), ng, rule, st)
+        if (st%ok()) call rule_to_nodes(rule, e(1:nn, 1:ng), st)
+        if (st%failed()) st%message = cell_label(mesh, c) // ': ' // st%message
     end subroutine extrapolation_matrix
-
-    !> The linear (TRIA3) / bilinear (QUAD4) shape functions of the corners at xi.
-    pure subroutine corner_shapes(ctype, xi, n)
-        integer(i4), intent(in) :: ctype
-        real(dp), intent(in) :: xi(2)
-        real(dp), intent(out) :: n(:)
-        n = 0.0_dp
-        select case (ctype)
-        case (CELL_TRIA3, CELL_TRIA6)
-            n(1:3) = [1.0_dp - xi(1) - xi(2), xi(1), xi(2)]
-        case (CELL_QUAD4, CELL_QUAD8, CELL_QUAD9)
-            n(1:4) = 0.25_dp * [(1.0_dp - xi(1)) * (1.0_dp - xi(2)), &
-                (1.0_dp + xi(1)) * (1.0_dp - xi(2)), (1.0_dp + xi(1)) * (1.0_dp + xi(2)), &
-                (1.0_dp - xi(1)) * (1.0_dp + xi(2))]
-        case (CELL_SEG2, CELL_SEG3)
-            n(1:2) = 0.5_dp * [1.0_dp - xi(1), 1.0_dp + xi(1)]
-        case (CELL_POI1)
-            n(1) = 1.0_dp
-        end select
-    end subroutine corner_shapes
-
-    !> Inverse of a small symmetric positive matrix (Gauss-Jordan with partial pivoting).
-    pure subroutine invert_small(n, a, inv)
-        integer(i4), intent(in) :: n
-        real(dp), intent(in) :: a(n, n)
-        real(dp), intent(out) :: inv(n, n)
-        real(dp) :: m(n, 2 * n), row(2 * n)
-        integer(i4) :: i, j, p
-        m(:, 1:n) = a
-        m(:, n + 1:) = 0.0_dp
-        do i = 1, n
-            m(i, n + i) = 1.0_dp
-        end do
-        do i = 1, n
-            p = i - 1 + maxloc(abs(m(i:n, i)), dim=1)
-            if (p /= i) then
-                row = m(i, :)
-                m(i, :) = m(p, :)
-                m(p, :) = row
-            end if
-            m(i, :) = m(i, :) / m(i, i)
-            do j = 1, n
-                if (j /= i) m(j, :) = m(j, :) - m(j, i) * m(i, :)
-            end do
-        end do
-        inv = m(:, n + 1:)
-    end subroutine invert_small
 
     !> ELGA -> ELNO (module header): the field `fe` of the same quantity and components.
     !>  st : a cell whose points cannot be extrapolated (named)
@@ -155,8 +68,8 @@ contains
         type(field_t), intent(out) :: fe
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: n_points(:)
-        real(dp) :: e(9, 9)
-        integer(i4) :: c, nn, ng, n_sub, n_cmp, node, p, k, s, j, a, b
+        real(dp) :: e(MAX_CELL_NODES, MAX_GAUSS_POINTS)
+        integer(i4) :: c, nn, ng, n_sub, n_cmp, node, p, s, j, a, b
         integer(i8) :: base_in, base_out
         call field_init_cells(fe, FIELD_ELNO, fg%quantity, fg%components, fg%n_cells, st)
         if (st%failed()) return
@@ -176,10 +89,6 @@ contains
             base_in = fg%offset(c)
             base_out = fe%offset(c)
             do node = 1, nn
-                k = node
-                if (mesh%cell_type(c) == CELL_TRIA6 .or. mesh%cell_type(c) == CELL_QUAD8 .or. &
-                    mesh%cell_type(c) == CELL_QUAD9) k = min(node, CELL_TYPE_CORNERS( &
-                    mesh%cell_type(c)))
                 do s = 1, n_sub
                     do j = 1, n_cmp
                         b = ((node - 1) * n_sub + (s - 1)) * n_cmp + j
@@ -187,36 +96,13 @@ contains
                         do p = 1, ng
                             a = ((p - 1) * n_sub + (s - 1)) * n_cmp + j
                             fe%values(base_out + b) = fe%values(base_out + b) + &
-                                e(k, p) * fg%values(base_in + a)
+                                e(node, p) * fg%values(base_in + a)
                         end do
                     end do
                 end do
             end do
-            call middle_nodes(mesh%cell_type(c), n_sub * n_cmp, &
-                fe%values(base_out + 1:fe%offset(c + 1)))
         end do
     end subroutine gauss_to_nodes
-
-    !> Side-middle nodes of a quadratic cell: the mean of their corners; a QUAD9 centre the
-    !> mean of the four corners (values node by node, block values per node).
-    pure subroutine middle_nodes(ctype, block, values)
-        integer(i4), intent(in) :: ctype, block
-        real(dp), intent(inout) :: values(:)
-        integer(i4) :: nc, m, a, b
-        select case (ctype)
-        case (CELL_TRIA6, CELL_QUAD8, CELL_QUAD9)
-            nc = CELL_TYPE_CORNERS(ctype)
-            do m = 1, nc
-                a = m
-                b = mod(m, nc) + 1
-                values((nc + m - 1) * block + 1:(nc + m) * block) = 0.5_dp * &
-                    (values((a - 1) * block + 1:a * block) + values((b - 1) * block + 1:b * block))
-            end do
-            if (ctype == CELL_QUAD9) values(8 * block + 1:9 * block) = 0.25_dp * &
-                (values(1:block) + values(block + 1:2 * block) + &
-                values(2 * block + 1:3 * block) + values(3 * block + 1:4 * block))
-        end select
-    end subroutine middle_nodes
 
     !> ELNO -> NOEU (module header).
     !>  st : STATUS_MODEL_ERROR for a field with several sub-points on a cell

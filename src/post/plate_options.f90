@@ -10,9 +10,8 @@
 !>  PLATE_FORCES  NXX NYY NXY MXX MYY MXY QX QY: N = Dm e, M = Df k, Q = T;
 !>  PLATE_GENERAL EXX EYY EXY KXX KYY KXY GAX GAY: e, k as tensors (EXY, KXY half the
 !>                engineering values), GAX GAY = T / (2 * 5/6 G h) (Code_Aster dkqedg).
-!> The points are Code_Aster's: RIGI (FPG4 on QUAD4: (-g,-g) (g,-g) (g,g) (-g,g), g =
-!> 1/sqrt3; FPG3 on TRIA3: (1/6,1/6) (2/3,1/6) (1/6,2/3)) for ELGA, the cell's nodes
-!> (NOEU) where Code_Aster evaluates at the nodes.
+!> The points are Code_Aster's (element_gauss_families): RIGI (FPG4 on QUAD4, FPG3 on
+!> TRIA3) for ELGA, the cell's nodes (NOEU) where Code_Aster evaluates at the nodes.
 module plate_options
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -44,52 +43,9 @@ module plate_options
         real(dp) :: ul(24) = 0.0_dp               !< local displacements
     end type plate_cell_t
 
-    public :: plate_prepare, plate_values, plate_rigi_points, plate_node_points, &
-        plate_value_count
+    public :: plate_prepare, plate_values, plate_value_count
 
 contains
-
-    !> The RIGI Gauss points of a plate cell (Code_Aster's order, module header).
-    pure subroutine plate_rigi_points(nn, xi, n)
-        integer(i4), intent(in) :: nn
-        real(dp), intent(out) :: xi(2, 4)
-        integer(i4), intent(out) :: n
-        real(dp) :: g
-        xi = 0.0_dp
-        if (nn == 4) then
-            g = 1.0_dp / sqrt(3.0_dp)
-            xi(:, 1) = [-g, -g]
-            xi(:, 2) = [g, -g]
-            xi(:, 3) = [g, g]
-            xi(:, 4) = [-g, g]
-            n = 4
-        else
-            xi(:, 1) = [1.0_dp / 6.0_dp, 1.0_dp / 6.0_dp]
-            xi(:, 2) = [2.0_dp / 3.0_dp, 1.0_dp / 6.0_dp]
-            xi(:, 3) = [1.0_dp / 6.0_dp, 2.0_dp / 3.0_dp]
-            n = 3
-        end if
-    end subroutine plate_rigi_points
-
-    !> The nodes of a plate cell as reference points (Code_Aster's NOEU family).
-    pure subroutine plate_node_points(nn, xi, n)
-        integer(i4), intent(in) :: nn
-        real(dp), intent(out) :: xi(2, 4)
-        integer(i4), intent(out) :: n
-        xi = 0.0_dp
-        if (nn == 4) then
-            xi(:, 1) = [-1.0_dp, -1.0_dp]
-            xi(:, 2) = [1.0_dp, -1.0_dp]
-            xi(:, 3) = [1.0_dp, 1.0_dp]
-            xi(:, 4) = [-1.0_dp, 1.0_dp]
-            n = 4
-        else
-            xi(:, 1) = [0.0_dp, 0.0_dp]
-            xi(:, 2) = [1.0_dp, 0.0_dp]
-            xi(:, 3) = [0.0_dp, 1.0_dp]
-            n = 3
-        end if
-    end subroutine plate_node_points
 
     !> Values per point of a kind: per sub-point for stresses and strains.
     pure integer(i4) function plate_value_count(kind, layers) result(n)

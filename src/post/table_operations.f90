@@ -27,14 +27,14 @@ module table_operations
         table_select_columns, table_replace_rows, table_text_width_for, TABLE_INT, &
         TABLE_REAL, TABLE_TEXT, TABLE_DEFAULT_TEXT_WIDTH, table_kind_label, &
         table_is_number, MAX_TABLE_ROWS
-    use table_sort, only: compare_texts, stable_order
+    use table_sort, only: compare_texts, text_order
     use table_reduce, only: reduce_reals, reduce_ints
     implicit none
     private
 
     public :: table_combine, table_unique_rows, table_drop_empty_columns, &
         table_append_row, table_add_value_column, table_add_formula_column, &
-        table_add_statistics, table_calculation, row_keys, sorted_key_order
+        table_add_statistics, table_calculation, row_keys
 
 contains
 
@@ -98,18 +98,6 @@ contains
         write (buf, '(z16.16)') transfer(x, 0_i8)
         key = 'R' // buf
     end function real_key
-
-    !> The permutation that sorts `keys` (stable merge sort, O(n log n)).
-    subroutine sorted_key_order(keys, order)
-        type(string_t), intent(in) :: keys(:)
-        integer, allocatable, intent(out) :: order(:)
-        call stable_order(size(keys), by_key, order)
-    contains
-        integer function by_key(a, b)
-            integer, intent(in) :: a, b
-            by_key = compare_texts(keys(a)%s, keys(b)%s)
-        end function by_key
-    end subroutine sorted_key_order
 
     !> Whether each row's key is held by that row only; a row with an absent key cell
     !> (`complete` false) is never unique.
@@ -182,8 +170,8 @@ contains
         if (size(labels) > 0) then
             call row_keys(t, keys1, k1, format_r)
             call row_keys(other, keys2, k2, format_r)
-            call sorted_key_order(k1, order1)
-            call sorted_key_order(k2, order2)
+            order1 = text_order(k1)
+            order2 = text_order(k2)
             call unique_key_rows(k1, order1, keys_complete(t, keys1), unique1)
             call unique_key_rows(k2, order2, keys_complete(other, keys2), unique2)
             i = 1; j = 1
@@ -243,7 +231,7 @@ contains
             if (st%failed()) return
         end do
         call row_keys(t, columns, keys, format_r)
-        call sorted_key_order(keys, order)       ! stable: the first row of a key comes first
+        order = text_order(keys)       ! stable: the first row of a key comes first
         allocate (keep(t%n_rows), source=.false.)
         do k = 1, size(order)
             if (k > 1) then

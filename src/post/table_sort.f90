@@ -6,11 +6,53 @@
 !> keys keep their order in both directions.
 module table_sort
     use kinds, only: i8, dp
+    use strings, only: string_t
     use table_concept, only: table_t, TABLE_INT, TABLE_REAL
     implicit none
     private
 
-    public :: table_sorted_rows, compare_table_rows, compare_texts, stable_order
+    !> What stable_order sorts: items 1..n that `compare` orders (-1, 0, 1 as item a sorts
+    !> before, with or after item b). An extension holds the keys, so that no internal
+    !> procedure is passed (an internal procedure as an argument needs a trampoline on an
+    !> executable stack).
+    type, abstract, public :: item_order_t
+    contains
+        procedure(compare_items), deferred :: compare
+    end type item_order_t
+
+    abstract interface
+        integer function compare_items(self, a, b)
+            import :: item_order_t
+            class(item_order_t), intent(in) :: self
+            integer, intent(in) :: a, b
+        end function compare_items
+    end interface
+
+    !> Rows of a table by key columns, DECROISSANT reversing.
+    type, extends(item_order_t) :: row_order_t
+        type(table_t), pointer :: t => null()
+        integer, allocatable :: keys(:)
+        logical :: descending = .false.
+    contains
+        procedure :: compare => compare_rows
+    end type row_order_t
+
+    !> Reals, increasing.
+    type, extends(item_order_t) :: real_order_t
+        real(dp), allocatable :: x(:)
+    contains
+        procedure :: compare => compare_reals
+    end type real_order_t
+
+    !> Texts, as Python compares str.
+    type, extends(item_order_t) :: text_order_t
+        type(string_t), allocatable :: keys(:)
+    contains
+        procedure :: compare => compare_keys
+    end type text_order_t
+
+    public :: table_sorted_rows, compare_table_rows, compare_texts, stable_order, &
+        real_order, text_order
 
 contains
 
@@ -19,28 +61,40 @@ contains
     !>  descending : in, DECROISSANT
     !>  order      : out, (t%n_rows) row indices
     subroutine table_sorted_rows(t, keys, descending, order)
-        type(table_t), intent(in) :: t
+        type(table_t), intent(in), target :: t
         integer, intent(in) :: keys(:)
         logical, intent(in) :: descending
         integer, allocatable, intent(out) :: order(:)
-        call stable_order(t%n_rows, by_keys, order)
-    contains
-        integer function by_keys(a, b)
-            integer, intent(in) :: a, b
-            by_keys = compare_table_rows(t, keys, a, b)
-            if (descending) by_keys = -by_keys
-        end function by_keys
+        type(row_order_t) :: rows
+        rows%t => t
+        rows%keys = keys
+        rows%descending = descending
+        call stable_order(t%n_rows, rows, order)
     end subroutine table_sorted_rows
 
-    !> The permutation of 1..n that sorts items by `compare` (-1, 0, 1 as item a sorts
-    !> before, with or after item b): a bottom-up merge sort, stable, O(n log n).
-    subroutine stable_order(n, compare, order)
+    !> The permutation that sorts `x` increasingly, equal values in their order.
+    function real_order(x) result(order)
+        real(dp), intent(in) :: x(:)
+        integer, allocatable :: order(:)
+        type(real_order_t) :: reals
+        reals%x = x
+        call stable_order(size(x), reals, order)
+    end function real_order
+
+    !> The permutation that sorts `keys` (compare_texts), equal keys in their order.
+    function text_order(keys) result(order)
+        type(string_t), intent(in) :: keys(:)
+        integer, allocatable :: order(:)
+        type(text_order_t) :: texts
+        texts%keys = keys
+        call stable_order(size(keys), texts, order)
+    end function text_order
+
+    !> The permutation of 1..n that sorts items by `relation`: a bottom-up merge sort,
+    !> stable, O(n log n).
+    subroutine stable_order(n, relation, order)
         integer, intent(in) :: n
-        interface
-            integer function compare(a, b)
-                integer, intent(in) :: a, b
-            end function compare
-        end interface
+        class(item_order_t), intent(in) :: relation
         integer, allocatable, intent(out) :: order(:)
         integer, allocatable :: work(:)
         integer :: width, lo, mid, hi, i, j, k
@@ -55,7 +109,7 @@ contains
                 if (mid < hi) then
                     i = lo; j = mid + 1; k = lo
                     do while (i <= mid .and. j <= hi)
-                        if (compare(order(j), order(i)) < 0) then  ! strictly before: right
+                        if (relation%compare(order(j), order(i)) < 0) then  ! strictly before
                             work(k) = order(j); j = j + 1
                         else
                             work(k) = order(i); i = i + 1
@@ -75,6 +129,27 @@ contains
             width = 2 * width
         end do
     end subroutine stable_order
+
+    integer function compare_rows(self, a, b) result(c)
+        class(row_order_t), intent(in) :: self
+        integer, intent(in) :: a, b
+        c = compare_table_rows(self%t, self%keys, a, b)
+        if (self%descending) c = -c
+    end function compare_rows
+
+    integer function compare_reals(self, a, b) result(c)
+        class(real_order_t), intent(in) :: self
+        integer, intent(in) :: a, b
+        c = 0
+        if (self%x(a) < self%x(b)) c = -1
+        if (self%x(a) > self%x(b)) c = 1
+    end function compare_reals
+
+    integer function compare_keys(self, a, b) result(c)
+        class(text_order_t), intent(in) :: self
+        integer, intent(in) :: a, b
+        c = compare_texts(self%keys(a)%s, self%keys(b)%s)
+    end function compare_keys
 
     !> -1, 0 or 1 as row `a` sorts before, with or after row `b` on the key columns.
     pure integer function compare_table_rows(t, keys, a, b) result(c)

@@ -18,11 +18,16 @@
 !> least lambda_min times those of A, and its diagonal at most lambda_max times A's).
 !> References: Golub & Van Loan, Matrix Computations, 4th ed., alg. 11.5.1 (PCG) and
 !> sec. 11.3.5 (CG and Lanczos).
+!>
+!> With a two-level solver (rigid modes kept apart, two_level_solver) CG runs in its hat
+!> coordinates: the caller gives Q^T b and hat products, and the residuals are measured as
+!> the original ones (residual_norm).
 module low_rank_update
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_INTERNAL
     use sparse_matrix, only: sym_matrix_t, sym_matvec
     use direct_solver, only: direct_solver_t
+    use two_level_solver, only: residual_norm
     implicit none
     private
 
@@ -179,7 +184,7 @@ contains
         allocate (work%x(n), work%r(n), work%z(n), work%p(n), work%q(n), &
             work%alphas(work%kmax), work%betas(work%kmax))
         work%x = 0.0_dp
-        report%residual = max_abs(b)
+        report%residual = residual_norm(solver, b)
         report%iterations = 0
         more = .false.
         if (report%residual <= options%tolerance .or. n == 0) return
@@ -220,10 +225,10 @@ contains
         work%x = work%x + (alpha * work%scale) * work%p
         work%r = work%r - alpha * work%q
         work%alphas(k) = alpha
-        report%residual = max_abs(work%r) * work%scale
+        report%residual = residual_norm(solver, work%r) * work%scale
         call ritz_extremes(work%alphas(1:k), work%betas(1:k - 1), report%ritz_min, &
             report%ritz_max)
-        if (max_abs(work%r) <= work%tolerance) then
+        if (residual_norm(solver, work%r) <= work%tolerance) then
             report%outcome = PCG_CONVERGED
             return
         end if
@@ -344,11 +349,5 @@ contains
             dot = dot + x(i) * y(i)
         end do
     end function dot
-
-    pure real(dp) function max_abs(x)
-        real(dp), intent(in) :: x(:)
-        max_abs = 0.0_dp
-        if (size(x) > 0) max_abs = maxval(abs(x))
-    end function max_abs
 
 end module low_rank_update

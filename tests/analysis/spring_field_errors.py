@@ -24,7 +24,7 @@ CASES = [
      "cell M49: POINT 3 does not exist: the cell has 2 Gauss point(s) (POINT 1 to 2)"),
     ("group_of_17", "NOM_CHAM='VARI_ELGA', NOM_CMP='V4', GROUP_MA='RESSORTS', POINT=1",
      "GROUP_MA", "GROUP_MA RESSORTS holds 17 cells; TEST_RESU needs a group of exactly one"),
-    ("slab_cell", "NOM_CHAM='SIEF_ELGA', NOM_CMP='N', MAILLE='M1', POINT=1", "MAILLE",
+    ("slab_cell", "NOM_CHAM='VARI_ELGA', NOM_CMP='V1', MAILLE='M1', POINT=1", "MAILLE",
      "cell M1: the field has no value on the cell"),
     ("vz_in_2d", "NOM_CHAM='SIEF_ELGA', NOM_CMP='VZ', MAILLE='M49', POINT=1", "NOM_CMP",
      "cell M49: the cell has no component VZ in this field (it has N VY)"),

@@ -1,15 +1,18 @@
 #!/usr/bin/python3
 """Measure the extremes decks for doc/stability.md: outcome, error, digits lost.
 
-usage: measure.py PARASOL [--only NAME ...] [--markdown]
+usage: measure.py PARASOL [--only NAME ...] [--markdown] [--bisect]
 
 For every deck of cases/: the exit status and message of the run as written; the worst
 relative error of DY/DZ against the deck's reference (recomputed from the printed values of
-the .mess ANALYTIQUE lines); and the digits lost in the factorizations, found by running the
-deck again with NPREC = 1..16 (bisection): the largest loss lies between the largest NPREC
-that still flags a pivot and the smallest that does not; the "pivot lost X digits" of the
-message at the former is printed as the figure. A run that stops for another reason (no
-equilibrium, no convergence) at every NPREC shows "-". Not a test: a measuring tool.
+the .mess ANALYTIQUE lines); the digits the factorizations lost, as the .mess prints them
+(`solver M: largest loss X digits`: with rigid modes kept apart, those of the matrix that is
+factored and of the coarse matrix); and the digits the answer holds (the .mess line of the
+last step: a solve with the final residual). --bisect (the tool as it was before parasol
+printed the loss of a factorization that passes) finds the loss by running the deck again
+with NPREC = 1..16 instead: the largest loss lies between the largest NPREC that still flags
+a pivot and the smallest that does not. "-": no figure (the run stopped before). Not a test:
+a measuring tool.
 """
 import argparse
 import glob
@@ -24,6 +27,8 @@ sys.path.insert(0, HERE)
 import run_case  # noqa: E402
 
 LOST = re.compile(r"pivot lost ([0-9.]+) digits")
+LARGEST = re.compile(r"largest loss ([0-9.]+) digits")
+HOLDS = re.compile(r"the answer holds ([0-9.]+) significant digits")
 RIGID = re.compile(r"pivot ([-0-9.E+]+) against a largest diagonal term ([-0-9.E+]+)")
 
 
@@ -85,6 +90,8 @@ def main(argv=None):
     ap.add_argument("--only", nargs="*", default=None,
                     help="measure only these cases (None: all)")
     ap.add_argument("--markdown", action="store_true", help="rows as a markdown table")
+    ap.add_argument("--bisect", action="store_true",
+                    help="digits lost by NPREC bisection instead of the .mess figure")
     o = ap.parse_args(argv)
     parasol = os.path.abspath(o.parasol)
     deck_dir = os.path.join(HERE, "cases")
@@ -98,11 +105,18 @@ def main(argv=None):
             text = open(deck, encoding="utf-8").read()
             rc, err, mess = run(parasol, text, deck_dir, info["mesh"], stem, work)
             worst = worst_error(mess) if rc != 1 else None
-            fig, lo, hi = digits(parasol, text, deck_dir, info["mesh"], stem, work)
+            if o.bisect:
+                fig, lo, hi = digits(parasol, text, deck_dir, info["mesh"], stem, work)
+                fig = f"{fig} ({lo}-{hi})"
+            else:
+                m = LARGEST.findall(mess)
+                fig = m[-1] if m else "-"
+            holds = HOLDS.findall(mess)
             nprec = re.search(r"NPREC=(\d+)", text).group(1)
             msg = err.split("error: ", 1)[-1][:110] if err else ""
             error = "-" if worst is None else ("< 1e-12" if worst < 1e-12 else f"{worst:.1e}")
-            rows.append((stem, info.get("why", ""), nprec, fig, f"{lo}-{hi}", error, rc, msg))
+            rows.append((stem, info.get("why", ""), nprec, fig, holds[-1] if holds else "-",
+                         error, rc, msg))
             sep = " | "
             line = sep.join(str(x) for x in rows[-1])
             print(f"| {line} |" if o.markdown else line, flush=True)

@@ -63,6 +63,9 @@ NOT_FINITE = re.compile(r"(?i)(?<![A-Za-z_])(nan|[-+]?inf(inity)?)(?![A-Za-z_0-9
 LISTING_NOT_FINITE = re.compile(r"NON_FINI|[-+]INFINI(?!%)")
 ECHO = re.compile(r"^\s*\d+ \| ", re.M)
 QUOTES = re.compile(r"\"[^\"\n]*\"|'[^'\n]*'")
+# The values a keyword allows, listed or suggested by a validation error (CRITERE: SUP,
+# INF).
+ALLOWED = re.compile(r"\((allowed: |did you mean )[^)\n]*\)")
 ADDRESS_SPACE = 4 << 30
 MUTATE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mutate.py")
 EXPORT_TIME_LIMIT = 20      # seconds, the P time_limit of the cases run through an export
@@ -167,11 +170,37 @@ def make_seeds(parasol, work, wanted):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": os.path.join(verif, name + ".mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # The plane family on its five cell types (an export file binding five meshes, curved
+    # quadratic cells) and the discrete elements with rotations and full matrices (issue 21).
+    plane = os.path.join(SOURCE, "tests", "plane")
+    files = {"case.export": os.path.join(plane, "patch_plane.export"),
+             "patch_plane.comm": os.path.join(plane, "patch_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["patch_%s.mail" % cell] = os.path.join(plane, "patch_%s.mail" % cell)
+    seeds.append(Seed("plane_patch", files, [],
+                      {"case.export": "export", "patch_plane.comm": "deck",
+                       "patch_tria6.mail": "mail", "patch_quad8.mail": "mail",
+                       "patch_quad9.mail": "mail"}, 1.0))
+    discrete = os.path.join(SOURCE, "tests", "discrete")
+    seeds.append(Seed("discrete", {"case.export": os.path.join(discrete, "discrete.export"),
+                                   "discrete.comm": os.path.join(discrete, "discrete.comm"),
+                                   "discrete_3d.mail": os.path.join(discrete,
+                                                                    "discrete_3d.mail"),
+                                   "discrete_2d.mail": os.path.join(discrete,
+                                                                    "discrete_2d.mail")},
+                      [], {"case.export": "export", "discrete.comm": "deck",
+                           "discrete_3d.mail": "mail", "discrete_2d.mail": "mail"}, 0.8))
     # Fields: CREA_CHAMP (AFFE, EXTR, ASSE, COMB, EVAL) and TEST_RESU on field concepts.
     fields = os.path.join(SOURCE, "tests", "fields")
     seeds.append(Seed("fields", {"case.comm": os.path.join(fields, "crea_champ.comm"),
                                  "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.8))
+    seeds.append(Seed("fields_calc", {"case.comm": os.path.join(fields, "plate_moment_dkq.comm"),
+                                      "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.6))
+    seeds.append(Seed("fields_resu", {"case.comm": os.path.join(fields, "crea_resu.comm"),
+                                      "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.4))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
@@ -191,6 +220,9 @@ def make_seeds(parasol, work, wanted):
                       ["--unit", "38=case.38", "--unit", "39=case.39", "--unit", "40=case.40"],
                       dict(comm_targets, **{"case.38": "table", "case.39": "table",
                                             "case.40": "table"}), 1.0))
+    # Functions by points: CALC_FONCTION's operations, TEST_FONCTION, IMPR_FONCTION.
+    seeds.append(Seed("functions", {"case.comm": os.path.join(tables, "functions.comm")},
+                      [], comm_targets, 1.0))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
@@ -363,18 +395,23 @@ def input_words(folder):
 
 def scan_not_finite(text, quoted=frozenset()):
     """NaN/Inf tokens in a listing, leaving out echoed deck lines, quoted input, and in
-    error and warning lines the spellings that the input itself contains (`quoted`)."""
+    error and warning lines the spellings that the input itself contains (`quoted`); so
+    too, in any line, an all-capitals INF or NAN the input contains (a legend or a name
+    copied from the deck: no number is ever written that way)."""
     hits = []
     for line in text.splitlines():
         if ECHO.match(line):
             continue
         line = QUOTES.sub("", line)
         message = "error: " in line or "warning: " in line
+        if message:
+            line = ALLOWED.sub("", line)
         if LISTING_NOT_FINITE.search(line):
             hits.append(line.strip()[:160])
             continue
         for m in NOT_FINITE.finditer(line):
-            if message and m.group(0).lower().lstrip("+-") in quoted:
+            if (message or m.group(0).lstrip("+-") in ("INF", "NAN")) and \
+                    m.group(0).lower().lstrip("+-") in quoted:
                 continue
             hits.append(line.strip()[:160])
             break

@@ -2,13 +2,14 @@
 """Runs one deck of the table tests and checks what it produced.
 
 usage: run_table_case.py PARASOL DIFF DECK WORKDIR [--ref REF] [--unit N=PATH ...]
-                         [--loadtxt UNIT:COLUMNS:EXPECTED]
+                         [--loadtxt UNIT:COLUMNS:EXPECTED] [--same UNIT=REF ...]
 
 The deck must exit 0 (every TEST_TABLE / TEST_RESU line OK); with --ref its .resu must
 equal REF (parasol-diff, default tolerances); with --loadtxt the file the deck wrote on
 UNIT (<stem>.<UNIT> in WORKDIR) must read with numpy.loadtxt (comments '#') into an array
 whose columns COLUMNS (comma separated indices) equal EXPECTED (a Python literal: a list of
-rows), exactly.
+rows), exactly; with --same the file the deck wrote on UNIT must equal REF, byte for byte
+(files a plotter reads, whose layout is the point).
 """
 import argparse
 import ast
@@ -27,6 +28,7 @@ def main():
     parser.add_argument("--ref")
     parser.add_argument("--unit", action="append", default=[])
     parser.add_argument("--loadtxt", action="append", default=[])
+    parser.add_argument("--same", action="append", default=[])
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -58,6 +60,15 @@ def main():
             print("FAIL: unit %s read by numpy.loadtxt:\n%s\nexpected\n%s" % (unit, got, want))
             return 1
         print("unit %s read by numpy.loadtxt: %d rows equal, bit for bit" % (unit, len(got)))
+    for spec in args.same:
+        unit, ref = spec.split("=", 1)
+        path = os.path.join(args.workdir, "%s.%s" % (stem, unit))
+        with open(path, "rb") as got, open(ref, "rb") as want:
+            if got.read() != want.read():
+                print("FAIL: %s differs from %s" % (path, ref))
+                subprocess.run(["diff", path, ref])
+                return 1
+        print("unit %s equals %s" % (unit, os.path.basename(ref)))
     print("ok")
     return 0
 
