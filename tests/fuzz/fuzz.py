@@ -229,10 +229,15 @@ def make_seeds(parasol, work, wanted):
     # The mesh commands (DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE) on the test plate: every
     # option of each, their groups used again by later commands.
     mesh_commands = os.path.join(SOURCE, "tests", "mesh_commands")
-    for name in ("groups_plate", "modify_plate", "create_plate"):
+    for name in ("groups_plate", "modify_plate", "create_plate", "deform_plate"):
         seeds.append(Seed(name, {"case.comm": os.path.join(mesh_commands, name + ".comm"),
                                  "case.mail": os.path.join(mesh_commands, "plate4.mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # GIBI meshes (LIRE_MAILLAGE FORMAT='GIBI', PRE_GIBI): the file mutated as text.
+    seeds.append(Seed("gibi_strip", {"case.comm": os.path.join(mesh_commands, "gibi_strip.comm"),
+                                     "case.mgib": os.path.join(mesh_commands, "strip.mgib")},
+                      ["--unit", "19=case.mgib"], dict(comm_targets, **{"case.mgib": "gibi"}),
+                      0.7))
     if wanted:
         seeds = [s for s in seeds if s.name in wanted]
     return seeds
