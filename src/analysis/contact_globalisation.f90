@@ -5,7 +5,7 @@ module contact_globalisation
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_NO_EQUILIBRIUM
     use strings, only: to_text, real_e13
-    use assembly_system, only: structure_t, assembly_map_t, spring_lines
+    use assembly_system, only: structure_t, assembly_map_t, spring_lines, scatter_free
     use element_dis_choc, only: choc_line_t
     use contact_line_search, only: step_choice_t, choose_step, any_crossing
     use analysis_solver, only: pivot_diagnosis_t, PIVOT_REGULAR, PIVOT_FREE
@@ -57,8 +57,7 @@ contains
         scale = max(maxval(abs(state%u)), maxval(abs(p)))
         if (.not. scale > 0.0_dp) return
         allocate (lines(size(map%springs)))
-        state%du = 0.0_dp
-        state%du(map%free_to_eq) = p
+        call scatter_free(map, p, state%du)
         call spring_lines(s, map, state%u, state%du, scale, lines, st)
         if (st%failed() .or. .not. any_crossing(lines)) return
         ! the curvature p^T K_S p of the tangent at u (element by element, as the residual)

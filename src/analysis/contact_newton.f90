@@ -51,7 +51,8 @@ module contact_newton
     use strings, only: to_text, real_e13, real_short
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         internal_forces_incremental, contact_history_start, contact_history_update, &
-        is_dis_contact, spring_matrices, contact_history_t
+        is_dis_contact, spring_matrices, contact_history_t, gather_free, scatter_free, &
+        spring_block_width
     use sparse_matrix, only: sym_move
     use solver_factory, only: assembly_renum
     use low_rank_update, only: block_set_init, factor_cost_in_solves
@@ -61,7 +62,9 @@ module contact_newton
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
         solve_held, answer_digits, real_digits
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
+    use analysis_relations, only: prepare_relations, relations_at
+    use assembly_relations, only: elimination_t
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
         step_pivots_t, residual_measures, criteria_met, absolute_tol, prediction_is_elastic, &
         DEFAULT_RESI_GLOB_RELA, DEFAULT_ITER_GLOB_MAXI, MATRIX_ELASTIC, &
@@ -120,9 +123,10 @@ contains
         type(status_t), intent(out) :: st
         type(assembly_map_t) :: map
         type(newton_state_t) :: state
-        logical, allocatable :: imposed(:)
+        logical, allocatable :: imposed(:), rigid(:)
+        type(elimination_t) :: elim
         integer(i4) :: k, step, n_eq
-        real(dp), allocatable :: targets(:)
+        real(dp), allocatable :: targets(:), forc(:)
         integer(i4), allocatable :: levels(:)
         real(dp) :: t_prev
         type(step_start_t) :: saved
@@ -136,7 +140,10 @@ contains
             call mark_imposed(s, excit(k)%load, imposed, st)
             if (st%failed()) return
         end do
-        call build_assembly_map(s, imposed, assembly_renum(options%factor), map, st)
+        call prepare_relations(s, excit, imposed, elim, rigid, st)
+        if (st%failed()) return
+        call build_assembly_map(s, imposed, assembly_renum(options%factor), map, st, elim, &
+            rigid)
         if (st%failed()) return
         call log_numbering(map, options%factor, log)
         call sym_move(map%pattern, state%matrix)
@@ -149,7 +156,8 @@ contains
         allocate (state%closed(size(map%springs)), state%fn(size(map%springs)), &
             state%fac_closed(size(map%springs)), state%tangent_closed(size(map%springs)))
         state%nprec = options%factor%nprec
-        call block_set_init(state%blocks, size(map%springs, kind=i4))
+        call block_set_init(state%blocks, size(map%springs, kind=i4), &
+            spring_block_width(s, map))
         call spring_matrices(s, map, state%blocks%sizes, state%blocks%eqs, state%blocks%k, st)
         if (st%failed()) return
         state%factor_cost = factor_cost_in_solves(state%solver%factor_flops, &
@@ -200,7 +208,10 @@ contains
             end if
             step = step + 1
             call result_reserve(res, step + 1 + size(targets, kind=i4) - k)
-            call result_store(res, step, targets(k), state%u, state%fint, &
+            if (.not. allocated(forc)) allocate (forc(size(state%fint)))
+            call recorded_internal_forces(s, targets(k), state%fint, forc, st)
+            if (st%failed()) return
+            call result_store(res, step, targets(k), state%u, forc, &
                 reactions(map, state), state%closed, state%fn)
             call store_spring_fields(s, state%u, res, st)
             if (st%failed()) return
@@ -318,7 +329,7 @@ contains
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(in) :: state
         real(dp) :: reac(size(state%u))
-        reac = merge(state%fint - state%fext, 0.0_dp, map%imposed)
+        reac = merge(state%fint - state%fext, 0.0_dp, map%constrained)
     end function reactions
 
     !> One step of STAT_NON_LINE (see the module header).
@@ -346,6 +357,7 @@ contains
             'CLOSED CHANGED  TIME(s)')
         state%u_start = state%u
         call loads_at(s, excit, t, state%u, state%fext, st)
+        if (st%ok()) call relations_at(s, excit, map, t, state%u, st)
         if (st%failed()) return
         state%du = state%u - state%u_start
         start = state%closed
@@ -357,6 +369,8 @@ contains
         state%solves = 0
         state%updated = 0
         state%damped = 0
+        state%force_evaluations = 0
+        state%force_seconds = 0.0_dp
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
@@ -368,10 +382,12 @@ contains
         ! Prediction (Code_Aster nmprta/nsassp): the imposed-value increments enter through
         ! the prediction matrix, K du = f_ext(t+) - f_int(t-) - K du_imposed, i.e. the springs
         ! are linearised about the start of the step (doc/analysis.md, "Prediction").
+        t0 = wall_seconds()
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
             state%closed, state%fn, st, state%linear, u_ref=state%u_start, &
             elastic_ref=prediction_is_elastic(options), history=state%history)
         if (st%failed()) return
+        call count_forces(state, t0)
         do iter = 0, options%iter_glob_maxi
             call options%deadline%check('STAT_NON_LINE at INST ' // real_e13(t) // &
                                         ', Newton iteration ' // to_text(iter), st)
@@ -381,7 +397,7 @@ contains
                 // ' (step ' // to_text(step) // '/' // to_text(size(summary%inst)) // &
                 '), iteration ' // to_text(iter))
             use = choose_matrix(options, iter, step, state)
-            r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
+            call gather_free(map, state%fext - state%fint, r)
             b = r
             tight(iter) = settled .or. solve_tightly
             call correction(s, map, state, use, iter == 0, options, t, tight(iter), log, piv, &
@@ -404,19 +420,19 @@ contains
             ! displacements move by all of it, the plates and plane solids see only the
             ! part that deforms them (their forces on the rigid modes are zero)
             call from_hat(state%solver, r, x)
-            state%du = 0.0_dp
-            state%du(map%free_to_eq) = alpha * x
-            state%u(map%free_to_eq) = state%u(map%free_to_eq) + state%du(map%free_to_eq)
+            call scatter_free(map, alpha * x, state%du)
+            state%u = state%u + state%du
             call hat_body_part(state%solver, r, x)
-            du_body = 0.0_dp
-            du_body(map%free_to_eq) = alpha * x
+            call scatter_free(map, alpha * x, du_body)
             history(:, iter) = state%closed
+            seconds = wall_seconds()
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
                 state%fint, state%closed, state%fn, st, state%linear, history=state%history, &
                 du_body=du_body)
             if (st%failed()) return
+            call count_forces(state, seconds)
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
-            call residual_measures(map%imposed, state%fint, state%fext, resi_rela, &
+            call residual_measures(map, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
             resi_history(iter) = resi_maxi
             seconds = wall_seconds() - t0
@@ -466,6 +482,8 @@ contains
         call log_add(log, '  solves with a factor: ' // to_text(state%solves) // &
             '; tangents through another status''s factor: ' // to_text(state%updated) // &
             '; corrections damped by the line search: ' // to_text(state%damped))
+        call log_add(log, '  internal forces: ' // to_text(state%force_evaluations) // &
+            ' evaluation(s), ' // seconds_text(state%force_seconds) // ' s')
         call log_add(log, '  closed in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
@@ -493,6 +511,15 @@ contains
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
 
+    !> One more evaluation of the internal forces, started at wall time t0 (the step's count
+    !> and time, for the .mess: doc/performance.md measures them).
+    subroutine count_forces(state, t0)
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: t0
+        state%force_evaluations = state%force_evaluations + 1
+        state%force_seconds = state%force_seconds + (wall_seconds() - t0)
+    end subroutine count_forces
+
     !> The .mess line on the digits the converged answer holds: one solve with the factor
     !> for the final residual (computed from the increments, element by element: without
     !> the contrast's cancellation) estimates the answer's error (answer_digits). Nothing
@@ -507,8 +534,8 @@ contains
         real(dp), allocatable :: r(:), e(:)
         character(len=:), allocatable :: loaded_at
         if (.not. state%fac_valid .or. map%n_free == 0) return
-        r = state%fext(map%free_to_eq) - state%fint(map%free_to_eq)
-        allocate (e(size(r)))
+        allocate (r(map%n_free), e(map%n_free))
+        call gather_free(map, state%fext - state%fint, r)
         call solve_held(s, map, state%matrix, state%solver, state%held, r, t, log, st, &
             loaded_at)
         if (st%failed() .or. allocated(loaded_at)) return

@@ -9,7 +9,8 @@ module factor_reuse
     use status, only: status_t
     use strings, only: to_text, real_short
     use direct_solver, only: check_disabled, effective_nprec, DIGITS_ALL_LOST
-    use assembly_system, only: structure_t, assembly_map_t, linear_product, body_product
+    use assembly_system, only: structure_t, assembly_map_t, linear_product, body_product, &
+        gather_free, scatter_free
     use two_level_solver, only: to_hat, from_hat, hat_body_part, hat_anchors_from, &
         modes_kept_apart
     use low_rank_update, only: pcg_work_t, pcg_begin, pcg_continue, pcg_options_t, &
@@ -216,28 +217,26 @@ contains
         type(status_t), intent(out) :: st
         real(dp), allocatable :: x(:), qs(:)
         if (.not. modes_kept_apart(state%solver)) then
-            state%du = 0.0_dp
-            state%du(map%free_to_eq) = p
+            call scatter_free(map, p, state%du)
             call linear_product(s, map, state%linear, state%du, state%work, st)
             if (st%failed()) return
-            q = state%work(map%free_to_eq)
+            call gather_free(map, state%work, q)
             call add_closed_blocks(state, closed, p, q)
             return
         end if
         allocate (x(size(p)), qs(size(p)))
         call from_hat(state%solver, p, x)
-        state%du = 0.0_dp
-        state%du(map%free_to_eq) = x
+        call scatter_free(map, x, state%du)
         call linear_product(s, map, state%linear, state%du, state%work, st, support_only=.true.)
         if (st%failed()) return
-        qs = state%work(map%free_to_eq)
+        call gather_free(map, state%work, qs)
         call add_closed_blocks(state, closed, x, qs)
         call hat_body_part(state%solver, p, x)
-        state%du = 0.0_dp
-        state%du(map%free_to_eq) = x
+        call scatter_free(map, x, state%du)
         call body_product(s, map, state%linear, state%du, state%work, st)
         if (st%failed()) return
-        q = qs + state%work(map%free_to_eq)
+        call gather_free(map, state%work, q)
+        q = qs + q
         call to_hat(state%solver, qs, x)
         call hat_anchors_from(state%solver, x, q)
     end subroutine tangent_product

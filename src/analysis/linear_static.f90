@@ -17,9 +17,11 @@ module linear_static
     use direct_solver, only: direct_solver_t, solver_options_t
     use solver_factory, only: assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        internal_forces
+        internal_forces, gather_free, scatter_free
     use assembly_loads, only: mark_imposed
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
+    use analysis_relations, only: prepare_relations, relations_at
+    use assembly_relations, only: elimination_t
     use analysis_solver, only: factor_and_diagnose_linear, open_solver, log_numbering, &
         solve_held, held_t, answer_digits, real_digits
     use two_level_solver, only: from_hat, hat_body_part
@@ -62,8 +64,10 @@ contains
         type(sym_matrix_t) :: matrix
         class(direct_solver_t), allocatable :: solver
         type(held_t) :: held
-        logical, allocatable :: imposed(:), closed(:)
-        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:)
+        logical, allocatable :: imposed(:), closed(:), rigid(:)
+        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:), du(:), &
+            forc(:)
+        type(elimination_t) :: elim
         integer(i4) :: k, n_eq, pass
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
@@ -78,15 +82,17 @@ contains
             call mark_imposed(s, excit(k)%load, imposed, st)
             if (st%failed()) return
         end do
-        call build_assembly_map(s, imposed, assembly_renum(options), map, st)
+        call prepare_relations(s, excit, imposed, elim, rigid, st)
+        if (st%failed()) return
+        call build_assembly_map(s, imposed, assembly_renum(options), map, st, elim, rigid)
         if (st%failed()) return
         call log_numbering(map, options, log)
         call sym_move(map%pattern, matrix)
         call open_solver(s, map, options, matrix, solver, log, st)
         if (present(progress) .and. st%ok()) solver%progress => progress
         if (st%failed()) return
-        allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), r(map%n_free), &
-            x(map%n_free), closed(0), fn(0))
+        allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
+            x(map%n_free), du(n_eq), closed(0), fn(0))
         u = 0.0_dp
         call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
         if (st%failed()) return
@@ -94,23 +100,29 @@ contains
         do k = 1, int(size(times), i4)
             u = 0.0_dp
             call loads_at(s, excit, times(k), u, fext, st)
+            if (st%ok()) call relations_at(s, excit, map, times(k), u, st)
             u_body = u
             if (st%ok()) call internal_forces(s, map, u, fint, closed, fn, st, u_body=u_body)
             if (st%failed()) return
             do pass = 1, 2 + REFINEMENT_STEPS
-                r = fext(map%free_to_eq) - fint(map%free_to_eq)
+                call gather_free(map, fext - fint, r)
                 call solve_held(s, map, matrix, solver, held, r, times(k), log, st)
                 if (st%failed()) return
                 call from_hat(solver, r, x)
                 ! the last solve only estimates the error of the answer
                 if (pass == 2 + REFINEMENT_STEPS) exit
-                u(map%free_to_eq) = u(map%free_to_eq) + x
+                call scatter_free(map, x, du)
+                u = u + du
                 call hat_body_part(solver, r, x)
-                u_body(map%free_to_eq) = u_body(map%free_to_eq) + x
+                call scatter_free(map, x, du)
+                u_body = u_body + du
                 call internal_forces(s, map, u, fint, closed, fn, st, u_body=u_body)
                 if (st%failed()) return
             end do
-            call result_store(res, k, times(k), u, fint, merge(fint - fext, 0.0_dp, imposed))
+            call recorded_internal_forces(s, times(k), fint, forc, st)   ! less thermal forces
+            if (st%failed()) return
+            call result_store(res, k, times(k), u, forc, merge(fint - fext, 0.0_dp, &
+                map%constrained))
             call log_add(log, 'INST ' // to_text(times(k)) // ': solved; the answer holds ' &
                 // real_digits(answer_digits(x, u)) // ' significant digits (correction ' // &
                 'for the final residual ' // real_short(maxval(abs(x), dim=1)) // &

@@ -8,7 +8,9 @@ module newton_state
     use kinds, only: dp, i4
     use sparse_matrix, only: sym_matrix_t
     use direct_solver, only: direct_solver_t, solver_options_t
-    use assembly_system, only: assembly_map_t, linear_cache_t, contact_history_t
+    use assembly_system, only: assembly_map_t, linear_cache_t, contact_history_t, &
+        free_residual_max
+    use assembly_relations, only: has_relations
     use low_rank_update, only: block_set_t
     use analysis_solver, only: held_t, pivot_diagnosis_t, pivot_record_t, PIVOT_REGULAR, &
         PIVOT_UNKNOWN
@@ -107,6 +109,9 @@ module newton_state
         type(pivot_diagnosis_t) :: judged
         type(held_t) :: held                !< equations held with the check off
         integer(i4) :: factorizations = 0, solves = 0, updated = 0, damped = 0  !< this step
+        !> evaluations of the internal forces in this step, and their wall time (s)
+        integer(i4) :: force_evaluations = 0
+        real(dp) :: force_seconds = 0.0_dp
         logical :: refactored = .false.
         integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
         type(solver_options_t) :: solver_options
@@ -130,30 +135,37 @@ module newton_state
 
 contains
 
-    !> RESI_GLOB_MAXI = max|f_ext - f_int| over the free equations and RESI_GLOB_RELA =
-    !> that / max(max|f_ext|, max|reactions|); zero_load when the denominator is 0 (then
-    !> resi_rela is returned as 0 and the caller must use the absolute criterion).
-    pure subroutine residual_measures(imposed, fint, fext, resi_rela, resi_maxi, zero_load)
-        logical, intent(in) :: imposed(:)
+    !> RESI_GLOB_MAXI = max|f_ext - f_int| over the free equations (with linear relations
+    !> the free equations' residual T^T (f_ext - f_int), the relations' forces on the slaves
+    !> taken out: assembly_system free_residual_max) and RESI_GLOB_RELA = that /
+    !> max(max|f_ext|, max|reactions|); zero_load when the denominator is 0 (then resi_rela
+    !> is returned as 0 and the caller must use the absolute criterion).
+    pure subroutine residual_measures(map, fint, fext, resi_rela, resi_maxi, zero_load)
+        type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: fint(:), fext(:)
         real(dp), intent(out) :: resi_rela, resi_maxi
         logical, intent(out) :: zero_load
         real(dp) :: denominator
-        resi_maxi = maxval(abs(fext - fint), mask=.not. imposed, dim=1)
-        if (count(.not. imposed) == 0) resi_maxi = 0.0_dp
-        denominator = resi_denominator(imposed, fint, fext)
+        if (has_relations(map%elim)) then
+            resi_maxi = free_residual_max(map, fint, fext)
+        else
+            resi_maxi = maxval(abs(fext - fint), mask=.not. map%imposed, dim=1)
+            if (count(.not. map%imposed) == 0) resi_maxi = 0.0_dp
+        end if
+        denominator = resi_denominator(map%constrained, fint, fext)
         zero_load = .not. denominator > 0.0_dp
         resi_rela = 0.0_dp
         if (.not. zero_load) resi_rela = resi_maxi / denominator
     end subroutine residual_measures
 
-    !> The denominator of RESI_GLOB_RELA: max(max|f_ext|, max|reactions|).
-    pure real(dp) function resi_denominator(imposed, fint, fext) result(denominator)
-        logical, intent(in) :: imposed(:)
+    !> The denominator of RESI_GLOB_RELA: max(max|f_ext|, max|reactions|), the reactions
+    !> being f_int - f_ext on the constrained equations (imposed, or in a relation).
+    pure real(dp) function resi_denominator(constrained, fint, fext) result(denominator)
+        logical, intent(in) :: constrained(:)
         real(dp), intent(in) :: fint(:), fext(:)
         denominator = maxval(abs(fext), dim=1)
-        if (any(imposed)) denominator = max(denominator, &
-            maxval(abs(fint - fext), mask=imposed, dim=1))
+        if (any(constrained)) denominator = max(denominator, &
+            maxval(abs(fint - fext), mask=constrained, dim=1))
     end function resi_denominator
 
     !> Absolute tolerance of the zero-load case: RESI_GLOB_MAXI if given, else the
@@ -185,7 +197,7 @@ contains
         type(assembly_map_t), intent(in) :: map
         type(newton_state_t), intent(in) :: state
         real(dp) :: denominator
-        denominator = resi_denominator(map%imposed, state%fint, state%fext)
+        denominator = resi_denominator(map%constrained, state%fint, state%fext)
         if (.not. denominator > 0.0_dp) then
             tolerance = absolute_tol(options)
         else

@@ -13,7 +13,7 @@
 !>    stretches its membrane: doc/analysis.md "Round-off").
 !> The body's imposed equations (DDL_IMPO, AFFE_CHAR_CINE: map%imposed) hold the modes that
 !> move them: the modes left are the combinations that are zero on every imposed equation
-!> (the null space of those rows). A body is held by springs only (or by nothing) when
+!> and satisfy every linear relation on the body (the null space of those rows). A body is held by springs only (or by nothing) when
 !> modes are left; they are kept apart by the two-level solver (two_level_solver), with one
 !> anchor equation per mode: translations (DX, DY, DZ) of the body's free equations chosen
 !> by pivoted Gram-Schmidt on the rows of the modes (the most independent rows: far-apart
@@ -90,14 +90,17 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         type(body_modes_t), allocatable :: found(:)
-        integer(i4), allocatable :: body_of_node(:), nodes(:), cells(:)
+        integer(i4), allocatable :: body_of_node(:), nodes(:), cells(:), row_ptr(:), &
+            row_list(:)
         integer(i4) :: b, i, k, m, col
         character(len=:), allocatable :: line
         call label_bodies(s, map, body_of_node, modes%n_bodies)
+        call relations_of_bodies(s, map, body_of_node, modes%n_bodies, row_ptr, row_list)
         allocate (found(modes%n_bodies))
         do b = 1, modes%n_bodies
             call body_members(s, map, body_of_node, b, nodes, cells)
-            call body_modes(s, map, nodes, cells, found(b), line, st)
+            call body_modes(s, map, nodes, cells, body_of_node, b, &
+                row_list(row_ptr(b):row_ptr(b + 1) - 1), found(b), line, st)
             if (st%failed()) return
             if (size(found(b)%anchors) == 0) cycle
             modes%n_floating = modes%n_floating + 1
@@ -119,7 +122,7 @@ contains
                 modes%anchors(col) = map%free_eq(found(b)%anchors(k))
                 modes%body_of_mode(col) = b
                 do i = 1, size(found(b)%eqs)
-                    if (map%imposed(found(b)%eqs(i))) cycle
+                    if (map%free_eq(found(b)%eqs(i)) == 0) cycle
                     modes%r(map%free_eq(found(b)%eqs(i)), col) = found(b)%values(i, k)
                 end do
             end do
@@ -211,12 +214,13 @@ contains
         cells = cells(1:n)
     end subroutine body_members
 
-    !> The modes of one body left free by its imposed equations, with their anchors (none:
-    !> the body is held), and its .mess description.
-    subroutine body_modes(s, map, nodes, cells, found, line, st)
+    !> The modes of one body left free by its imposed equations and its linear relations
+    !> (body_rows), with their anchors (none: the body is held), and its .mess description.
+    subroutine body_modes(s, map, nodes, cells, body_of_node, b, body_rows, found, line, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         integer(i4), intent(in) :: nodes(:), cells(:)
+        integer(i4), intent(in) :: body_of_node(:), b, body_rows(:)
         type(body_modes_t), intent(out) :: found
         character(len=:), allocatable, intent(out) :: line
         type(status_t), intent(out) :: st
@@ -252,6 +256,8 @@ contains
                 held(1:n0, k) = held(1:n0, k) + v(1:n0) * v(k)
             end do
         end do
+        call add_relation_rows(s, map, body_of_node, b, body_rows, motions(1:n0), xc, &
+            size_body, held(1:n0, 1:n0))
         call null_directions(held(1:n0, 1:n0), free_dirs)
         m = size(free_dirs, 2, kind=i4)
         if (m == 0) return
@@ -262,6 +268,77 @@ contains
         if (st%failed()) return
         line = body_text(s, nodes, cells, found%anchors, m, n0)
     end subroutine body_modes
+
+    !> The linear relations on each body's equations (CSR over bodies, each row once per
+    !> body it touches; none without relations).
+    subroutine relations_of_bodies(s, map, body_of_node, n_bodies, ptr, rows)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(in) :: body_of_node(:), n_bodies
+        integer(i4), allocatable, intent(out) :: ptr(:), rows(:)
+        integer(i4), allocatable :: bodies(:), count_of(:)
+        integer(i4) :: r, k, b, n, pass, i
+        allocate (ptr(n_bodies + 1), count_of(n_bodies), rows(0))
+        ptr = 1
+        if (.not. allocated(map%elim%rows%ptr)) return
+        do pass = 1, 2
+            count_of = 0
+            do r = 1, map%elim%rows%n
+                if (map%elim%rows%dropped(r)) cycle
+                bodies = [(body_of_node(s%dofs%equation_node(map%elim%rows%eq(k))), &
+                    k = map%elim%rows%ptr(r), map%elim%rows%ptr(r + 1) - 1)]
+                do i = 1, size(bodies)
+                    b = bodies(i)
+                    if (b == 0) cycle
+                    if (any(bodies(1:i - 1) == b)) cycle
+                    count_of(b) = count_of(b) + 1
+                    if (pass == 2) rows(ptr(b) + count_of(b) - 1) = r
+                end do
+            end do
+            if (pass == 2) exit
+            do b = 1, n_bodies
+                ptr(b + 1) = ptr(b) + count_of(b)
+            end do
+            n = ptr(n_bodies + 1) - 1
+            deallocate (rows)
+            allocate (rows(n))
+        end do
+    end subroutine relations_of_bodies
+
+    !> held <- held + v v^T for each linear relation `rows` on body b: v the relation
+    !> (coefficients of unit norm) applied to the candidate motions (zero off the body). A
+    !> mode must satisfy the relations (C R = 0) to be one of the reduced system's
+    !> (T R_free = R, assembly_relations); a relation linking two bodies holds each.
+    subroutine add_relation_rows(s, map, body_of_node, b, rows, motions, xc, size_body, held)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(in) :: body_of_node(:), b, rows(:)
+        type(motion_t), intent(in) :: motions(:)
+        real(dp), intent(in) :: xc(3), size_body
+        real(dp), intent(inout) :: held(:, :)
+        real(dp) :: v(size(held, 1)), scale
+        integer(i4) :: i, r, k, e, m
+        do i = 1, size(rows)
+            r = rows(i)
+            v = 0.0_dp
+            scale = 0.0_dp
+            do k = map%elim%rows%ptr(r), map%elim%rows%ptr(r + 1) - 1
+                scale = scale + map%elim%rows%coef(k)**2
+                e = map%elim%rows%eq(k)
+                if (body_of_node(s%dofs%equation_node(e)) /= b) cycle
+                do m = 1, size(v, kind=i4)
+                    v(m) = v(m) + map%elim%rows%coef(k) * motion_value(motions(m), &
+                        s%mesh%coords(:, s%dofs%equation_node(e)) - xc, &
+                        s%dofs%equation_component(e), size_body)
+                end do
+            end do
+            if (.not. scale > 0.0_dp) cycle
+            v = v / sqrt(scale)
+            do m = 1, size(v, kind=i4)
+                held(:, m) = held(:, m) + v * v(m)
+            end do
+        end do
+    end subroutine add_relation_rows
 
     !> The candidate rigid motions of a body (module header): plates or plane solids.
     subroutine candidate_motions(s, cells, xc, motions, n)
@@ -443,7 +520,7 @@ contains
         m = size(rows, 2, kind=i4)
         allocate (anchors(m))
         do pass = 1, 2
-            eligible = .not. map%imposed(eqs)
+            eligible = map%free_eq(eqs) > 0
             if (pass == 1) eligible = eligible .and. s%dofs%equation_component(eqs) <= DOF_DZ
             rest = rows
             top = maxval(abs(rows))

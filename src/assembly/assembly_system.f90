@@ -33,6 +33,8 @@ module assembly_system
         sym_add_element, envelope_of_elements
     use renumbering, only: renumber_graph, graph_from_elements
     use huge_pages, only: advise_huge_pages
+    use assembly_relations, only: elimination_t, touches_slave, element_transform, &
+        reduce_element, expand_free, reduce_to_free, has_relations
     implicit none
     private
 
@@ -59,7 +61,14 @@ module assembly_system
         integer(i4), allocatable :: free_eq(:)      !< (n_equations) free number, 0 = imposed
         integer(i4), allocatable :: free_to_eq(:)   !< (n_free) original equation
         logical, allocatable :: imposed(:)          !< (n_equations)
+        !> the linear relations, eliminated (assembly_relations): slaves are neither free nor
+        !> imposed; the matrix is T^T K T on the free equations
+        type(elimination_t) :: elim
+        !> (n_equations) imposed or in a relation: where REAC_NODA is f_int - f_ext
+        logical, allocatable :: constrained(:)
         integer(i4), allocatable :: cells(:)        !< modelled cells with a stiffness
+        !> (size(cells)) the cell has a slave equation: its matrix goes through T
+        logical, allocatable :: reduced(:)
         integer(i4), allocatable :: springs(:)      !< DIS_CHOC / DIS_CONTACT cells (result order)
         integer(i4), allocatable :: spring_of(:)    !< (n_cells) index in springs, 0 = none
         character(len=:), allocatable :: renum      !< RCMK, METIS or SANS
@@ -102,6 +111,7 @@ module assembly_system
 
     public :: structure_check, build_assembly_map, element_equations, assemble_stiffness, &
         internal_forces, internal_forces_incremental, renumbering_lines, is_dis_contact, &
+        spring_block_width, gather_free, scatter_free, free_residual_max, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
         spring_lines, linear_product, body_product, support_product, is_body_cell, &
         cell_response
@@ -196,22 +206,37 @@ contains
         end do
     end subroutine element_equations
 
-    !> Numbers the free equations (nodes renumbered by `renum`, then their non-imposed
-    !> components in order) and builds the matrix pattern; records the envelope (profile,
-    !> bandwidth) before (original node order) and after renumbering.
+    !> Numbers the free equations (nodes renumbered by `renum`, then their components
+    !> neither imposed nor slaves of a relation, in order) and builds the matrix pattern;
+    !> records the envelope (profile, bandwidth) before (original node order) and after
+    !> renumbering.
     !>  imposed : in, (n_equations) .true. for the equations of DDL_IMPO
     !>  renum   : in, 'RCMK' (default of Code_Aster LDLT), 'METIS' or 'SANS' (back-ends with
     !>            an ordering of their own get 'SANS')
     !>  st      : out, unknown method, or a renumbering/pattern failure
-    subroutine build_assembly_map(s, imposed, renum, map, st)
+    !>  elim    : inout, optional, the eliminated relations (moved into the map)
+    !>  rigid   : in, optional, (n_cells) cells inside a rigid body (LIAISON_SOLIDE): they
+    !>            store no energy under its relations and are left out
+    subroutine build_assembly_map(s, imposed, renum, map, st, elim, rigid)
         type(structure_t), intent(in) :: s
         logical, intent(in) :: imposed(:)
         character(len=*), intent(in) :: renum
         type(assembly_map_t), intent(out) :: map
         type(status_t), intent(out) :: st
+        type(elimination_t), intent(inout), optional :: elim
+        logical, intent(in), optional :: rigid(:)
         integer(i4), allocatable :: identity(:), new_to_old(:), old_to_new(:), xadj(:), adjncy(:)
         integer(i4), allocatable :: ptr(:), eqs_all(:)
-        integer(i4) :: c, n_cells, k
+        integer(i4) :: c, n_cells, k, n, eqs(MAX_ELEMENT_DOFS)
+        logical, allocatable :: eliminated(:)
+        if (present(elim)) then
+            call move_elimination(elim, map%elim)
+        else
+            allocate (map%elim%slave_of(s%dofs%n_equations), source=0_i4)
+            allocate (map%elim%in_relation(s%dofs%n_equations), source=.false.)
+        end if
+        map%constrained = imposed .or. map%elim%in_relation
+        eliminated = imposed .or. map%elim%slave_of > 0
         map%imposed = imposed
         map%renum = renum
         n_cells = 0
@@ -219,6 +244,9 @@ contains
         k = 0
         do c = 1, s%mesh%n_cells
             if (s%model%element(c) == ELEM_NONE .or. is_plane_edge(s%model%element(c))) cycle
+            if (present(rigid)) then
+                if (rigid(c)) cycle
+            end if
             n_cells = n_cells + 1
             map%cells(n_cells) = c
             if (s%choc(c) .and. is_discrete(s%model%element(c))) then
@@ -232,12 +260,17 @@ contains
         do k = 1, size(map%springs)
             map%spring_of(map%springs(k)) = k
         end do
-        call node_graph(s, map%cells, xadj, adjncy, st)
+        allocate (map%reduced(n_cells))
+        do k = 1, n_cells
+            call element_equations(s, map%cells(k), eqs, n)
+            map%reduced(k) = touches_slave(map%elim, eqs(1:n))
+        end do
+        call node_graph(s, map%cells, map%elim, xadj, adjncy, st)
         if (st%failed()) return
         call renumber_graph(renum, s%mesh%n_nodes, xadj, adjncy, new_to_old, old_to_new, st)
         if (st%failed()) return
         identity = [(k, k = 1, s%mesh%n_nodes)]
-        call number_free(s, imposed, identity, map)
+        call number_free(s, eliminated, identity, map)
         call element_free_equations(s, map, ptr, eqs_all)
         call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_before, &
             map%bandwidth_before)
@@ -247,7 +280,7 @@ contains
             map%profile_after = map%profile_before
             map%bandwidth_after = map%bandwidth_before
         else
-            call number_free(s, imposed, new_to_old, map)
+            call number_free(s, eliminated, new_to_old, map)
             call element_free_equations(s, map, ptr, eqs_all)
             call envelope_of_elements(map%n_free, ptr, eqs_all, map%profile_after, &
                 map%bandwidth_after)
@@ -258,7 +291,7 @@ contains
         ! worse: the mesh's order is kept when it is smaller, and the .mess says so.
         if (renum == 'RCMK' .and. map%profile_after > map%profile_before) then
             map%rejected_rcm_profile = map%profile_after
-            call number_free(s, imposed, identity, map)
+            call number_free(s, eliminated, identity, map)
             call element_free_equations(s, map, ptr, eqs_all)
             map%profile_after = map%profile_before
             map%bandwidth_after = map%bandwidth_before
@@ -266,31 +299,45 @@ contains
         call sym_pattern_from_elements(map%pattern, map%n_free, ptr, eqs_all, st)
     end subroutine build_assembly_map
 
-    !> Node graph of the cells with a stiffness.
-    subroutine node_graph(s, cells, xadj, adjncy, st)
+    !> Node graph of the cells with a stiffness, and of the relations (the nodes of each
+    !> relation linked as a cell's are: eliminating a slave couples its masters with its
+    !> neighbours, and the orderings should see it).
+    subroutine node_graph(s, cells, elim, xadj, adjncy, st)
         type(structure_t), intent(in) :: s
         integer(i4), intent(in) :: cells(:)
+        type(elimination_t), intent(in) :: elim
         integer(i4), allocatable, intent(out) :: xadj(:), adjncy(:)
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: ptr(:), nodes(:)
-        integer(i4) :: k, c, n
-        allocate (ptr(size(cells) + 1))
+        integer(i4) :: k, c, n, n_rows, r, m
+        n_rows = 0
+        if (allocated(elim%rows%ptr)) n_rows = elim%rows%n
+        allocate (ptr(size(cells) + n_rows + 1))
         ptr(1) = 1
         do k = 1, size(cells)
             c = cells(k)
             ptr(k + 1) = ptr(k) + s%mesh%cell_ptr(c + 1) - s%mesh%cell_ptr(c)
         end do
-        allocate (nodes(ptr(size(cells) + 1) - 1))
+        m = size(cells, kind=i4)
+        do r = 1, n_rows
+            ptr(m + r + 1) = ptr(m + r) + elim%rows%ptr(r + 1) - elim%rows%ptr(r)
+        end do
+        allocate (nodes(ptr(size(ptr)) - 1))
         do k = 1, size(cells)
             c = cells(k)
             n = s%mesh%cell_ptr(c + 1) - s%mesh%cell_ptr(c)
             nodes(ptr(k):ptr(k + 1) - 1) = s%mesh%cell_nodes(s%mesh%cell_ptr(c): &
                 s%mesh%cell_ptr(c + 1) - 1)
         end do
+        do r = 1, n_rows
+            nodes(ptr(m + r):ptr(m + r + 1) - 1) = s%dofs%equation_node(elim%rows%eq( &
+                elim%rows%ptr(r):elim%rows%ptr(r + 1) - 1))
+        end do
         call graph_from_elements(s%mesh%n_nodes, ptr, nodes, xadj, adjncy, st)
     end subroutine node_graph
 
     !> Free equation numbers in the node order `order` (new_to_old).
+    !>  imposed : in, (n_equations) the equations that are not free (imposed, slaves)
     subroutine number_free(s, imposed, order, map)
         type(structure_t), intent(in) :: s
         logical, intent(in) :: imposed(:)
@@ -316,16 +363,35 @@ contains
         end do
     end subroutine number_free
 
-    !> Free equations of every cell with a stiffness, in CSR form (ptr, eqs; 0 = imposed).
+    !> Free equations of every cell with a stiffness, in CSR form (ptr, eqs; 0 = imposed);
+    !> a cell with slave equations gets the free equations its slaves depend on.
     subroutine element_free_equations(s, map, ptr, eqs_all)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         integer(i4), allocatable, intent(out) :: ptr(:), eqs_all(:)
-        integer(i4) :: k, n, eqs(MAX_ELEMENT_DOFS)
+        integer(i4) :: k, n, m, eqs(MAX_ELEMENT_DOFS)
+        integer(i4), allocatable :: red(:), grown(:)
+        real(dp), allocatable :: te(:, :)
         allocate (ptr(size(map%cells) + 1), eqs_all(MAX_ELEMENT_DOFS * size(map%cells)))
         ptr(1) = 1
         do k = 1, size(map%cells)
             call element_equations(s, map%cells(k), eqs, n)
+            if (map%reduced(k)) then
+                call element_transform(map%elim, map%free_eq, eqs(1:n), red, te, m)
+                if (ptr(k) + m - 1 > size(eqs_all)) then
+                    allocate (grown(2 * (ptr(k) + m)))
+                    grown(1:ptr(k) - 1) = eqs_all(1:ptr(k) - 1)
+                    call move_alloc(grown, eqs_all)
+                end if
+                eqs_all(ptr(k):ptr(k) + m - 1) = red
+                ptr(k + 1) = ptr(k) + m
+                cycle
+            end if
+            if (ptr(k) + n - 1 > size(eqs_all)) then
+                allocate (grown(2 * (ptr(k) + n)))
+                grown(1:ptr(k) - 1) = eqs_all(1:ptr(k) - 1)
+                call move_alloc(grown, eqs_all)
+            end if
             eqs_all(ptr(k):ptr(k) + n - 1) = free_of(map, eqs(1:n))
             ptr(k + 1) = ptr(k) + n
         end do
@@ -835,10 +901,31 @@ contains
                     closed, fn, st, map, history)
                 if (st%failed()) return
             end if
-            call sym_add_element(a, free_of(map, eqs(1:n)), ke, st)
+            if (map%reduced(k)) then
+                call add_reduced_element(map, eqs(1:n), ke, a, st)
+            else
+                call sym_add_element(a, free_of(map, eqs(1:n)), ke, st)
+            end if
             if (st%failed()) return
         end do
     end subroutine assemble_stiffness
+
+    !> Adds an element matrix on equations with slaves: te^T ke te on the free equations
+    !> the element depends on (assembly_relations).
+    subroutine add_reduced_element(map, eqs, ke, a, st)
+        type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(in) :: eqs(:)
+        real(dp), intent(in) :: ke(:, :)
+        type(sym_matrix_t), intent(inout) :: a
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: red(:)
+        real(dp), allocatable :: te(:, :), kred(:, :)
+        integer(i4) :: m
+        call element_transform(map%elim, map%free_eq, eqs, red, te, m)
+        allocate (kred(m, m))
+        call reduce_element(te, ke, kred)
+        call sym_add_element(a, red, kred, st)
+    end subroutine add_reduced_element
 
     !> Internal forces f_int(u) on every original equation, and the DIS_CHOC states.
     !>  fint   : out, (n_equations)
@@ -1002,8 +1089,9 @@ contains
         integer(i4), intent(out) :: sizes(:), eqs(:, :)
         real(dp), intent(out) :: k(:, :, :)
         type(status_t), intent(out) :: st
-        integer(i4) :: i, c, n, all_eqs(MAX_ELEMENT_DOFS)
-        real(dp), allocatable :: ke(:, :), fe(:)
+        integer(i4) :: i, c, n, m, all_eqs(MAX_ELEMENT_DOFS)
+        integer(i4), allocatable :: red(:)
+        real(dp), allocatable :: ke(:, :), fe(:), te(:, :), kred(:, :)
         real(dp) :: fn
         logical :: closed
         eqs = 0
@@ -1011,20 +1099,51 @@ contains
         do i = 1, size(map%springs)
             c = map%springs(i)
             call element_equations(s, c, all_eqs, n)
-            if (n > size(eqs, 1)) then
-                call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': ' // &
-                    to_text(n) // ' equations, more than a spring''s ' // to_text(size(eqs, 1)))
-                return
-            end if
             call size_element_arrays(n, ke, fe)
             call cell_response(s, c, spread(0.0_dp, 1, n), n, .true., .true., ke, fe, &
                 closed, fn, st)
             if (st%failed()) return
-            sizes(i) = n
-            eqs(1:n, i) = free_of(map, all_eqs(1:n))
-            k(1:n, 1:n, i) = ke
+            if (allocated(kred)) deallocate (kred)
+            if (touches_slave(map%elim, all_eqs(1:n))) then
+                ! a spring on a slave node: its matrix on the free equations it acts on
+                call element_transform(map%elim, map%free_eq, all_eqs(1:n), red, te, m)
+                allocate (kred(m, m))
+                call reduce_element(te, ke, kred)
+            else
+                m = n
+                if (allocated(red)) deallocate (red)
+                allocate (red(n), kred(n, n))
+                red(1:n) = free_of(map, all_eqs(1:n))
+                kred(1:n, 1:n) = ke(1:n, 1:n)
+            end if
+            if (m > size(eqs, 1)) then
+                call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': ' // &
+                    to_text(m) // ' equations, more than a spring''s ' // to_text(size(eqs, 1)))
+                return
+            end if
+            sizes(i) = m
+            eqs(1:m, i) = red
+            k(1:m, 1:m, i) = kred
         end do
     end subroutine spring_matrices
+
+    !> The most equations a spring's closed matrix acts on (spring_matrices): the spring's
+    !> own, or with linear relations the free equations its slave equations depend on.
+    integer(i4) function spring_block_width(s, map) result(width)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        integer(i4) :: i, n, m, all_eqs(MAX_ELEMENT_DOFS)
+        integer(i4), allocatable :: red(:)
+        real(dp), allocatable :: te(:, :)
+        width = 0
+        do i = 1, size(map%springs)
+            call element_equations(s, map%springs(i), all_eqs, n)
+            m = n
+            if (touches_slave(map%elim, all_eqs(1:n))) &
+                call element_transform(map%elim, map%free_eq, all_eqs(1:n), red, te, m)
+            width = max(width, m)
+        end do
+    end function spring_block_width
 
     !> The energy of every DIS_CHOC spring along u + alpha du (choc_line_t), in
     !> map%springs order: what a line search on the contact energy needs.
@@ -1159,10 +1278,19 @@ contains
         real(dp), intent(out) :: y(:, :)
         type(status_t), intent(out) :: st
         type(contact_history_t), intent(in), optional :: history
-        integer(i4) :: k, c, n, i, j, eqs(MAX_ELEMENT_DOFS), free(MAX_ELEMENT_DOFS)
-        real(dp), allocatable :: ke(:, :), fe(:)
+        integer(i4) :: k, c, n, i, j, col, eqs(MAX_ELEMENT_DOFS), free(MAX_ELEMENT_DOFS)
+        real(dp), allocatable :: ke(:, :), fe(:), v(:, :), f(:, :)
         real(dp) :: fn
-        logical :: closed
+        logical :: closed, relations
+        ! with linear relations T^T K_s T x: the products on the original equations
+        relations = has_relations(map%elim)
+        if (relations) then
+            allocate (v(s%dofs%n_equations, size(x, 2)), f(s%dofs%n_equations, size(x, 2)))
+            do col = 1, size(x, 2, kind=i4)
+                call scatter_free(map, x(:, col), v(:, col))
+            end do
+            f = 0.0_dp
+        end if
         y = 0.0_dp
         do k = 1, size(map%cells)
             c = map%cells(k)
@@ -1172,6 +1300,15 @@ contains
             call cell_response(s, c, gather(u, eqs, n), n, elastic, .true., ke, fe, closed, &
                 fn, st, map, history)
             if (st%failed()) return
+            if (relations) then
+                do i = 1, n
+                    if (eqs(i) == 0) cycle
+                    do j = 1, n
+                        if (eqs(j) > 0) f(eqs(i), :) = f(eqs(i), :) + ke(i, j) * v(eqs(j), :)
+                    end do
+                end do
+                cycle
+            end if
             free(1:n) = free_of(map, eqs(1:n))
             do i = 1, n
                 if (free(i) == 0) cycle
@@ -1180,6 +1317,11 @@ contains
                 end do
             end do
         end do
+        if (relations) then
+            do col = 1, size(x, 2, kind=i4)
+                call gather_free(map, f(:, col), y(:, col))
+            end do
+        end if
     end subroutine support_product
 
     !> Plates and plane solids: the cells whose rigid motions have zero energy (the bodies
@@ -1368,5 +1510,56 @@ contains
         if (st%failed()) return
         force2(1:n / 2) = fe(n / 2 + 1:n)
     end subroutine spring_response
+
+    !> x = T^T v: a vector on the original equations (forces, residuals) on the free ones;
+    !> without relations x = v(free_to_eq) (assembly_relations reduce_to_free).
+    !>  x : out, (n_free)
+    pure subroutine gather_free(map, v, x)
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: v(:)
+        real(dp), intent(out) :: x(:)
+        call reduce_to_free(map%elim, map%free_eq, map%free_to_eq, v, x)
+    end subroutine gather_free
+
+    !> v = T x: free values on the original equations, the slaves from them, the imposed
+    !> equations 0 (a correction or direction; assembly_relations expand_free).
+    !>  v : out, (n_equations)
+    pure subroutine scatter_free(map, x, v)
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: x(:)
+        real(dp), intent(out) :: v(:)
+        call expand_free(map%elim, map%free_eq, map%free_to_eq, x, v)
+    end subroutine scatter_free
+
+    !> max |T^T (f_ext - f_int)| over the free equations (0 when there is none): the
+    !> residual of each free equation with the forces of the relations on the slaves taken
+    !> out (Code_Aster's per-DOF residual with the multipliers that balance the slaves).
+    pure real(dp) function free_residual_max(map, fint, fext) result(r)
+        type(assembly_map_t), intent(in) :: map
+        real(dp), intent(in) :: fint(:), fext(:)
+        real(dp), allocatable :: x(:)
+        r = 0.0_dp
+        if (map%n_free == 0) return
+        allocate (x(map%n_free))
+        call reduce_to_free(map%elim, map%free_eq, map%free_to_eq, fext - fint, x)
+        r = maxval(abs(x))
+    end function free_residual_max
+
+    ! Moves an elimination (its arrays) into the map's.
+    subroutine move_elimination(from, to)
+        type(elimination_t), intent(inout) :: from
+        type(elimination_t), intent(out) :: to
+        to%n_slaves = from%n_slaves
+        call move_alloc(from%slave_of, to%slave_of)
+        call move_alloc(from%in_relation, to%in_relation)
+        if (allocated(from%slave_eq)) call move_alloc(from%slave_eq, to%slave_eq)
+        if (allocated(from%ptr)) call move_alloc(from%ptr, to%ptr)
+        if (allocated(from%term_eq)) call move_alloc(from%term_eq, to%term_eq)
+        if (allocated(from%term_coef)) call move_alloc(from%term_coef, to%term_coef)
+        if (allocated(from%rhs_ptr)) call move_alloc(from%rhs_ptr, to%rhs_ptr)
+        if (allocated(from%rhs_row)) call move_alloc(from%rhs_row, to%rhs_row)
+        if (allocated(from%rhs_coef)) call move_alloc(from%rhs_coef, to%rhs_coef)
+        to%rows = from%rows
+    end subroutine move_elimination
 
 end module assembly_system

@@ -267,6 +267,7 @@ contains
         resu_path = ctx%output_path('.resu')
         if (allocated(opts%export) .and. st%ok()) &
             call apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
+        if (allocated(opts%export) .and. st%failed()) call keep_export_mess(exp, mess_path)
         if (.not. allocated(opts%export)) then
             files = opts%decks
             allocate (file_lines(0))
@@ -404,7 +405,7 @@ contains
     end function error_line
 
     !> Takes from an export file what the run needs: its command files (in order), its
-    !> units (F mmed|med|mail|msh NAME D U, and the result files parasol writes on a unit),
+    !> units (every F TYPE NAME D|R U with U > 0, as run_aster makes it fort.U),
     !> its modules (F nom), its listings (F mess|resu NAME R U) and its time limit.
     !>  files : out, the command files;  file_lines : out, their F comm lines
     subroutine apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
@@ -427,7 +428,7 @@ contains
                 case ('mess', 'resu')
                     if (e%result .and. e%type == 'mess') mess_path = e%path
                     if (e%result .and. e%type == 'resu') resu_path = e%path
-                case ('mmed', 'med', 'mail', 'msh', 'rmed')
+                case default            ! any other file on a unit, as run_aster's fort.U
                     if (e%unit > 0) call ctx%bind_unit(e%unit, e%path)
                 end select
             end associate
@@ -435,6 +436,22 @@ contains
         if (exp%time_limit > 0.0_dp) call ctx%deadline%start(exp%time_limit, &
             exp%path // ':' // to_text(int(exp%time_limit_line, i4)) // ' (P time_limit)')
     end subroutine apply_export
+
+    !> An export file that failed its checks still gets its .mess where its F mess line
+    !> puts it, when that line itself is sound (export_result_problem): the error is then
+    !> written where the user looks for it, never lost.
+    subroutine keep_export_mess(exp, mess_path)
+        type(export_t), intent(in) :: exp
+        character(len=:), allocatable, intent(inout) :: mess_path
+        integer :: k
+        if (.not. allocated(exp%entries)) return
+        do k = 1, size(exp%entries)
+            associate (e => exp%entries(k))
+                if (e%folder .or. .not. e%result .or. e%type /= 'mess') cycle
+                if (len(exp%result_problem(k)) == 0) mess_path = e%path
+            end associate
+        end do
+    end subroutine keep_export_mess
 
     !> Records in the .mess each line of the export file and what parasol does with it.
     subroutine describe_export(ctx, exp)

@@ -6,23 +6,23 @@
 !>   R TYPE PATH FLAGS UNIT   a folder (Code_Aster's databases, repe): reported
 !> Blank lines and lines starting with # are skipped. A PATH may hold spaces (the words
 !> between TYPE and FLAGS); a relative PATH is relative to the export file's folder.
-!> Every error is located `CASE.export:LINE: error: ...` and says what would be right.
+!> Every error is located `CASE.export:LINE: error: ...` and says what would be right. The
+!> result files parasol writes are checked before the run (export_result_problem).
 module export_file
     use kinds, only: dp
     use strings, only: string_t, to_text, join_words, ends_with
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_DECK_ERROR
     use deck_interpreter, only: read_source_text
     use mesh_text_lexer, only: parse_real
+    use system_error, only: path_kind, folder_of, canonical_path, PATH_FOLDER, PATH_MISSING
     implicit none
     private
 
-    !> File types read by parasol: command files, Python modules, meshes on a unit.
-    character(len=*), parameter :: READ_TYPES = ' comm nom mmed med mail msh '
     !> Result types parasol writes: its listings, and meshes/results on a unit (IMPR_RESU).
     character(len=*), parameter :: WRITTEN_TYPES = ' mess resu rmed mmed med msh '
-    !> Other Code_Aster file types: accepted, reported in the .mess, not used.
-    character(len=*), parameter :: OTHER_TYPES = ' datg mgib gibi libr unv ideas btc base ' &
-        // 'bhdf repe erre cast dat tab pos ensi para hist '
+    !> Any other type word is accepted, as run_aster accepts it (msup, libr, datg, tab, ...):
+    !> a file with a unit is bound to it (a command reading or writing that unit uses it),
+    !> one without is reported in the .mess.
 
     !> One F or R line.
     !>  folder : an R line;  type : comm, mmed, ...;  name : the path as written
@@ -55,6 +55,7 @@ module export_file
     contains
         procedure :: command_files => export_command_files
         procedure :: describe => export_describe
+        procedure :: result_problem => export_result_problem
     end type export_t
 
     public :: read_export, parse_export, is_export_path, module_name
@@ -76,7 +77,7 @@ contains
         character(len=*), intent(in) :: path
         type(export_t), intent(out) :: exp
         type(status_t), intent(out) :: st
-        character(len=:), allocatable :: text
+        character(len=:), allocatable :: text, problem
         integer :: k
         logical :: exists
         call read_source_text(path, 'the export file', text, st)
@@ -85,18 +86,74 @@ contains
         if (st%failed()) return
         do k = 1, size(exp%entries)
             associate (e => exp%entries(k))
-                if (.not. e%data) cycle
-                inquire (file=e%path, exist=exists)
-                if (.not. exists) then
-                    call set_error(st, STATUS_IO_ERROR, 'file not found: ' // e%path // &
-                        ' (F ' // e%type // ' ' // e%name // ': a data file must exist; ' // &
-                        'a relative name is relative to the export file''s folder)', &
-                        file=path, line=e%line)
+                if (e%data) then
+                    inquire (file=e%path, exist=exists)
+                    if (.not. exists) then
+                        call set_error(st, STATUS_IO_ERROR, 'file not found: ' // e%path // &
+                            ' (F ' // e%type // ' ' // e%name // ': a data file must ' // &
+                            'exist; a relative name is relative to the export file''s ' // &
+                            'folder)', file=path, line=e%line)
+                        return
+                    end if
+                end if
+                problem = exp%result_problem(k)
+                if (len(problem) > 0) then
+                    call set_error(st, STATUS_IO_ERROR, problem, file=path, line=e%line)
                     return
                 end if
             end associate
         end do
     end subroutine read_export
+
+    !> What is wrong with entry k as a result file parasol writes ('' when nothing, or when
+    !> parasol does not write it), checked before the run starts so that no listing is
+    !> lost at its end: its folder must exist, it must not name a folder, and no earlier
+    !> result line may name the same file (the .mess and the .resu on one file would
+    !> overwrite each other).
+    function export_result_problem(self, k) result(problem)
+        class(export_t), intent(in) :: self
+        integer, intent(in) :: k
+        character(len=:), allocatable :: problem, line_text, folder, here
+        integer :: j
+        problem = ''
+        if (.not. written_result(self%entries(k))) return
+        associate (e => self%entries(k))
+            line_text = 'F ' // e%type // ' ' // e%name // ' R ' // to_text(e%unit) // ': '
+            if (path_kind(e%path) == PATH_FOLDER) then
+                problem = line_text // e%name // ' is a folder; a result line names the ' // &
+                    'file parasol writes (e.g. F ' // e%type // ' ' // self%stem // '.' // &
+                    e%type // ' R ' // to_text(e%unit) // ')'
+                return
+            end if
+            folder = folder_of(e%path)
+            if (path_kind(folder) /= PATH_FOLDER) then
+                problem = line_text // 'the folder ' // folder // ' does not exist (the ' // &
+                    'folder of a result file must exist before the run: create it, or name ' &
+                    // 'a file in an existing folder; a relative name is relative to the ' // &
+                    'export file''s folder)'
+                if (path_kind(folder) /= PATH_MISSING) problem = line_text // folder // &
+                    ' is not a folder (the result file ' // e%name // ' cannot be made in it)'
+                return
+            end if
+            here = canonical_path(e%path)
+            do j = 1, k - 1
+                if (.not. written_result(self%entries(j))) cycle
+                if (canonical_path(self%entries(j)%path) /= here) cycle
+                problem = line_text // 'the same file as line ' // &
+                    to_text(self%entries(j)%line) // ' (F ' // self%entries(j)%type // ' ' // &
+                    self%entries(j)%name // ' R ' // to_text(self%entries(j)%unit) // &
+                    '): each result needs a file of its own'
+                return
+            end do
+        end associate
+    end function export_result_problem
+
+    ! A result file parasol writes: a listing (mess, resu) or a mesh/result on a unit.
+    pure logical function written_result(e)
+        type(export_entry_t), intent(in) :: e
+        written_result = .not. e%folder .and. e%result .and. &
+            index(WRITTEN_TYPES, ' ' // e%type // ' ') > 0
+    end function written_result
 
     !> Parses the text of an export file (no file system access but the name).
     !>  path : in, the export file (messages, folder of relative names)
@@ -249,10 +306,6 @@ contains
             call fail('bad logical unit "' // words(size(words))%s // '" (a number >= 0, ' // &
                       'e.g. 20 for a mesh, 1 for a command file)'); return
         end if
-        if (index(READ_TYPES // WRITTEN_TYPES // OTHER_TYPES, ' ' // e%type // ' ') == 0) then
-            call fail('unknown file type "' // e%type // '" (known: comm nom mmed med mail ' &
-                      // 'msh mess resu rmed' // trim(OTHER_TYPES) // ')'); return
-        end if
         if (.not. (e%data .or. e%result)) then
             call fail('flags "' // flags // '" give neither D (data) nor R (result)'); return
         end if
@@ -315,6 +368,9 @@ contains
             else if (e%result .and. index(WRITTEN_TYPES, ' ' // e%type // ' ') > 0) then
                 what = 'bound to logical unit ' // to_text(e%unit) // ' (IMPR_RESU UNITE=' // &
                     to_text(e%unit) // ' writes it)'
+            else if (e%unit > 0 .and. e%type /= 'mess' .and. e%type /= 'resu') then
+                what = 'bound to logical unit ' // to_text(e%unit) // ' (a command that ' // &
+                    'reads or writes unit ' // to_text(e%unit) // ' uses it)'
             else if (e%result) then
                 what = 'not written: parasol writes no ' // e%type // ' file'
             else

@@ -23,7 +23,7 @@
 module atomic_file
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_long, c_size_t, c_null_char, &
         c_funptr, c_funloc, c_intptr_t
-    use kinds, only: i4
+    use kinds, only: i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR
     use strings, only: to_text
     use system_error, only: last_errno, errno_text, process_id, path_kind, PATH_FOLDER, &
@@ -63,7 +63,8 @@ module atomic_file
     end type atomic_file_t
 
     public :: open_atomic, rename_file, delete_file, temporary_path, publish_file, &
-        track_temporary, untrack_temporary, install_interrupt_cleanup, write_failure_text
+        track_temporary, untrack_temporary, install_interrupt_cleanup, write_failure_text, &
+        scratch_path, copy_file
 
     ! ---- temporary files removed on an interrupt (see install_interrupt_cleanup) ----
     !> Temporary files tracked at once (a run has a handful open: .mess, .resu, one result).
@@ -139,6 +140,16 @@ contains
         type(atomic_file_t), intent(out) :: file
         character(len=*), intent(in) :: path
         type(status_t), intent(out) :: st
+        call open_file(file, path, .false., st)
+    end subroutine open_atomic
+
+    ! open_atomic, or with in_place = .true. a file written under its own name (a temporary
+    ! of ours, a device): commit then only closes it.
+    subroutine open_file(file, path, in_place, st)
+        type(atomic_file_t), intent(out) :: file
+        character(len=*), intent(in) :: path
+        logical, intent(in) :: in_place
+        type(status_t), intent(out) :: st
         integer(c_int), parameter :: MODE_RW_R_R = int(o'644', c_int), O_WRONLY = 1
         integer(c_int) :: fd
         integer :: code, kind
@@ -150,10 +161,13 @@ contains
                 'folder (a file name is needed here)')
             return
         end if
-        direct = kind == PATH_DEVICE
-        if (direct) then
+        direct = kind == PATH_DEVICE .or. in_place
+        if (kind == PATH_DEVICE) then
             file%temp_path = path
             fd = c_open(path // c_null_char, O_WRONLY)
+        else if (in_place) then
+            file%temp_path = path
+            fd = c_creat(path // c_null_char, MODE_RW_R_R)
         else
             file%temp_path = temporary_path(path)
             fd = c_creat(file%temp_path // c_null_char, MODE_RW_R_R)
@@ -169,7 +183,7 @@ contains
         file%state%fd = fd
         file%state%direct = direct
         allocate (character(len=BUFFER_BYTES) :: file%state%buffer)
-    end subroutine open_atomic
+    end subroutine open_file
 
     !> The temporary name under which `path` is written: `path.<pid>.partial`.
     function temporary_path(path) result(temp)
@@ -177,6 +191,69 @@ contains
         character(len=:), allocatable :: temp
         temp = path // '.' // to_text(int(process_id(), i4)) // '.partial'
     end function temporary_path
+
+    !> A temporary name for a file a library writes whole before it is copied to `path`, a
+    !> device (a library cannot write a device itself: HDF5 seeks): in $TMPDIR (else /tmp),
+    !> `parasol.<pid>.<n>.<file name>.partial`, n counting the names given.
+    function scratch_path(path) result(temp)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: temp, folder
+        integer, save :: given = 0
+        integer :: n, ios
+        character(len=4096) :: value
+        given = given + 1
+        call get_environment_variable('TMPDIR', value, n, ios)
+        folder = '/tmp'
+        if (ios == 0 .and. n > 0) folder = value(1:n)
+        temp = folder // '/parasol.' // to_text(int(process_id(), i4)) // '.' // &
+            to_text(int(given, i4)) // '.' // path(index(path, '/', back=.true.) + 1:) // &
+            '.partial'
+    end function scratch_path
+
+    !> Copies file `from` into `to` with checked writes: `to` is written in place (it is a
+    !> temporary file of ours, or a device), created if needed.
+    !>  label : in, the file messages name (the final name the user gave)
+    !>  st    : out, STATUS_IO_ERROR "cannot read FROM: ..." or "cannot write LABEL: <reason>"
+    subroutine copy_file(from, to, label, st)
+        character(len=*), intent(in) :: from, to, label
+        type(status_t), intent(out) :: st
+        integer, parameter :: CHUNK = 1048576
+        type(atomic_file_t) :: out
+        character(len=:), allocatable :: bytes
+        integer(i8) :: size_bytes, done
+        integer :: in, ios, n
+        character(len=256) :: msg
+        open (newunit=in, file=from, access='stream', form='unformatted', status='old', &
+              action='read', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot read ' // from // ': ' // trim(msg))
+            return
+        end if
+        inquire (unit=in, size=size_bytes)
+        call open_file(out, to, .true., st)
+        if (st%failed()) then
+            close (in)
+            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // label // ': ' // st%message)
+            return
+        end if
+        out%path = label
+        allocate (character(len=CHUNK) :: bytes)
+        done = 0
+        do while (done < size_bytes)
+            n = int(min(int(CHUNK, i8), size_bytes - done))
+            read (in, iostat=ios, iomsg=msg) bytes(1:n)
+            if (ios /= 0) exit
+            call out%write_text(bytes(1:n))
+            done = done + n
+        end do
+        close (in)
+        if (ios /= 0) then
+            call out%discard()
+            call set_error(st, STATUS_IO_ERROR, 'cannot read ' // from // ': ' // trim(msg))
+            return
+        end if
+        call out%commit(st)
+    end subroutine copy_file
 
     !> What to check for the usual errno values of a file creation.
     function folder_hint(code) result(text)

@@ -6,7 +6,8 @@ module system_error
         c_associated, c_f_pointer, c_int16_t
     implicit none
     private
-    public :: last_errno, errno_text, process_id, readable_errno, c_text, path_kind
+    public :: last_errno, clear_errno, errno_text, process_id, readable_errno, c_text, path_kind, &
+        folder_of, canonical_path
 
     !> What a path names (path_kind).
     integer, parameter, public :: PATH_MISSING = 0   !< nothing (or it cannot be looked at)
@@ -53,6 +54,16 @@ module system_error
             integer(c_int16_t), intent(out) :: buf(*)
             integer(c_int) :: rc
         end function c_statx
+        function c_realpath(path, resolved) result(p) bind(c, name='realpath')
+            import :: c_char, c_ptr
+            character(kind=c_char), intent(in) :: path(*)
+            type(c_ptr), value :: resolved
+            type(c_ptr) :: p
+        end function c_realpath
+        subroutine c_free(p) bind(c, name='free')
+            import :: c_ptr
+            type(c_ptr), value :: p
+        end subroutine c_free
         function c_close(fd) result(rc) bind(c, name='close')
             import :: c_int
             integer(c_int), value :: fd
@@ -68,6 +79,14 @@ contains
         call c_f_pointer(c_errno_location(), code)
         last_errno = int(code)
     end function last_errno
+
+    !> Sets errno to 0, so that a library that fails without saying why can be told from one
+    !> whose failure came from a system call (errno set).
+    subroutine clear_errno()
+        integer(c_int), pointer :: code
+        call c_f_pointer(c_errno_location(), code)
+        code = 0
+    end subroutine clear_errno
 
     !> strerror(code): the system's text for an errno value.
     function errno_text(code) result(text)
@@ -142,6 +161,36 @@ contains
             kind = PATH_DEVICE
         end select
     end function path_kind
+
+    !> The folder part of a path: 'a/b' for 'a/b/c', '/' for '/c', '.' for 'c'.
+    pure function folder_of(path) result(folder)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: folder
+        integer :: slash
+        slash = index(path, '/', back=.true.)
+        if (slash == 0) then
+            folder = '.'
+        else if (slash == 1) then
+            folder = '/'
+        else
+            folder = path(1:slash - 1)
+        end if
+    end function folder_of
+
+    !> The path with its folder resolved (realpath(3): absolute, no '.', '..' or symbolic
+    !> links), so that two spellings of one file compare equal; the path as given when its
+    !> folder cannot be resolved. The file itself need not exist.
+    function canonical_path(path) result(canonical)
+        use, intrinsic :: iso_c_binding, only: c_null_char, c_null_ptr
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: canonical
+        type(c_ptr) :: p
+        canonical = path
+        p = c_realpath(folder_of(path) // c_null_char, c_null_ptr)
+        if (.not. c_associated(p)) return
+        canonical = c_text(p) // '/' // path(index(path, '/', back=.true.) + 1:)
+        call c_free(p)
+    end function canonical_path
 
     !> The process identifier (getpid), e.g. to make temporary names unique per process.
     integer function process_id()

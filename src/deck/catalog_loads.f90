@@ -4,8 +4,8 @@
 module catalog_loads
     use kinds, only: dp
     use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
-    use number_limits, only: MAX_LENGTH
-    use catalog_common, only: OUI_NON
+    use number_limits, only: MAX_LENGTH, MAX_MODULUS, MIN_MODULUS
+    use catalog_common, only: OUI_NON, ANGLE_MAX
     implicit none
     private
     public :: describe_loads
@@ -51,15 +51,27 @@ contains
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%key('VERI_NORM', 'TXM', into=OUI_NON, noop=.true.)
+        ! parasol eliminates the relations: no Lagrange multipliers to double (analysis.md)
+        call c%key('DOUBLE_LAGRANGE', 'TXM', def='OUI', into=OUI_NON, noop=.true.)
+        if (vtype == 'R') then
+            call c%key('VERI_AFFE', 'TXM', def='OUI', into=OUI_NON, noop=.true.)
+            call c%key('CARA_ELEM', 'cara_elem')
+            call c%key('CHAM_MATER', 'cham_mater')
+        end if
         call c%fact('DDL_IMPO', max=MANY)
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_NO', 'TXM', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('NOEUD', 'TXM', max=MANY)
-        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_NO GROUP_MA NOEUD')
+        call c%key('SANS_GROUP_MA', 'TXM', max=MANY)
+        call c%key('SANS_GROUP_NO', 'TXM', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_NO GROUP_MA NOEUD')
         call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
         call add_components(c, DOFS, vtype, also='BLOCAGE', bound=MAX_LENGTH)  ! lengths, angles
         call c%end_fact()
+        call describe_face_impo(c, 'FACE_IMPO', DOFS // ' DNOR DRNOR DTAN', vtype)
+        if (vtype == 'R') call describe_face_impo(c, 'ARETE_IMPO', 'DX DY DZ DTAN', vtype)
+        call describe_relations(c, vtype)
         call c%fact('FORCE_NODALE', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
         call c%key('NOEUD', 'TXM', max=MANY)
@@ -86,6 +98,124 @@ contains
         call add_components(c, 'FX FY', vtype)
         call c%end_fact()
     end subroutine describe_load_command
+
+    !> FACE_IMPO / ARETE_IMPO: components imposed on the nodes of a face or an edge, and
+    !> the normal (DNOR, DRNOR) or tangent (DTAN) component as relations (Code_Aster's
+    !> rules: DNOR and DTAN exclude the DX .. DRZ).
+    subroutine describe_face_impo(c, name, components, vtype)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: name, components, vtype
+        character(len=*), parameter :: DOFS(6) = ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ']
+        integer :: k
+        call c%fact(name, max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('SANS_GROUP_MA', 'TXM', max=MANY)
+        call c%key('SANS_GROUP_NO', 'TXM', max=MANY)
+        call add_components(c, components, vtype, bound=MAX_LENGTH)
+        do k = 1, 6
+            if (index(' ' // components // ' ', ' ' // trim(DOFS(k)) // ' ') == 0) cycle
+            if (index(components, 'DNOR') > 0) call c%rule(RULE_EXCLUS, 'DNOR ' // DOFS(k))
+            call c%rule(RULE_EXCLUS, 'DTAN ' // DOFS(k))
+        end do
+        call c%end_fact()
+    end subroutine describe_face_impo
+
+    !> The LIAISON_* keywords (linear relations between components; Code_Aster U4.44.01):
+    !> LIAISON_DDL, LIAISON_OBLIQUE, LIAISON_GROUP, LIAISON_UNIF, and in AFFE_CHAR_MECA
+    !> LIAISON_SOLIDE and LIAISON_RBE3.
+    subroutine describe_relations(c, vtype)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: vtype
+        character(len=*), parameter :: DOFS = 'DX DY DZ DRX DRY DRZ'
+        call c%fact('LIAISON_DDL', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('NOEUD', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD')
+        call c%key('DDL', 'TXM', max=MANY, req=.true., into=DOFS)
+        if (vtype == 'R') then
+            call c%key('COEF_MULT', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, &
+                       vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+        else
+            call c%key('COEF_MULT', 'R', max=MANY, vmin=-MAX_MODULUS, vmax=MAX_MODULUS, &
+                       vtiny=MIN_MODULUS)
+            call c%key('COEF_MULT_FONC', 'FUNC|nappe', max=MANY)
+            call c%rule(RULE_UN_PARMI, 'COEF_MULT COEF_MULT_FONC')
+        end if
+        call add_value(c, 'COEF_IMPO', vtype, req=.true.)
+        call c%end_fact()
+
+        call c%fact('LIAISON_OBLIQUE', max=MANY)
+        call add_node_keywords(c)
+        call c%rule(RULE_AU_MOINS_UN, 'GROUP_MA GROUP_NO')
+        call c%key('ANGL_NAUT', 'R', max=3, req=.true., vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call add_components(c, DOFS, vtype, bound=MAX_LENGTH)
+        call c%end_fact()
+
+        call c%fact('LIAISON_GROUP', max=MANY)
+        call c%key('GROUP_MA_1', 'TXM', max=MANY)
+        call c%key('GROUP_NO_1', 'TXM', max=MANY)
+        call c%key('GROUP_MA_2', 'TXM', max=MANY)
+        call c%key('GROUP_NO_2', 'TXM', max=MANY)
+        call c%key('SANS_GROUP_NO', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'GROUP_MA_1 GROUP_NO_1')
+        call c%rule(RULE_UN_PARMI, 'GROUP_MA_2 GROUP_NO_2')
+        call c%rule(RULE_EXCLUS, 'GROUP_MA_1 GROUP_NO_2')
+        call c%rule(RULE_EXCLUS, 'GROUP_NO_1 GROUP_MA_2')
+        call c%key('DDL_1', 'TXM', max=MANY, req=.true., into=DOFS // ' DNOR')
+        call c%key('COEF_MULT_1', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, &
+                   vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+        call c%key('DDL_2', 'TXM', max=MANY, req=.true., into=DOFS // ' DNOR')
+        call c%key('COEF_MULT_2', 'R', max=MANY, req=.true., vmin=-MAX_MODULUS, &
+                   vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+        call add_value(c, 'COEF_IMPO', vtype, req=.true.)
+        call c%key('TRAN', 'R', max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('ANGL_NAUT', 'R', max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('CENTRE', 'R', max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%end_fact()
+
+        call c%fact('LIAISON_UNIF', max=MANY)
+        call add_node_keywords(c)
+        call c%rule(RULE_UN_PARMI, 'GROUP_NO GROUP_MA')
+        call c%key('DDL', 'TXM', max=MANY, req=.true., into=DOFS)
+        call c%end_fact()
+        if (vtype /= 'R') return
+
+        call c%fact('LIAISON_SOLIDE', max=MANY)
+        call add_node_keywords(c)
+        call c%rule(RULE_UN_PARMI, 'GROUP_NO GROUP_MA')
+        call c%key('DIST_MIN', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%end_fact()
+
+        call c%fact('LIAISON_RBE3', max=MANY)
+        call c%key('GROUP_NO_MAIT', 'TXM')
+        call c%key('DDL_MAIT', 'TXM', max=6, req=.true., into=DOFS)
+        call c%key('GROUP_NO_ESCL', 'TXM', max=MANY)
+        call c%key('DDL_ESCL', 'TXM', max=MANY, req=.true.)
+        call c%key('COEF_ESCL', 'R', max=MANY, def='1.0', vmin=-MAX_MODULUS, &
+                   vmax=MAX_MODULUS, vtiny=MIN_MODULUS)
+        call c%end_fact()
+    end subroutine describe_relations
+
+    ! GROUP_NO, GROUP_MA, SANS_GROUP_MA, SANS_GROUP_NO of a relation keyword.
+    subroutine add_node_keywords(c)
+        type(catalog_t), intent(inout) :: c
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('SANS_GROUP_MA', 'TXM', max=MANY)
+        call c%key('SANS_GROUP_NO', 'TXM', max=MANY)
+    end subroutine add_node_keywords
+
+    ! A value keyword: a real within +-MAX_LENGTH (AFFE_CHAR_MECA) or a function.
+    subroutine add_value(c, name, vtype, req)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: name, vtype
+        logical, intent(in) :: req
+        if (vtype == 'R') then
+            call c%key(name, vtype, req=req, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        else
+            call c%key(name, vtype, req=req)
+        end if
+    end subroutine add_value
 
     !> Optional components (at least one of them, or of the keywords `also`) of a load
     !> factor keyword; real values within +-bound when given (functions are checked where

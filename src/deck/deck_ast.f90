@@ -17,6 +17,13 @@ module deck_ast
         N_CONTINUE = 30, N_IMPORT = 31, N_FROM_IMPORT = 32
     !> Indexing, slicing and attributes (expressions):
     integer, parameter, public :: N_INDEX = 15, N_SLICE = 16, N_ATTR = 17
+    !> Displays, f-strings, comprehensions, lambdas and argument unpacking (expressions):
+    integer, parameter, public :: N_DICT = 18, N_FSTRING = 19, N_LISTCOMP = 40, &
+        N_DICTCOMP = 41, N_GENEXP = 42, N_COMPFOR = 43, N_STARRED = 44, N_DSTAR = 45, &
+        N_FORMAT = 46, N_LAMBDA = 47, N_SLICEITEM = 48
+    !> More statements:
+    integer, parameter, public :: N_ASSIGN_MULTI = 33, N_AUGASSIGN = 34, N_WHILE = 35, &
+        N_DEL = 36, N_ASSERT = 37, N_RAISE = 38
 
     !> One node. `text` holds the name, operator, literal spelling or string value.
     !> Children by kind:
@@ -25,15 +32,31 @@ module deck_ast
     !>   N_AND / N_OR [operands...];  N_IFEXP [value if true, condition, value if false]
     !>   N_CALL [callee, arguments...] (keyword arguments are N_KWARG(name) [value])
     !>   N_TUPLE / N_LIST [items...]
-    !>   N_ASSIGN(target) [value];  N_EXPR [value];  N_RETURN [value]
-    !>   N_DEF(name) [N_NAME parameters..., N_BLOCK body];  N_IF [condition, then, else?]
+    !>   N_ASSIGN(name) [value]: `name = value`;  N_EXPR [value];  N_RETURN [value]
+    !>   N_ASSIGN_MULTI [targets..., value]: `a, b = ...`, `x[i] = ...`, `a = b = ...`
+    !>     (a target: N_NAME, N_TUPLE/N_LIST of targets, N_INDEX, N_SLICE, N_ATTR)
+    !>   N_AUGASSIGN(op: '+', '-', ...) [target, value]: `target op= value`
+    !>   N_DEF(name) [parameters..., N_BLOCK body]: a parameter is N_NAME(name) [default?],
+    !>     N_STARRED(name) for *args, N_DSTAR(name) for **kwargs
+    !>   N_LAMBDA [parameters..., body expression]
+    !>   N_IF [condition, then, else?];  N_WHILE [condition, body, else?]
+    !>   N_DEL [targets...];  N_ASSERT [condition, message?];  N_RAISE [exception?]
     !>   N_MODULE / N_BLOCK [statements...]
+    !>   N_DICT [key, value, key, value...] (a `**d` entry: the same N_DSTAR node twice)
+    !>   N_FSTRING [parts...]: N_STR literal text, or N_FORMAT(conversion: '', 'r', 's',
+    !>     'a') [expression, spec?] with spec an N_FSTRING
+    !>   N_LISTCOMP / N_GENEXP [element, N_COMPFOR...];  N_DICTCOMP [key, value, N_COMPFOR...]
+    !>   N_COMPFOR [target, iterable, conditions...]
+    !>   N_STARRED [value] (*x in a call or a display);  N_DSTAR [value] (**d in a call)
+    !>   N_SLICEITEM(parts as N_SLICE's) [bounds...]: a slice inside a tuple index x[:, 0]
     !>   N_INDEX [sequence, index];  N_ATTR(attribute) [object] (obj.name, a concept's
     !>     method or attribute; as a callee, obj.name(...); L.append as a statement)
     !>   N_SLICE(parts) [sequence, start?, stop?, step?]: parts is 3 characters, '1' where
     !>     start, stop, step are written ('010' for s[:j]), the written ones are the children
-    !>   N_FOR(variable) [sequence, N_BLOCK body];  N_BREAK;  N_CONTINUE
-    !>   N_IMPORT(dotted module name) [];  N_FROM_IMPORT(dotted module) [N_NAME names or '*']
+    !>   N_FOR(variable, or '' for another target) [target, sequence, N_BLOCK body, else?]
+    !>   N_BREAK;  N_CONTINUE
+    !>   N_IMPORT [N_NAME(dotted module) [N_NAME(alias)?]...]
+    !>   N_FROM_IMPORT(dotted module) [N_NAME(name or '*') [N_NAME(alias)?]...]
     type, public :: node_t
         integer(i4) :: kind = 0
         character(len=:), allocatable :: text
@@ -73,6 +96,8 @@ contains
         character(len=*), intent(in) :: text
         integer :: id
         type(node_t), allocatable :: bigger(:)
+        character(len=:), allocatable :: copy
+        copy = text          ! text may be a node's own text: the pool may move below
         if (.not. allocated(self%nodes)) allocate (self%nodes(256))
         if (self%n == size(self%nodes)) then
             allocate (bigger(2 * size(self%nodes)))
@@ -82,7 +107,7 @@ contains
         self%n = self%n + 1
         id = self%n
         self%nodes(id)%kind = kind
-        self%nodes(id)%text = text
+        call move_alloc(copy, self%nodes(id)%text)
         self%nodes(id)%line = line
         self%nodes(id)%col = col
         self%nodes(id)%end_line = line

@@ -11,18 +11,24 @@ module deck_lexer
     private
 
     integer, parameter, public :: TOK_EOF = 0, TOK_NAME = 1, TOK_INT = 2, TOK_REAL = 3, &
-        TOK_STRING = 4, TOK_OP = 5, TOK_NEWLINE = 6, TOK_INDENT = 7, TOK_DEDENT = 8
+        TOK_STRING = 4, TOK_OP = 5, TOK_NEWLINE = 6, TOK_INDENT = 7, TOK_DEDENT = 8, &
+        TOK_FSTRING = 9
 
     !> Deepest bracket nesting accepted by the lexer (the parser has its own depth limit).
     integer, parameter :: MAX_BRACKETS = 200
     integer, parameter :: MAX_INDENT_LEVELS = 100
 
-    !> One token. `text` is the source spelling, or the decoded value of a string literal.
+    !> One token. `text` is the source spelling, or the decoded value of a string literal;
+    !> for an f-string (TOK_FSTRING) the text between its quotes as written (the parser
+    !> reads its fields), `skip` the columns from the token's start to that text (prefix and
+    !> quotes), `raw` its r prefix (no escapes).
     type, public :: token_t
         integer(i4) :: kind = TOK_EOF
         character(len=:), allocatable :: text
         integer(i4) :: line = 0
         integer(i4) :: col = 0
+        integer(i4) :: skip = 0
+        logical :: raw = .false.
     end type token_t
 
     !> State of one tokenize call: the read position (byte i of n, at line/col), the open
@@ -160,7 +166,11 @@ contains
                 call lex_number(lx, text, st)
             end if
         case ('a':'z', 'A':'Z', '_')
-            call lex_name(lx, text)
+            if (string_prefix(text, lx%i) > 0) then
+                call lex_string(lx, text, st)
+            else
+                call lex_name(lx, text)
+            end if
         case ('(', '[', '{', ')', ']', '}')
             call lex_bracket(lx, ch, st)
         case default
@@ -401,19 +411,28 @@ contains
         lx%col = lx%col + (j - i); lx%i = j
     end subroutine lex_number
 
-    !> Strings: '...', "...", '''...''', """...""" with \\ \' \" \n \t escapes (decoded by
-    !> decode_escape); a STRING token holding the decoded value, located at its opening
-    !> quote. Only triple-quoted strings may span lines; CR bytes are dropped.
+    !> Strings: '...', "...", '''...''', """...""" with \\ \' \" \n \t \r escapes (decoded by
+    !> decode_escape), after an optional prefix: r (raw: no escapes), u, b (as plain), f (an
+    !> f-string, TOK_FSTRING: its text is kept as written for the parser) and rf/fr. A
+    !> STRING token holds the decoded value, located at its first character. Only
+    !> triple-quoted strings may span lines; CR bytes are dropped.
     !>  st : out, STATUS_DECK_ERROR at the opening quote for an unterminated string
     subroutine lex_string(lx, text, st)
         type(lexer_t), intent(inout) :: lx
         character(len=*), intent(in) :: text
         type(status_t), intent(out) :: st
         character :: q
-        logical :: triple
+        logical :: triple, raw, formatted
         character(len=:), allocatable :: buf
-        integer :: i, n, line, col, nb
+        integer :: i, n, line, col, nb, np, k
         i = lx%i; n = lx%n; line = lx%line; col = lx%col
+        np = string_prefix(text, i)
+        raw = .false.; formatted = .false.
+        do k = i, i + np - 1
+            if (index('rR', text(k:k)) > 0) raw = .true.
+            if (index('fF', text(k:k)) > 0) formatted = .true.
+        end do
+        i = i + np; col = col + np
         q = text(i:i)
         triple = .false.
         if (i + 2 <= n) triple = text(i:i + 2) == q // q // q
@@ -444,7 +463,14 @@ contains
                 return
             end if
             if (text(i:i) == '\' .and. i < n) then
-                call decode_escape(text(i + 1:i + 1), buf, nb, line, col)
+                if (raw .or. formatted) then         ! kept as written (the quote too)
+                    call append_text(buf, nb, text(i:i + 1))
+                    if (text(i + 1:i + 1) == achar(10)) then
+                        line = line + 1; col = -1
+                    end if
+                else
+                    call decode_escape(text(i + 1:i + 1), buf, nb, line, col)
+                end if
                 i = i + 2; col = col + 2
                 cycle
             end if
@@ -454,9 +480,48 @@ contains
             if (text(i:i) /= achar(13)) call append_text(buf, nb, text(i:i))
             i = i + 1; col = col + 1
         end do
-        call push_token(lx, TOK_STRING, buf(1:nb), lx%line, lx%col)
+        if (formatted) then
+            call push_token(lx, TOK_FSTRING, buf(1:nb), lx%line, lx%col)
+            lx%tokens(lx%ntok)%skip = int(np + merge(3, 1, triple), i4)
+            lx%tokens(lx%ntok)%raw = raw
+        else
+            call push_token(lx, TOK_STRING, buf(1:nb), lx%line, lx%col)
+        end if
         lx%i = i; lx%line = line; lx%col = col
     end subroutine lex_string
+
+    !> Length of the string prefix (r, u, b, f, rb, br, rf, fr in any case) that starts at
+    !> text(i) and is followed by a quote, 0 if none.
+    pure integer function string_prefix(text, i) result(np)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: i
+        integer :: k
+        character(len=2) :: p
+        np = 0
+        do k = 1, 2
+            if (i + k > len(text)) return
+            if (text(i + k:i + k) == "'" .or. text(i + k:i + k) == '"') then
+                p = '  '
+                p(1:k) = to_lower_ascii(text(i:i + k - 1))
+                select case (p)
+                case ('r ', 'u ', 'b ', 'f ', 'rb', 'br', 'rf', 'fr')
+                    np = k
+                end select
+                return
+            end if
+            if (index('rRuUbBfF', text(i + k:i + k)) == 0) return
+        end do
+    end function string_prefix
+
+    pure function to_lower_ascii(t) result(low)
+        character(len=*), intent(in) :: t
+        character(len=len(t)) :: low
+        integer :: k
+        low = t
+        do k = 1, len(t)
+            if (t(k:k) >= 'A' .and. t(k:k) <= 'Z') low(k:k) = achar(iachar(t(k:k)) + 32)
+        end do
+    end function to_lower_ascii
 
     !> Strings: appends the value of the escape `\c` to buf(1:nb); unknown escapes are kept
     !> as written. A backslash before a line end joins the lines: line is advanced and col
@@ -470,6 +535,8 @@ contains
             call append_text(buf, nb, achar(10))
         case ('t')
             call append_text(buf, nb, achar(9))
+        case ('r')
+            call append_text(buf, nb, achar(13))
         case ("'", '"', '\')
             call append_text(buf, nb, c)
         case (achar(10))
@@ -479,7 +546,8 @@ contains
         end select
     end subroutine decode_escape
 
-    !> Operators: the two-character operators first (** // <= >= == != -> += -= *= /=),
+    !> Operators: the three- and two-character operators first (**= //= ** // <= >= == != ->
+    !> += -= *= /= %=),
     !> then the one-character ones; anything else is refused.
     !>  st : out, STATUS_DECK_ERROR for a character that starts no token (non-ASCII bytes
     !>       get their own message)
@@ -488,12 +556,21 @@ contains
         character(len=*), intent(in) :: text
         type(status_t), intent(out) :: st
         character(len=2) :: two
+        character(len=3) :: three
         integer :: i
         i = lx%i
+        three = '   '
+        if (i + 2 <= lx%n) three = text(i:i + 2)
+        select case (three)
+        case ('**=', '//=')
+            call push_token(lx, TOK_OP, three, lx%line, lx%col)
+            lx%i = i + 3; lx%col = lx%col + 3
+            return
+        end select
         two = '  '
         if (i + 1 <= lx%n) two = text(i:i + 1)
         select case (two)
-        case ('**', '//', '<=', '>=', '==', '!=', '->', '+=', '-=', '*=', '/=')
+        case ('**', '//', '<=', '>=', '==', '!=', '->', '+=', '-=', '*=', '/=', '%=')
             call push_token(lx, TOK_OP, two, lx%line, lx%col)
             lx%i = i + 2; lx%col = lx%col + 2
             return

@@ -9,7 +9,8 @@ module deck_value
 
     integer, parameter, public :: VK_NONE = 0, VK_INT = 1, VK_REAL = 2, VK_BOOL = 3, &
         VK_STR = 4, VK_TUPLE = 5, VK_LIST = 6, VK_FACTOR = 7, VK_CONCEPT = 8, VK_DEF = 9, &
-        VK_BUILTIN = 10, VK_UNKNOWN = 11
+        VK_BUILTIN = 10, VK_UNKNOWN = 11, VK_DICT = 12, VK_MODULE = 13, VK_METHOD = 14, &
+        VK_CO = 15
 
     !> One node of a flattened value tree (no recursive component: gfortran 12 shares the
     !> nested levels of recursive allocatable components on assignment, so composite values
@@ -28,8 +29,14 @@ module deck_value
 
     !> A deck value. `line`/`col` say where it was written (for messages).
     !>  VK_INT: i;  VK_REAL: r;  VK_BOOL: i (0/1);  VK_STR: s
-    !>  VK_TUPLE/VK_LIST/VK_FACTOR: items in `tree` (read them with nitems/item/unpack_value;
-    !>  a _F's items carry their keyword names)
+    !>  VK_TUPLE/VK_FACTOR: items in `tree` (read them with nitems/item/unpack_value; a _F's
+    !>  items carry their keyword names)
+    !>  VK_LIST, VK_DICT: inside the interpreter, i > 0 = the container in the run's heap
+    !>  (deck_heap: lists and dicts are shared, as Python's); handed to commands and methods
+    !>  (and back), a list is flat like a tuple (i = 0, items in `tree`), a dict a VK_FACTOR
+    !>  VK_MODULE: s = an imported module's name (math, or one parasol does not provide)
+    !>  VK_METHOD: s = a method name bound to the object tree(1) (`f = L.append`)
+    !>  VK_CO: s = the name of a concept a command is asked to make, CO('NAME')
     !>  VK_CONCEPT: obj (owned by the symbol table), s = its type name
     !>  VK_DEF: s = function name, i = its N_DEF node;  VK_BUILTIN: s = name
     !>  VK_UNKNOWN: a value known only when the deck runs (the check pass's stand-in for
@@ -52,8 +59,8 @@ module deck_value
     end type value_list_t
 
     public :: int_value, real_value, str_value, bool_value, kind_label, value_text, &
-        is_number, as_real, truth, nitems, item, unpack_value, pack_values, sequence_value, &
-        append_value, append_string, append_values
+        is_number, as_real, nitems, item, unpack_value, pack_values, sequence_value, &
+        append_value, append_string, values_of, joined
 
 contains
 
@@ -116,15 +123,35 @@ contains
         call move_alloc(bigger, list)
     end subroutine append_value
 
-    !> Appends every value of more to list.
-    subroutine append_values(list, more)
-        type(value_t), allocatable, intent(inout) :: list(:)
-        type(value_t), intent(in) :: more(:)
+    !> [a], [a, b] or [a, b, c], built item by item: gfortran 12 leaks the temporaries of
+    !> array constructors of types with allocatable components, so no [a, b] of value_t.
+    function values_of(a, b, c) result(list)
+        type(value_t), intent(in) :: a
+        type(value_t), intent(in), optional :: b, c
+        type(value_t), allocatable :: list(:)
+        integer :: n
+        n = 1
+        if (present(b)) n = 2
+        if (present(c)) n = 3
+        allocate (list(n))
+        list(1) = a
+        if (present(b)) list(2) = b
+        if (present(c)) list(3) = c
+    end function values_of
+
+    !> The items of a followed by those of b (see values_of).
+    function joined(a, b) result(list)
+        type(value_t), intent(in) :: a(:), b(:)
+        type(value_t), allocatable :: list(:)
         integer :: k
-        do k = 1, size(more)
-            call append_value(list, more(k))
+        allocate (list(size(a) + size(b)))
+        do k = 1, size(a)
+            list(k) = a(k)
         end do
-    end subroutine append_values
+        do k = 1, size(b)
+            list(size(a) + k) = b(k)
+        end do
+    end function joined
 
     !> Number of items of a tuple, list or _F (0 for other values).
     pure integer function nitems(v)
@@ -253,25 +280,6 @@ contains
         end select
     end function as_real
 
-    !> Python truth value.
-    logical function truth(v)
-        type(value_t), intent(in) :: v
-        select case (v%kind)
-        case (VK_INT, VK_BOOL)
-            truth = v%i /= 0
-        case (VK_REAL)
-            truth = v%r > 0.0_dp .or. v%r < 0.0_dp
-        case (VK_STR)
-            truth = len(v%s) > 0
-        case (VK_TUPLE, VK_LIST)
-            truth = nitems(v) > 0
-        case (VK_NONE)
-            truth = .false.
-        case default
-            truth = .true.
-        end select
-    end function truth
-
     !> What kind of value this is, in words, for messages ('a real', 'a string', 'a maillage').
     function kind_label(v) result(text)
         type(value_t), intent(in) :: v
@@ -299,6 +307,14 @@ contains
             text = 'the built-in function ' // v%s
         case (VK_UNKNOWN)
             text = 'a value known when the deck runs'
+        case (VK_DICT)
+            text = 'a dict'
+        case (VK_MODULE)
+            text = 'the module ' // v%s
+        case (VK_METHOD)
+            text = 'the method ' // v%s
+        case (VK_CO)
+            text = 'CO(''' // v%s // ''')'
         case default
             text = 'None'
         end select
@@ -334,7 +350,7 @@ contains
             end do
             text = text // ')'
             if (v%kind == VK_FACTOR) text = '_F' // text
-        case (VK_CONCEPT, VK_DEF, VK_BUILTIN, VK_UNKNOWN)
+        case (VK_CONCEPT, VK_DEF, VK_BUILTIN, VK_UNKNOWN, VK_DICT, VK_MODULE, VK_METHOD, VK_CO)
             text = kind_label(v)
         case default
             text = 'None'

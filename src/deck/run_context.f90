@@ -19,6 +19,7 @@ module run_context
     use atomic_file, only: atomic_file_t
     use deck_ast, only: ast_t
     use deck_value, only: value_t, append_string, VK_CONCEPT
+    use deck_heap, only: heap_t
     use deck_concept, only: concept_t
     use deck_command, only: command_t
     use deck_catalog, only: catalog_t
@@ -137,12 +138,23 @@ module run_context
         integer :: import_depth = 0                !< modules being imported (nested)
         ! ---- loops (doc/deck-language.md, "Loops") ----
         integer :: loop_control = 0                !< 1 break, 2 continue pending
-        type(value_t), allocatable :: loops(:)     !< the list each running for loop walks
-        logical, allocatable :: loop_grown(:)      !< that list was appended to
+        type(value_t), allocatable :: loops(:)     !< the sequence each running loop walks
         integer :: nloop = 0
+        !> The lists and dicts of the deck (deck_heap): shared, as Python's.
+        type(heap_t) :: heap
+        !> print() output not yet ended by a line end (print(..., end=''))
+        character(len=:), allocatable :: print_line
+        !> The result of a command whose Code_Aster result is a plain value (catalog type
+        !> 'entier': DEFI_FICHIER's free unit): set by its handler (has_plain_result)
+        type(value_t) :: plain_result
+        logical :: has_plain_result = .false.
+        !> The names the running command made with ctx%produce (its CO('NAME') outputs)
+        type(string_t), allocatable :: produced(:)
+        !> > 0 while a def, a comprehension or an import runs: their values live on the
+        !> evaluator's stack, so the heap is not collected then
+        integer :: gc_hold = 0
         integer(i8) :: iterations = 0              !< loop iterations in this pass
         integer(i8) :: built = 0                   !< sequence items built in this pass
-        integer(i8) :: next_list = 0               !< identities of lists (append)
         type(deadline_t) :: deadline               !< P time_limit of an export file
         !> Where long work reports its progress (cli's reporter; null: nobody listens).
         !> A pointer, so that handlers can hand it down to the analyses.
@@ -157,9 +169,13 @@ module run_context
         procedure :: find_method => ctx_find_method
         procedure :: method_names => ctx_method_names
         procedure :: concept_value => ctx_concept_value
+        procedure :: produce => ctx_produce
         procedure :: bind_unit => ctx_bind_unit
+        procedure :: release_unit => ctx_release_unit
+        procedure :: unit_of_path => ctx_unit_of_path
         procedure :: unit_path => ctx_unit_path
         procedure :: output_path => ctx_output_path
+        procedure :: in_outdir => ctx_in_outdir
         procedure :: write_mess => ctx_write_mess
         procedure :: write_warning => ctx_write_warning
         procedure :: write_resu => ctx_write_resu
@@ -167,6 +183,7 @@ module run_context
         procedure :: count_test => ctx_count_test
         procedure :: set_symbol => ctx_set_symbol
         procedure :: find_symbol => ctx_find_symbol
+        procedure :: delete_symbol => ctx_delete_symbol
         procedure :: own_concept => ctx_own_concept
         procedure :: reset_symbols => ctx_reset_symbols
         procedure :: add_source => ctx_add_source
@@ -232,7 +249,9 @@ contains
         allocate (ctx%unit_numbers(0), ctx%unit_paths(0), ctx%lines(0))
         allocate (ctx%sources(4), ctx%file_scope(0), ctx%stash(0))
         allocate (ctx%module_names(0), ctx%module_paths(0))
-        allocate (ctx%loops(8), ctx%loop_grown(8))
+        allocate (ctx%loops(8))
+        call ctx%heap%reset()
+        ctx%print_line = ''
     end subroutine init_context
 
     !> Registers the handler of command `name` (replacing an earlier one).
@@ -369,6 +388,25 @@ contains
         v%s = ptr%type_name()
     end subroutine ctx_concept_value
 
+    !> Makes concept `obj` the deck name `name`: what a command does for a keyword given
+    !> CO('NAME') (Code_Aster's outputs besides the result: ASSEMBLAGE's matrices,
+    !> MACRO_ELAS_MULT's ...). The context owns it; the name is bound in the command files'
+    !> namespace, as Code_Aster binds it in the deck's.
+    !>  name : the text of the CO;  obj : inout, the concept (moved);  st : out
+    subroutine ctx_produce(self, name, obj, st)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: name
+        class(concept_t), allocatable, intent(inout) :: obj
+        type(status_t), intent(out) :: st
+        type(value_t) :: v
+        if (allocated(obj)) obj%name = name
+        call self%concept_value(obj, v, st)
+        if (st%failed()) return
+        call self%set_symbol(name, v, 0, SCOPE_SESSION)
+        if (.not. allocated(self%produced)) allocate (self%produced(0))
+        call append_string(self%produced, name)
+    end subroutine ctx_produce
+
     !> Binds logical unit `unit` to `path` (--unit N=PATH).
     subroutine ctx_bind_unit(self, unit, path)
         class(run_context_t), intent(inout) :: self
@@ -377,6 +415,43 @@ contains
         self%unit_numbers = [self%unit_numbers, int(unit, i4)]
         call append_string(self%unit_paths, path)
     end subroutine ctx_bind_unit
+
+    !> Frees logical unit `unit` (DEFI_FICHIER ACTION='LIBERER'): its bindings are gone.
+    !>  found : out, the unit was bound
+    subroutine ctx_release_unit(self, unit, found)
+        class(run_context_t), intent(inout) :: self
+        integer, intent(in) :: unit
+        logical, intent(out) :: found
+        integer(i4), allocatable :: numbers(:)
+        type(string_t), allocatable :: paths(:)
+        integer :: k
+        found = .false.
+        allocate (numbers(0), paths(0))
+        do k = 1, size(self%unit_numbers)
+            if (self%unit_numbers(k) == unit) then
+                found = .true.
+                cycle
+            end if
+            numbers = [numbers, self%unit_numbers(k)]
+            call append_string(paths, self%unit_paths(k)%s)
+        end do
+        call move_alloc(numbers, self%unit_numbers)
+        call move_alloc(paths, self%unit_paths)
+    end subroutine ctx_release_unit
+
+    !> The logical unit bound to file `path` (the latest binding), 0 if none.
+    integer function ctx_unit_of_path(self, path) result(unit)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: path
+        integer :: k
+        unit = 0
+        do k = size(self%unit_paths), 1, -1
+            if (self%unit_paths(k)%s == path) then
+                unit = self%unit_numbers(k)
+                return
+            end if
+        end do
+    end function ctx_unit_of_path
 
     !> The file of logical unit `unit` for a reader of format `format` (ASTER, GMSH, MED).
     !> An unbound unit 20 is the deck's stem with the format's extension beside the deck
@@ -417,15 +492,23 @@ contains
         class(run_context_t), intent(in) :: self
         character(len=*), intent(in) :: suffix
         character(len=:), allocatable :: path
-        path = self%deck_stem // suffix
+        path = self%in_outdir(self%deck_stem // suffix)
+    end function ctx_output_path
+
+    !> `file` in the output folder (as given when there is none).
+    function ctx_in_outdir(self, file) result(path)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable :: path
+        path = file
         if (len(self%outdir) > 0) then
             if (ends_with(self%outdir, '/')) then
-                path = self%outdir // path
+                path = self%outdir // file
             else
-                path = self%outdir // '/' // path
+                path = self%outdir // '/' // file
             end if
         end if
-    end function ctx_output_path
+    end function ctx_in_outdir
 
     !> Writes one line to the .mess (nothing during the check pass or without a file).
     !> Each line is flushed: the .mess grows as the run goes (its temporary name, see
@@ -534,6 +617,22 @@ contains
         end do
     end function ctx_find_symbol
 
+    !> Removes deck variable `name` of namespace `scope` (Python's del NAME); false when it
+    !> is not bound.
+    logical function ctx_delete_symbol(self, name, scope) result(found)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: scope
+        integer :: k, j
+        k = self%find_symbol(name, scope)
+        found = k > 0
+        if (.not. found) return
+        do j = k, self%nsymbol - 1
+            self%symbols(j) = self%symbols(j + 1)
+        end do
+        self%nsymbol = self%nsymbol - 1
+    end function ctx_delete_symbol
+
     !> Takes ownership of a concept (moved, not copied) and returns a stable pointer to it.
     subroutine ctx_own_concept(self, obj, ptr, st)
         class(run_context_t), intent(inout) :: self
@@ -578,6 +677,9 @@ contains
         self%nloop = 0
         self%iterations = 0
         self%built = 0
+        self%gc_hold = 0
+        call self%heap%reset()
+        self%print_line = ''
         do k = 1, self%nsource
             self%sources(k)%state = 0
         end do

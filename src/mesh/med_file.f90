@@ -1,34 +1,37 @@
-!> MED files through parasol's MED plug-in (libparasol_med.so, plugins/med): the plug-in
-!> is the only code linked against Debian's MED library (which pulls HDF5 and OpenMPI, ~10 ms
-!> per process start), and it is opened with dlopen (src/core/dynamic_library.f90) the first
-!> time a deck reads or writes MED, so decks without MED keep parasol's start-up.
+!> MED files: the operations the mesh reader (mesh_med_reader) and the result writer
+!> (result_med) need, with errors as status_t messages naming the file, the mesh and what
+!> could not be read or written. Every count comes back checked for sign; callers check it
+!> against what they allocate.
 !>
-!> This module loads the plug-in once per process (the loaded library is process-wide state,
-!> like the dynamic loader's own), checks its ABI version, and offers the MED operations the
-!> mesh reader (mesh_med_reader) and the result writer (result_med) need, with errors as
-!> status_t messages naming the file, the mesh and what could not be read or written.
-!> Every count comes back checked for sign; callers check it against what they allocate.
-!>
-!> The plug-in is found next to the executable's layout (install_layout: <build>/lib/parasol
-!> in the build tree, <prefix>/lib/parasol in an install). Floating-point traps (the Debug
-!> build traps invalid, zero and overflow) are switched off during every call into MED and
-!> HDF5, whose code is not written for trapping, and the flags are restored afterwards.
+!> The MED library runs in a child process, one per open file (med_server): med_open starts
+!> it, each operation is a request and a reply over a socket, med_close ends it. parasol's
+!> own process only loads the plug-in and asks its version (med_plugin). So a damaged file
+!> that makes HDF5 crash, or a failed write that leaves HDF5 in a state its exit handlers
+!> trip on, ends the child, not parasol: the operation under way fails with one message
+!> naming the file ("MED file X is damaged: ...", "cannot write X: ..."), and the file is
+!> closed exactly once, in the child, or not at all when the child died (doc/stability.md,
+!> "Faults"). A write that fails on a system error (a full disk: ENOSPC, EFBIG, EDQUOT)
+!> says so in the system's words.
 module med_file
-    use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_char, c_funptr, &
-        c_null_char, c_f_procpointer
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_MESH_ERROR
+    use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_MESH_ERROR, STATUS_INTERNAL
     use strings, only: to_text
-    use dynamic_library, only: dynamic_library_t, open_library, find_symbol
-    use install_layout, only: plugin_file_path
+    use system_error, only: errno_text
+    use byte_message, only: message_t
+    use child_process, only: child_t, start_child, send_message, receive_message, &
+        reap_child, child_end_text
+    use med_plugin, only: med_load, med_loaded, med_library_version, MED_PLUGIN_NAME, &
+        PLUGIN_BAD_SIZE
+    use med_server, only: serve_med, OP_COMPATIBILITY, OP_OPEN, OP_FILE_VERSION, OP_CLOSE, &
+        OP_MESH_COUNT, OP_MESH_INFO, OP_MESH_STEP, OP_COUNT, OP_CELL_TYPE, &
+        OP_READ_COORDINATES, OP_READ_CONNECTIVITY, OP_READ_NAMES, OP_READ_FAMILIES, &
+        OP_FAMILY_COUNT, OP_FAMILY_GROUP_COUNT, OP_FAMILY_INFO, OP_CREATE_MESH, &
+        OP_WRITE_COORDINATES, OP_WRITE_CONNECTIVITY, OP_WRITE_NAMES, OP_WRITE_FAMILIES, &
+        OP_CREATE_FAMILY, OP_FIELD_COUNT, OP_FIELD_INFO, OP_CREATE_FIELD, OP_PROFILE_COUNT, &
+        OP_WRITE_PROFILE, OP_WRITE_FIELD_VALUES
     implicit none
     private
-
-    !> File name of the plug-in and the version of its entry points this module speaks.
-    character(len=*), parameter, public :: MED_PLUGIN_NAME = 'libparasol_med.so'
-    integer(c_int), parameter :: MED_PLUGIN_ABI = 1
-    !> Codes returned by the plug-in itself (not MED's).
-    integer(c_int), parameter :: PLUGIN_BAD_SIZE = -900001
 
     !> Open modes: read, create (replacing any file), add to an existing file.
     integer, parameter, public :: MED_READ = 0, MED_CREATE = 1, MED_APPEND = 2
@@ -43,16 +46,27 @@ module med_file
     !> MED versions this build reads: major 3 and 4 (MED-fichier 4.x reads 3.x files; 2.x
     !> files need MED's own converter, medimport).
     integer, parameter :: OLDEST_MAJOR = 3
+    !> errno values that mean the disk (or a limit) refused the data: said in the message.
+    integer, parameter :: EIO = 5, EFBIG = 27, ENOSPC = 28, EROFS = 30, EDQUOT = 122
 
-    !> An open MED file.
+    !> The server of an open file (med_server) and, once it died, how.
+    type :: med_link_t
+        type(child_t) :: server
+        logical :: lost = .false.                  !< the server died
+        character(len=:), allocatable :: lost_how  !< child_end_text of it
+    end type med_link_t
+
+    !> An open MED file. A copy is a second handle to the same file (the server is shared).
     type, public :: med_file_t
-        character(len=:), allocatable :: path
-        integer(c_int64_t) :: fid = -1
+        character(len=:), allocatable :: path     !< the name messages give
+        integer :: mode = MED_READ
+        type(med_link_t), pointer :: link => null()
     contains
         procedure :: is_open => med_file_is_open
     end type med_file_t
 
-    public :: med_load, med_loaded, med_library_version, med_open, med_close, &
+    public :: med_load, med_loaded, med_library_version, MED_PLUGIN_NAME
+    public :: med_open, med_close, &
         med_mesh_count, med_mesh_info, med_mesh_step, med_count, med_cell_type, &
         med_read_coordinates, &
         med_read_connectivity, med_read_names, med_read_families, med_family_count, &
@@ -61,446 +75,14 @@ module med_file
         med_field_count, med_field_info, med_create_field, med_profile_count, &
         med_write_profile, med_write_field_values
 
-    abstract interface
-        function abi_version_f() result(v) bind(c)
-            import :: c_int
-            integer(c_int) :: v
-        end function abi_version_f
-        function version_f(major, minor, release) result(rc) bind(c)
-            import :: c_int
-            integer(c_int), intent(out) :: major, minor, release
-            integer(c_int) :: rc
-        end function version_f
-        function compatibility_f(path, hdf_ok, med_ok) result(rc) bind(c)
-            import :: c_int, c_char
-            character(kind=c_char), intent(in) :: path(*)
-            integer(c_int), intent(out) :: hdf_ok, med_ok
-            integer(c_int) :: rc
-        end function compatibility_f
-        function open_f(path, mode, fid) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            character(kind=c_char), intent(in) :: path(*)
-            integer(c_int), value :: mode
-            integer(c_int64_t), intent(out) :: fid
-            integer(c_int) :: rc
-        end function open_f
-        function file_version_f(fid, major, minor, release) result(rc) bind(c)
-            import :: c_int, c_int64_t
-            integer(c_int64_t), value :: fid
-            integer(c_int), intent(out) :: major, minor, release
-            integer(c_int) :: rc
-        end function file_version_f
-        function fid_f(fid) result(rc) bind(c)
-            import :: c_int, c_int64_t
-            integer(c_int64_t), value :: fid
-            integer(c_int) :: rc
-        end function fid_f
-        function fid_it_f(fid, it) result(rc) bind(c)
-            import :: c_int, c_int64_t
-            integer(c_int64_t), value :: fid
-            integer(c_int), value :: it
-            integer(c_int) :: rc
-        end function fid_it_f
-        function mesh_info_f(fid, it, name, spacedim, meshdim, structured, nstep) &
-            result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            integer(c_int), value :: it
-            character(kind=c_char), intent(out) :: name(*)
-            integer(c_int), intent(out) :: spacedim, meshdim, structured, nstep
-            integer(c_int) :: rc
-        end function mesh_info_f
-        function mesh_step_f(fid, mesh, it, numdt, numit) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: it
-            integer(c_int), intent(out) :: numdt, numit
-            integer(c_int) :: rc
-        end function mesh_step_f
-        function count_f(fid, mesh, numdt, numit, what, geotype) result(n) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: numdt, numit, what, geotype
-            integer(c_int) :: n
-        end function count_f
-        function cell_type_f(fid, mesh, numdt, numit, it, geotype) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: numdt, numit, it
-            integer(c_int), intent(out) :: geotype
-            integer(c_int) :: rc
-        end function cell_type_f
-        function read_reals_f(fid, mesh, numdt, numit, values) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char, c_double
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: numdt, numit
-            real(c_double), intent(out) :: values(*)
-            integer(c_int) :: rc
-        end function read_reals_f
-        function read_connectivity_f(fid, mesh, numdt, numit, geotype, values) result(rc) &
-            bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: numdt, numit, geotype
-            integer(c_int), intent(out) :: values(*)
-            integer(c_int) :: rc
-        end function read_connectivity_f
-        function read_names_f(fid, mesh, numdt, numit, entity, geotype, names) result(rc) &
-            bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: numdt, numit, entity, geotype
-            character(kind=c_char), intent(out) :: names(*)
-            integer(c_int) :: rc
-        end function read_names_f
-        function read_families_f(fid, mesh, numdt, numit, entity, geotype, numbers) &
-            result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: numdt, numit, entity, geotype
-            integer(c_int), intent(out) :: numbers(*)
-            integer(c_int) :: rc
-        end function read_families_f
-        function mesh_count_f(fid, mesh) result(n) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int) :: n
-        end function mesh_count_f
-        function mesh_it_count_f(fid, mesh, it) result(n) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: it
-            integer(c_int) :: n
-        end function mesh_it_count_f
-        function family_info_f(fid, mesh, it, capacity, name, number, groups) result(rc) &
-            bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: it, capacity
-            character(kind=c_char), intent(out) :: name(*), groups(*)
-            integer(c_int), intent(out) :: number
-            integer(c_int) :: rc
-        end function family_info_f
-        function create_mesh_f(fid, mesh, spacedim, description) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*), description(*)
-            integer(c_int), value :: spacedim
-            integer(c_int) :: rc
-        end function create_mesh_f
-        function write_coordinates_f(fid, mesh, n, values) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char, c_double
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: n
-            real(c_double), intent(in) :: values(*)
-            integer(c_int) :: rc
-        end function write_coordinates_f
-        function write_connectivity_f(fid, mesh, geotype, n, values) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: geotype, n
-            integer(c_int), intent(in) :: values(*)
-            integer(c_int) :: rc
-        end function write_connectivity_f
-        function write_names_f(fid, mesh, entity, geotype, n, names) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*), names(*)
-            integer(c_int), value :: entity, geotype, n
-            integer(c_int) :: rc
-        end function write_names_f
-        function write_families_f(fid, mesh, entity, geotype, n, numbers) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*)
-            integer(c_int), value :: entity, geotype, n
-            integer(c_int), intent(in) :: numbers(*)
-            integer(c_int) :: rc
-        end function write_families_f
-        function create_family_f(fid, mesh, name, number, ngroups, groups) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: mesh(*), name(*), groups(*)
-            integer(c_int), value :: number, ngroups
-            integer(c_int) :: rc
-        end function create_family_f
-        function field_info_f(fid, it, capacity, name, mesh, ncomponent, components) &
-            result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            integer(c_int), value :: it, capacity
-            character(kind=c_char), intent(out) :: name(*), mesh(*), components(*)
-            integer(c_int), intent(out) :: ncomponent
-            integer(c_int) :: rc
-        end function field_info_f
-        function create_field_f(fid, field, mesh, ncomponent, components, units) result(rc) &
-            bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: field(*), mesh(*), components(*), units(*)
-            integer(c_int), value :: ncomponent
-            integer(c_int) :: rc
-        end function create_field_f
-        function write_profile_f(fid, name, n, numbers) result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: name(*)
-            integer(c_int), value :: n
-            integer(c_int), intent(in) :: numbers(*)
-            integer(c_int) :: rc
-        end function write_profile_f
-        function write_field_values_f(fid, field, numdt, numit, dt, n, profile, values) &
-            result(rc) bind(c)
-            import :: c_int, c_int64_t, c_char, c_double
-            integer(c_int64_t), value :: fid
-            character(kind=c_char), intent(in) :: field(*), profile(*)
-            integer(c_int), value :: numdt, numit, n
-            real(c_double), value :: dt
-            real(c_double), intent(in) :: values(*)
-            integer(c_int) :: rc
-        end function write_field_values_f
-    end interface
-
-    !> The plug-in's entry points, set once by med_load.
-    type :: plugin_t
-        type(dynamic_library_t) :: library
-        logical :: loaded = .false.
-        procedure(version_f), pointer, nopass :: library_version => null()
-        procedure(compatibility_f), pointer, nopass :: compatibility => null()
-        procedure(open_f), pointer, nopass :: open => null()
-        procedure(file_version_f), pointer, nopass :: file_version => null()
-        procedure(fid_f), pointer, nopass :: close => null()
-        procedure(fid_f), pointer, nopass :: mesh_count => null()
-        procedure(mesh_info_f), pointer, nopass :: mesh_info => null()
-        procedure(mesh_step_f), pointer, nopass :: mesh_step => null()
-        procedure(count_f), pointer, nopass :: count => null()
-        procedure(cell_type_f), pointer, nopass :: cell_type => null()
-        procedure(read_reals_f), pointer, nopass :: read_coordinates => null()
-        procedure(read_connectivity_f), pointer, nopass :: read_connectivity => null()
-        procedure(read_names_f), pointer, nopass :: read_names => null()
-        procedure(read_families_f), pointer, nopass :: read_families => null()
-        procedure(mesh_count_f), pointer, nopass :: family_count => null()
-        procedure(mesh_it_count_f), pointer, nopass :: family_group_count => null()
-        procedure(family_info_f), pointer, nopass :: family_info => null()
-        procedure(create_mesh_f), pointer, nopass :: create_mesh => null()
-        procedure(write_coordinates_f), pointer, nopass :: write_coordinates => null()
-        procedure(write_connectivity_f), pointer, nopass :: write_connectivity => null()
-        procedure(write_names_f), pointer, nopass :: write_names => null()
-        procedure(write_families_f), pointer, nopass :: write_families => null()
-        procedure(create_family_f), pointer, nopass :: create_family => null()
-        procedure(fid_f), pointer, nopass :: field_count => null()
-        procedure(field_info_f), pointer, nopass :: field_info => null()
-        procedure(create_field_f), pointer, nopass :: create_field => null()
-        procedure(fid_f), pointer, nopass :: profile_count => null()
-        procedure(write_profile_f), pointer, nopass :: write_profile => null()
-        procedure(write_field_values_f), pointer, nopass :: write_field_values => null()
-    end type plugin_t
-
-    type(plugin_t), save :: plugin
-
-    !> Floating-point environment around a call into MED (see fp_begin): an opaque C fenv_t
-    !> (32 bytes with glibc on x86-64), given room to spare.
-    type :: fp_state_t
-        integer(c_int64_t) :: env(16) = 0
-    end type fp_state_t
-
-    interface
-        ! C99 <fenv.h>: save the environment, clear the flags and mask every exception ...
-        function c_feholdexcept(env) result(rc) bind(c, name='feholdexcept')
-            import :: c_int, c_int64_t
-            integer(c_int64_t), intent(out) :: env(*)
-            integer(c_int) :: rc
-        end function c_feholdexcept
-        ! ... and put it back (masks and flags as they were).
-        function c_fesetenv(env) result(rc) bind(c, name='fesetenv')
-            import :: c_int, c_int64_t
-            integer(c_int64_t), intent(in) :: env(*)
-            integer(c_int) :: rc
-        end function c_fesetenv
-    end interface
-
 contains
-
-    !> Loads the MED plug-in (once per process; later calls return at once).
-    !>  st   : out, STATUS_IO_ERROR when the plug-in or the MED library cannot be loaded
-    !>         (with the loader's reason), or the plug-in is of another version
-    !>  path : in, optional, the plug-in file (default: the install layout's plug-in folder)
-    subroutine med_load(st, path)
-        type(status_t), intent(out) :: st
-        character(len=*), intent(in), optional :: path
-        character(len=:), allocatable :: file
-        type(fp_state_t) :: fp
-        procedure(abi_version_f), pointer :: abi_version
-        type(c_funptr) :: address
-        integer(c_int) :: version
-        if (plugin%loaded) return
-        if (present(path)) then
-            file = path
-        else
-            file = plugin_file_path(MED_PLUGIN_NAME)
-        end if
-        call fp_begin(fp)
-        call open_library(plugin%library, file, st)   ! runs the libraries' initialisers
-        call fp_end(fp)
-        if (st%failed()) then
-            call set_error(st, STATUS_IO_ERROR, "FORMAT='MED' needs parasol's MED plug-in, " &
-                // 'which cannot be loaded: ' // st%message // ' (it is built with parasol ' &
-                // 'and needs Debian''s MED library: apt-get install libmedc11)')
-            return
-        end if
-        call find_symbol(plugin%library, 'parasol_med_abi_version', address, st)
-        if (st%failed()) return
-        call c_f_procpointer(address, abi_version)
-        version = abi_version()
-        if (version /= MED_PLUGIN_ABI) then
-            call set_error(st, STATUS_IO_ERROR, 'the MED plug-in ' // file // ' is of version ' &
-                // to_text(int(version, i4)) // ', this parasol needs version ' // &
-                to_text(int(MED_PLUGIN_ABI, i4)) // ' (rebuild and reinstall parasol)')
-            return
-        end if
-        call bind_all(st)
-        if (st%ok()) plugin%loaded = .true.
-    end subroutine med_load
-
-    ! Takes every entry point of the plug-in.
-    subroutine bind_all(st)
-        type(status_t), intent(out) :: st
-        type(c_funptr) :: a
-        call find_symbol(plugin%library, 'parasol_med_library_version', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%library_version)
-        call find_symbol(plugin%library, 'parasol_med_file_compatibility', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%compatibility)
-        call find_symbol(plugin%library, 'parasol_med_open', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%open)
-        call find_symbol(plugin%library, 'parasol_med_file_version', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%file_version)
-        call find_symbol(plugin%library, 'parasol_med_close', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%close)
-        call find_symbol(plugin%library, 'parasol_med_mesh_count', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%mesh_count)
-        call find_symbol(plugin%library, 'parasol_med_mesh_info', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%mesh_info)
-        call find_symbol(plugin%library, 'parasol_med_mesh_step', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%mesh_step)
-        call find_symbol(plugin%library, 'parasol_med_count', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%count)
-        call find_symbol(plugin%library, 'parasol_med_cell_type', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%cell_type)
-        call find_symbol(plugin%library, 'parasol_med_read_coordinates', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%read_coordinates)
-        call find_symbol(plugin%library, 'parasol_med_read_connectivity', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%read_connectivity)
-        call find_symbol(plugin%library, 'parasol_med_read_names', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%read_names)
-        call find_symbol(plugin%library, 'parasol_med_read_families', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%read_families)
-        call find_symbol(plugin%library, 'parasol_med_family_count', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%family_count)
-        call find_symbol(plugin%library, 'parasol_med_family_group_count', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%family_group_count)
-        call find_symbol(plugin%library, 'parasol_med_family_info', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%family_info)
-        call find_symbol(plugin%library, 'parasol_med_create_mesh', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%create_mesh)
-        call find_symbol(plugin%library, 'parasol_med_write_coordinates', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%write_coordinates)
-        call find_symbol(plugin%library, 'parasol_med_write_connectivity', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%write_connectivity)
-        call find_symbol(plugin%library, 'parasol_med_write_names', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%write_names)
-        call find_symbol(plugin%library, 'parasol_med_write_families', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%write_families)
-        call find_symbol(plugin%library, 'parasol_med_create_family', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%create_family)
-        call find_symbol(plugin%library, 'parasol_med_field_count', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%field_count)
-        call find_symbol(plugin%library, 'parasol_med_field_info', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%field_info)
-        call find_symbol(plugin%library, 'parasol_med_create_field', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%create_field)
-        call find_symbol(plugin%library, 'parasol_med_profile_count', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%profile_count)
-        call find_symbol(plugin%library, 'parasol_med_write_profile', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%write_profile)
-        call find_symbol(plugin%library, 'parasol_med_write_field_values', a, st)
-        if (st%failed()) return
-        call c_f_procpointer(a, plugin%write_field_values)
-    end subroutine bind_all
-
-    !> True once the plug-in is loaded (a deck without MED never loads it).
-    logical function med_loaded()
-        med_loaded = plugin%loaded
-    end function med_loaded
-
-    !> Version of the MED library the plug-in runs with.
-    subroutine med_library_version(major, minor, release, st)
-        integer(i4), intent(out) :: major, minor, release
-        type(status_t), intent(out) :: st
-        integer(c_int) :: rc, a, b, c
-        type(fp_state_t) :: fp
-        major = 0
-        minor = 0
-        release = 0
-        call med_load(st)
-        if (st%failed()) return
-        call fp_begin(fp)
-        rc = plugin%library_version(a, b, c)
-        call fp_end(fp)
-        if (rc < 0) then
-            call set_error(st, STATUS_IO_ERROR, 'the MED library does not report its version')
-            return
-        end if
-        major = a
-        minor = b
-        release = c
-    end subroutine med_library_version
 
     logical function med_file_is_open(self)
         class(med_file_t), intent(in) :: self
-        med_file_is_open = self%fid >= 0
+        med_file_is_open = associated(self%link)
     end function med_file_is_open
 
-    !> Opens a MED file.
+    !> Opens a MED file: starts its server, then opens the file there.
     !>  file : out, the open file
     !>  path : in, the file
     !>  mode : in, MED_READ (checked first: exists, is HDF5, is MED of a version this build
@@ -514,11 +96,12 @@ contains
         character(len=*), intent(in) :: path
         integer, intent(in) :: mode
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc, hdf_ok, med_ok, major, minor, release
         integer(i4) :: lib_major, lib_minor, lib_release
-        type(fp_state_t) :: fp
-        logical :: exists
+        logical :: exists, in_child
         file%path = path
+        file%mode = mode
         call med_load(st)
         if (st%failed()) return
         if (mode == MED_READ) then
@@ -527,26 +110,48 @@ contains
                 call set_error(st, STATUS_IO_ERROR, 'MED file ' // path // ' does not exist')
                 return
             end if
-            call fp_begin(fp)
-            rc = plugin%compatibility(path // c_null_char, hdf_ok, med_ok)
-            call fp_end(fp)
+        end if
+        allocate (file%link)
+        if (mode == MED_READ) then
+            call start_child(file%link%server, in_child, 'reads MED file ' // path, st)
+        else
+            call start_child(file%link%server, in_child, 'writes MED file ' // path, st)
+        end if
+        if (in_child) call serve_med(file%link%server%fd)      ! never returns
+        if (st%failed()) then
+            deallocate (file%link)
+            return
+        end if
+        if (mode == MED_READ) then
+            call q%put_int(OP_COMPATIBILITY)
+            call q%put_text(path)
+            rc = exchange(file, q, r, 'read', 'its header', st, check=.false.)
+            if (st%failed()) then
+                call med_close(file)
+                return
+            end if
+            hdf_ok = r%get_int()
+            med_ok = r%get_int()
             if (hdf_ok == 0) then
                 call set_error(st, STATUS_IO_ERROR, path // ' is not a MED file: it is not ' &
                     // 'even an HDF5 file (MED files are HDF5 files; FORMAT=''MED'' reads ' &
                     // 'them; a .mail file is FORMAT=''ASTER'', a .msh FORMAT=''GMSH'')')
-                return
             else if (rc < 0) then
                 call set_error(st, STATUS_IO_ERROR, path // ' is an HDF5 file but not a MED ' &
                     // 'file: it has no MED version header (MED error ' // &
                     to_text(int(rc, i4)) // ')')
+            end if
+            if (st%failed()) then
+                call med_close(file)
                 return
             end if
         end if
-        call fp_begin(fp)
-        rc = plugin%open(path // c_null_char, int(mode, c_int), file%fid)
-        call fp_end(fp)
-        if (rc < 0 .or. file%fid < 0) then
-            file%fid = -1
+        call q%clear()
+        call q%put_int(OP_OPEN)
+        call q%put_text(path)
+        call q%put_int(mode)
+        rc = exchange(file, q, r, 'open', 'it', st, check=.false.)
+        if (st%ok() .and. rc < 0) then
             select case (mode)
             case (MED_READ)
                 call set_error(st, STATUS_IO_ERROR, 'MED file ' // path // ' cannot be ' // &
@@ -557,12 +162,22 @@ contains
                     ' (check that the output directory exists and is writable; MED error ' &
                     // to_text(int(rc, i4)) // ')')
             end select
+        end if
+        if (st%failed()) then
+            call med_close(file)
             return
         end if
         if (mode /= MED_READ) return
-        call fp_begin(fp)
-        rc = plugin%file_version(file%fid, major, minor, release)
-        call fp_end(fp)
+        call q%clear()
+        call q%put_int(OP_FILE_VERSION)
+        rc = exchange(file, q, r, 'read', 'its version', st, check=.false.)
+        if (st%failed()) then
+            call med_close(file)
+            return
+        end if
+        major = r%get_int()
+        minor = r%get_int()
+        release = r%get_int()
         call med_library_version(lib_major, lib_minor, lib_release, st)
         if (st%failed()) return
         if (rc < 0 .or. major < OLDEST_MAJOR .or. major > lib_major .or. &
@@ -589,32 +204,147 @@ contains
         end if
     end function version_text
 
-    !> Closes the file (a file being written is complete only then).
+    !> Closes the file (a file being written is complete only then) and ends its server.
+    !> Closing a file whose server died, or closing twice, does nothing more.
     !>  st : optional, STATUS_IO_ERROR when MED cannot finish writing it
     subroutine med_close(file, st)
         type(med_file_t), intent(inout) :: file
         type(status_t), intent(out), optional :: st
+        type(message_t) :: q, r
+        type(status_t) :: closing
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        if (.not. file%is_open()) return
-        call fp_begin(fp)
-        rc = plugin%close(file%fid)
-        call fp_end(fp)
-        file%fid = -1
-        if (rc < 0 .and. present(st)) call set_error(st, STATUS_IO_ERROR, &
-            'MED file ' // file%path // ' could not be closed (MED error ' // &
-            to_text(int(rc, i4)) // ')')
+        if (.not. associated(file%link)) return
+        if (.not. file%link%lost) then
+            call q%put_int(OP_CLOSE)
+            rc = exchange(file, q, r, 'close', 'it', closing, writing=file%mode /= MED_READ)
+        end if
+        call reap_child(file%link%server)
+        if (closing%ok() .and. .not. file%link%lost .and. &
+            (file%link%server%signal /= 0 .or. file%link%server%exit_status /= 0)) then
+            file%link%lost = .true.
+            file%link%lost_how = child_end_text(file%link%server)
+            call server_died(closing, file, 'close', 'it')
+        end if
+        deallocate (file%link)
+        if (present(st)) st = closing
     end subroutine med_close
+
+    !> Sends a request to the file's server and receives its reply; returns the result code
+    !> and leaves the reply at its outputs.
+    !>  verb, object : in, what is asked (messages: "cannot read the nodes of mesh M")
+    !>  st    : out, the server died (the message says how, naming the file), or the result
+    !>          code is < 0 (fail's message) unless check = .false.
+    !>  writing : in, optional, the file is being written (default: as its open mode)
+    integer(c_int) function exchange(file, q, r, verb, object, st, check, writing) result(rc)
+        type(med_file_t), intent(in) :: file
+        type(message_t), intent(in) :: q
+        type(message_t), intent(inout) :: r
+        character(len=*), intent(in) :: verb, object
+        type(status_t), intent(out) :: st
+        logical, intent(in), optional :: check, writing
+        integer :: err
+        logical :: ok, checking
+        checking = .true.
+        if (present(check)) checking = check
+        rc = -1
+        if (.not. associated(file%link)) then
+            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ' is not open')
+            return
+        end if
+        if (file%link%lost) then
+            call server_died(st, file, verb, object)
+            return
+        end if
+        call send_message(file%link%server%fd, q, ok)
+        if (ok) call receive_message(file%link%server%fd, r, ok)
+        if (.not. ok) then
+            call reap_child(file%link%server)
+            file%link%lost = .true.
+            file%link%lost_how = child_end_text(file%link%server)
+            call server_died(st, file, verb, object)
+            return
+        end if
+        rc = r%get_int()
+        err = r%get_int()
+        if (r%bad) then
+            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': the MED ' // &
+                'server gave a short reply (a bug: please report it)')
+            rc = -1
+            return
+        end if
+        if (rc < 0 .and. checking) call fail(st, file, verb, object, rc, err, writing)
+    end function exchange
+
+    ! The file's server died (killed by a signal, or exited) while asked to VERB OBJECT:
+    ! "MED file P is damaged: the MED library died reading family 1 of mesh M (killed by
+    ! signal 11 (SIGSEGV))", or for a file being written "cannot write P: the MED library
+    ! died writing ...".
+    subroutine server_died(st, file, verb, object)
+        type(status_t), intent(inout) :: st
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: verb, object
+        character(len=:), allocatable :: doing
+        select case (verb)
+        case ('read', 'count', 'open')
+            doing = verb // 'ing'
+        case ('write', 'create', 'close')
+            doing = verb(1:len(verb) - 1) // 'ing'
+        case default
+            doing = 'asked to ' // verb
+        end select
+        if (file%mode == MED_READ) then
+            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ' is damaged: ' &
+                // 'the MED library died ' // doing // ' ' // object // ' (' // &
+                file%link%lost_how // ')')
+        else
+            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // file%path // ': the MED ' &
+                // 'library died ' // doing // ' ' // object // ' (' // file%link%lost_how &
+                // ')')
+        end if
+    end subroutine server_died
+
+    ! A failed MED call on the file: "MED file PATH: cannot VERB OBJECT (MED error RC; ...)"
+    ! (STATUS_MESH_ERROR: reading, the file's contents are at fault), or for a file being
+    ! written "cannot write PATH: <the system's reason> (MED could not VERB OBJECT)" when
+    ! the failure came from the disk (errno), else "cannot write PATH: MED could not VERB
+    ! OBJECT (MED error RC)" (STATUS_IO_ERROR).
+    subroutine fail(st, file, verb, object, rc, err, writing)
+        type(status_t), intent(inout) :: st
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: verb, object
+        integer(c_int), intent(in) :: rc
+        integer, intent(in) :: err
+        logical, intent(in), optional :: writing
+        logical :: written
+        written = file%mode /= MED_READ
+        if (present(writing)) written = writing
+        if (written) then
+            select case (err)
+            case (EIO, EFBIG, ENOSPC, EROFS, EDQUOT)
+                call set_error(st, STATUS_IO_ERROR, 'cannot write ' // file%path // ': ' // &
+                    errno_text(err) // ' (MED could not ' // verb // ' ' // object // ')')
+            case default
+                call set_error(st, STATUS_IO_ERROR, 'cannot write ' // file%path // ': MED ' &
+                    // 'could not ' // verb // ' ' // object // ' (MED error ' // &
+                    to_text(int(rc, i4)) // ')')
+            end select
+        else if (rc == PLUGIN_BAD_SIZE) then
+            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': cannot ' // &
+                verb // ' ' // object // ' (it holds more than parasol expects)')
+        else
+            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': cannot ' // &
+                verb // ' ' // object // ' (MED error ' // to_text(int(rc, i4)) // &
+                '; the file is damaged, truncated or inconsistent)')
+        end if
+    end subroutine fail
 
     !> Number of meshes in the file.
     integer(i4) function med_mesh_count(file, st) result(n)
         type(med_file_t), intent(in) :: file
         type(status_t), intent(out) :: st
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        n = plugin%mesh_count(file%fid)
-        call fp_end(fp)
-        if (n < 0) call fail(st, file, 'cannot count its meshes', n)
+        type(message_t) :: q, r
+        call q%put_int(OP_MESH_COUNT)
+        n = exchange(file, q, r, 'count', 'its meshes', st, writing=.false.)
     end function med_mesh_count
 
     !> Mesh number `it`: name, space dimension, structured (a grid), computation steps.
@@ -626,22 +356,27 @@ contains
         integer(i4), intent(out) :: spacedim, nstep
         logical, intent(out) :: structured
         type(status_t), intent(out) :: st
-        character(kind=c_char) :: buffer(MED_NAME_LEN + 1)
-        integer(c_int) :: rc, sd, md, grid, steps
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%mesh_info(file%fid, int(it, c_int), buffer, sd, md, grid, steps)
-        call fp_end(fp)
+        type(message_t) :: q, r
+        character(kind=c_char), allocatable :: buffer(:)
+        integer(c_int) :: rc, meshdim
+        call q%put_int(OP_MESH_INFO)
+        call q%put_int(int(it))
+        rc = exchange(file, q, r, 'read', 'the description of mesh ' // to_text(it), st, &
+                      check=.false.)
+        call r%get_chars(buffer)
         name = buffer_text(buffer, 1, MED_NAME_LEN)
-        spacedim = sd
-        nstep = steps
-        structured = grid /= 0
+        spacedim = r%get_int()
+        meshdim = r%get_int()                      ! not used: parasol takes spacedim
+        structured = r%get_int() /= 0
+        nstep = r%get_int()
+        if (st%failed()) return
         if (rc == PLUGIN_BAD_SIZE) then
             call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
                 to_text(it) // ' has ' // to_text(spacedim) // ' coordinate axes (a mesh ' // &
                 'has 1 to 3)')
         else if (rc < 0) then
-            call fail(st, file, 'cannot read the description of mesh ' // to_text(it), rc)
+            call fail(st, file, 'read', 'the description of mesh ' // to_text(it), rc, 0, &
+                      writing=.false.)
         end if
     end subroutine med_mesh_info
 
@@ -652,15 +387,15 @@ contains
         integer(i4), intent(in) :: it
         integer(i4), intent(out) :: numdt, numit
         type(status_t), intent(out) :: st
-        integer(c_int) :: rc, a, b
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%mesh_step(file%fid, mesh // c_null_char, int(it, c_int), a, b)
-        call fp_end(fp)
-        numdt = a
-        numit = b
-        if (rc < 0) call fail(st, file, 'cannot read the computation steps of mesh ' // &
-            mesh, rc)
+        type(message_t) :: q, r
+        integer(c_int) :: rc
+        call q%put_int(OP_MESH_STEP)
+        call q%put_text(mesh)
+        call q%put_int(int(it))
+        rc = exchange(file, q, r, 'read', 'the computation steps of mesh ' // mesh, st, &
+                      writing=.false.)
+        numdt = r%get_int()
+        numit = r%get_int()
     end subroutine med_mesh_step
 
     !> A count (MED_COUNT_*) of mesh `mesh` at step (numdt, numit); 0 when absent.
@@ -672,13 +407,12 @@ contains
         character(len=*), intent(in) :: mesh, what_text
         integer(i4), intent(in) :: numdt, numit, what, geotype
         type(status_t), intent(out) :: st
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        n = plugin%count(file%fid, mesh // c_null_char, int(numdt, c_int), int(numit, c_int), &
-                         int(what, c_int), int(geotype, c_int))
-        call fp_end(fp)
-        if (n < 0) call fail(st, file, 'cannot count the ' // what_text // ' of mesh ' // &
-            mesh, n)
+        type(message_t) :: q, r
+        call step_request(q, OP_COUNT, mesh, numdt, numit)
+        call q%put_int(int(what))
+        call q%put_int(int(geotype))
+        n = exchange(file, q, r, 'count', 'the ' // what_text // ' of mesh ' // mesh, st, &
+                     writing=.false.)
     end function med_count
 
     !> MED type code of cell type number `it` of the mesh (1..MED_COUNT_CELL_TYPES count).
@@ -688,14 +422,13 @@ contains
         integer(i4), intent(in) :: numdt, numit, it
         integer(i4), intent(out) :: geotype
         type(status_t), intent(out) :: st
-        integer(c_int) :: rc, code
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%cell_type(file%fid, mesh // c_null_char, int(numdt, c_int), &
-                              int(numit, c_int), int(it, c_int), code)
-        call fp_end(fp)
-        geotype = code
-        if (rc < 0) call fail(st, file, 'cannot read the cell types of mesh ' // mesh, rc)
+        type(message_t) :: q, r
+        integer(c_int) :: rc
+        call step_request(q, OP_CELL_TYPE, mesh, numdt, numit)
+        call q%put_int(int(it))
+        rc = exchange(file, q, r, 'read', 'the cell types of mesh ' // mesh, st, &
+                      writing=.false.)
+        geotype = r%get_int()
     end subroutine med_cell_type
 
     !> Node coordinates into coords(spacedim * n), interlaced.
@@ -705,13 +438,18 @@ contains
         integer(i4), intent(in) :: numdt, numit
         real(dp), intent(out) :: coords(:)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        real(dp), allocatable :: values(:)
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%read_coordinates(file%fid, mesh // c_null_char, int(numdt, c_int), &
-                                     int(numit, c_int), coords)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot read the node coordinates of mesh ' // mesh, rc)
+        coords = 0.0_dp
+        call step_request(q, OP_READ_COORDINATES, mesh, numdt, numit)
+        call q%put_int(size(coords))
+        rc = exchange(file, q, r, 'read', 'the node coordinates of mesh ' // mesh, st, &
+                      writing=.false.)
+        if (st%failed()) return
+        call r%get_reals(values)
+        call take_size(st, file, r, size(values), size(coords))
+        if (st%ok()) coords = values
     end subroutine med_read_coordinates
 
     !> Connectivity of the cells of MED type `geotype` into conn(nodes per cell * n).
@@ -721,15 +459,32 @@ contains
         integer(i4), intent(in) :: numdt, numit, geotype
         integer(i4), intent(out) :: conn(:)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        integer(i4), allocatable :: values(:)
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%read_connectivity(file%fid, mesh // c_null_char, int(numdt, c_int), &
-                                      int(numit, c_int), int(geotype, c_int), conn)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot read the ' // type_name // ' cells of mesh ' // &
-            mesh, rc)
+        conn = 0
+        call step_request(q, OP_READ_CONNECTIVITY, mesh, numdt, numit)
+        call q%put_int(int(geotype))
+        call q%put_int(size(conn))
+        rc = exchange(file, q, r, 'read', 'the ' // type_name // ' cells of mesh ' // mesh, st, &
+                      writing=.false.)
+        if (st%failed()) return
+        call r%get_ints(values)
+        call take_size(st, file, r, size(values), size(conn))
+        if (st%ok()) conn = values
     end subroutine med_read_connectivity
+
+    ! The reply carried the n values asked for (else an internal error: client and server
+    ! disagree).
+    subroutine take_size(st, file, r, got, wanted)
+        type(status_t), intent(inout) :: st
+        type(med_file_t), intent(in) :: file
+        type(message_t), intent(in) :: r
+        integer, intent(in) :: got, wanted
+        if (r%bad .or. got /= wanted) call set_error(st, STATUS_INTERNAL, 'MED file ' // &
+            file%path // ': the MED server sent ' // to_text(int(got, i4)) // ' values for ' &
+            // to_text(int(wanted, i4)) // ' (a bug: please report it)')
+    end subroutine take_size
 
     !> The n names of the nodes (MED_NODES) or of the cells of type `geotype` (MED_CELLS),
     !> trailing blanks removed.
@@ -740,24 +495,29 @@ contains
         integer(i4), intent(in) :: numdt, numit, entity, geotype, n
         character(len=MED_SNAME_LEN), intent(out) :: names(:)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         character(kind=c_char), allocatable :: buffer(:)
         integer(c_int) :: rc
-        integer(i4) :: k, j, ios
-        type(fp_state_t) :: fp
-        allocate (buffer(int(MED_SNAME_LEN, i8) * n + 1), stat=ios)
-        if (ios /= 0) then
-            call too_big(st, file, what_text // ' names', int(n, i8))
+        integer(i8) :: bytes
+        integer(i4) :: k, j
+        names = ' '
+        bytes = int(MED_SNAME_LEN, i8) * n + 1
+        if (bytes > huge(1_c_int)) then
+            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': it claims ' &
+                // to_text(int(n, i8)) // ' ' // what_text // ' names, more than this ' // &
+                'machine can hold')
             return
         end if
-        call fp_begin(fp)
-        rc = plugin%read_names(file%fid, mesh // c_null_char, int(numdt, c_int), &
-                               int(numit, c_int), int(entity, c_int), int(geotype, c_int), buffer)
-        call fp_end(fp)
-        if (rc < 0) then
-            call fail(st, file, 'cannot read the names of the ' // what_text // ' of mesh ' // &
-                mesh, rc)
-            return
-        end if
+        call step_request(q, OP_READ_NAMES, mesh, numdt, numit)
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_int(int(bytes))
+        rc = exchange(file, q, r, 'read', 'the names of the ' // what_text // ' of mesh ' // &
+                      mesh, st, writing=.false.)
+        if (st%failed()) return
+        call r%get_chars(buffer)
+        call take_size(st, file, r, size(buffer), int(bytes))
+        if (st%failed()) return
         do k = 1, min(n, size(names, kind=i4))   ! blank-padded fields of 16 characters
             names(k) = transfer(buffer((k - 1) * MED_SNAME_LEN + 1:k * MED_SNAME_LEN), names(k))
             j = index(names(k), c_null_char)      ! a writer that pads with NULs instead
@@ -773,15 +533,20 @@ contains
         integer(i4), intent(in) :: numdt, numit, entity, geotype
         integer(i4), intent(out) :: numbers(:)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        integer(i4), allocatable :: values(:)
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%read_families(file%fid, mesh // c_null_char, int(numdt, c_int), &
-                                  int(numit, c_int), int(entity, c_int), int(geotype, c_int), &
-                                  numbers)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot read the family numbers of the ' // &
-            what_text // ' of mesh ' // mesh, rc)
+        numbers = 0
+        call step_request(q, OP_READ_FAMILIES, mesh, numdt, numit)
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_int(size(numbers))
+        rc = exchange(file, q, r, 'read', 'the family numbers of the ' // what_text // &
+                      ' of mesh ' // mesh, st, writing=.false.)
+        if (st%failed()) return
+        call r%get_ints(values)
+        call take_size(st, file, r, size(values), size(numbers))
+        if (st%ok()) numbers = values
     end subroutine med_read_families
 
     !> Number of families of mesh `mesh`.
@@ -789,11 +554,10 @@ contains
         type(med_file_t), intent(in) :: file
         character(len=*), intent(in) :: mesh
         type(status_t), intent(out) :: st
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        n = plugin%family_count(file%fid, mesh // c_null_char)
-        call fp_end(fp)
-        if (n < 0) call fail(st, file, 'cannot count the families of mesh ' // mesh, n)
+        type(message_t) :: q, r
+        call q%put_int(OP_FAMILY_COUNT)
+        call q%put_text(mesh)
+        n = exchange(file, q, r, 'count', 'the families of mesh ' // mesh, st, writing=.false.)
     end function med_family_count
 
     !> Number of groups of family `it` (1-based iterator).
@@ -802,12 +566,12 @@ contains
         character(len=*), intent(in) :: mesh
         integer(i4), intent(in) :: it
         type(status_t), intent(out) :: st
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        n = plugin%family_group_count(file%fid, mesh // c_null_char, int(it, c_int))
-        call fp_end(fp)
-        if (n < 0) call fail(st, file, 'cannot read family ' // to_text(it) // ' of mesh ' // &
-            mesh, n)
+        type(message_t) :: q, r
+        call q%put_int(OP_FAMILY_GROUP_COUNT)
+        call q%put_text(mesh)
+        call q%put_int(int(it))
+        n = exchange(file, q, r, 'read', 'family ' // to_text(it) // ' of mesh ' // mesh, st, &
+                     writing=.false.)
     end function med_family_group_count
 
     !> Family `it`: name, number, and its groups (size(groups) = its group count, from
@@ -820,22 +584,22 @@ contains
         integer(i4), intent(out) :: number
         character(len=MED_LNAME_LEN), intent(out) :: groups(:)
         type(status_t), intent(out) :: st
-        character(kind=c_char) :: name_buffer(MED_NAME_LEN + 1)
-        character(kind=c_char), allocatable :: buffer(:)
-        integer(c_int) :: rc, num
+        type(message_t) :: q, r
+        character(kind=c_char), allocatable :: name_buffer(:), buffer(:)
+        integer(c_int) :: rc
         integer(i4) :: k
-        type(fp_state_t) :: fp
-        allocate (buffer(MED_LNAME_LEN * max(size(groups), 1) + 1))
-        call fp_begin(fp)
-        rc = plugin%family_info(file%fid, mesh // c_null_char, int(it, c_int), &
-                                int(size(groups), c_int), name_buffer, num, buffer)
-        call fp_end(fp)
+        groups = ' '
+        call q%put_int(OP_FAMILY_INFO)
+        call q%put_text(mesh)
+        call q%put_int(int(it))
+        call q%put_int(size(groups))
+        rc = exchange(file, q, r, 'read', 'family ' // to_text(it) // ' of mesh ' // mesh, st, &
+                      writing=.false.)
+        call r%get_chars(name_buffer)
         name = buffer_text(name_buffer, 1, MED_NAME_LEN)
-        number = num
-        if (rc < 0) then
-            call fail(st, file, 'cannot read family ' // to_text(it) // ' of mesh ' // mesh, rc)
-            return
-        end if
+        number = r%get_int()
+        if (st%failed()) return
+        call r%get_chars(buffer)
         do k = 1, size(groups, kind=i4)
             groups(k) = buffer_text(buffer, (k - 1) * MED_LNAME_LEN + 1, MED_LNAME_LEN)
         end do
@@ -847,14 +611,13 @@ contains
         character(len=*), intent(in) :: mesh, description
         integer(i4), intent(in) :: spacedim
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%create_mesh(file%fid, mesh // c_null_char, int(spacedim, c_int), &
-                                description // c_null_char)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot create mesh ' // mesh, rc, &
-                              writing=.true.)
+        call q%put_int(OP_CREATE_MESH)
+        call q%put_text(mesh)
+        call q%put_int(int(spacedim))
+        call q%put_text(description)
+        rc = exchange(file, q, r, 'create', 'mesh ' // mesh, st, writing=.true.)
     end subroutine med_create_mesh
 
     !> Writes the node coordinates coords(spacedim, n).
@@ -863,14 +626,13 @@ contains
         character(len=*), intent(in) :: mesh
         real(dp), intent(in) :: coords(:, :)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%write_coordinates(file%fid, mesh // c_null_char, &
-                                      int(size(coords, 2), c_int), coords)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write the nodes of mesh ' // mesh, rc, &
-                              writing=.true.)
+        call q%put_int(OP_WRITE_COORDINATES)
+        call q%put_text(mesh)
+        call q%put_int(size(coords, 2))
+        call q%put_reals(reshape(coords, [size(coords)]))
+        rc = exchange(file, q, r, 'write', 'the nodes of mesh ' // mesh, st, writing=.true.)
     end subroutine med_write_coordinates
 
     !> Writes the cells of MED type `geotype`: conn(nodes per cell, n).
@@ -880,14 +642,14 @@ contains
         integer(i4), intent(in) :: geotype
         integer(i4), intent(in) :: conn(:, :)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%write_connectivity(file%fid, mesh // c_null_char, int(geotype, c_int), &
-                                       int(size(conn, 2), c_int), conn)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write the cells of mesh ' // mesh, rc, &
-                              writing=.true.)
+        call q%put_int(OP_WRITE_CONNECTIVITY)
+        call q%put_text(mesh)
+        call q%put_int(int(geotype))
+        call q%put_int(size(conn, 2))
+        call q%put_ints(reshape(conn, [size(conn)]))
+        rc = exchange(file, q, r, 'write', 'the cells of mesh ' // mesh, st, writing=.true.)
     end subroutine med_write_connectivity
 
     !> Writes entity names (each at most 16 characters).
@@ -897,23 +659,16 @@ contains
         integer(i4), intent(in) :: entity, geotype
         character(len=MED_SNAME_LEN), intent(in) :: names(:)
         type(status_t), intent(out) :: st
-        character(kind=c_char), allocatable :: buffer(:)
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        integer :: k, j
-        type(fp_state_t) :: fp
-        allocate (buffer(MED_SNAME_LEN * size(names) + 1))
-        do k = 1, size(names)
-            do j = 1, MED_SNAME_LEN
-                buffer((k - 1) * MED_SNAME_LEN + j) = names(k)(j:j)
-            end do
-        end do
-        buffer(size(buffer)) = c_null_char
-        call fp_begin(fp)
-        rc = plugin%write_names(file%fid, mesh // c_null_char, int(entity, c_int), &
-                                int(geotype, c_int), int(size(names), c_int), buffer)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write entity names of mesh ' // mesh, rc, &
-                              writing=.true.)
+        call q%put_int(OP_WRITE_NAMES)
+        call q%put_text(mesh)
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_int(size(names))
+        call q%put_chars(fixed_chars(names, MED_SNAME_LEN))
+        rc = exchange(file, q, r, 'write', 'the entity names of mesh ' // mesh, st, &
+                      writing=.true.)
     end subroutine med_write_names
 
     !> Writes family numbers of the nodes (MED_NODES) or the cells of type `geotype`.
@@ -923,14 +678,15 @@ contains
         integer(i4), intent(in) :: entity, geotype
         integer(i4), intent(in) :: numbers(:)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%write_families(file%fid, mesh // c_null_char, int(entity, c_int), &
-                                   int(geotype, c_int), int(size(numbers), c_int), numbers)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write family numbers of mesh ' // mesh, rc, &
-                              writing=.true.)
+        call q%put_int(OP_WRITE_FAMILIES)
+        call q%put_text(mesh)
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_ints(numbers)
+        rc = exchange(file, q, r, 'write', 'the family numbers of mesh ' // mesh, st, &
+                      writing=.true.)
     end subroutine med_write_families
 
     !> Creates family `name` (number > 0 nodes, < 0 cells, 0 none) holding `groups`.
@@ -940,34 +696,25 @@ contains
         integer(i4), intent(in) :: number
         character(len=MED_LNAME_LEN), intent(in) :: groups(:)
         type(status_t), intent(out) :: st
-        character(kind=c_char), allocatable :: buffer(:)
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        integer :: k, j
-        type(fp_state_t) :: fp
-        allocate (buffer(MED_LNAME_LEN * size(groups) + 1))
-        do k = 1, size(groups)
-            do j = 1, MED_LNAME_LEN
-                buffer((k - 1) * MED_LNAME_LEN + j) = groups(k)(j:j)
-            end do
-        end do
-        buffer(size(buffer)) = c_null_char
-        call fp_begin(fp)
-        rc = plugin%create_family(file%fid, mesh // c_null_char, name // c_null_char, &
-                                  int(number, c_int), int(size(groups), c_int), buffer)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write family ' // name // ' of mesh ' // mesh, rc, &
-                              writing=.true.)
+        call q%put_int(OP_CREATE_FAMILY)
+        call q%put_text(mesh)
+        call q%put_text(name)
+        call q%put_int(int(number))
+        call q%put_int(size(groups))
+        call q%put_chars(fixed_chars(groups, MED_LNAME_LEN))
+        rc = exchange(file, q, r, 'write', 'family ' // name // ' of mesh ' // mesh, st, &
+                      writing=.true.)
     end subroutine med_create_family
 
     !> Number of fields in the file.
     integer(i4) function med_field_count(file, st) result(n)
         type(med_file_t), intent(in) :: file
         type(status_t), intent(out) :: st
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        n = plugin%field_count(file%fid)
-        call fp_end(fp)
-        if (n < 0) call fail(st, file, 'cannot count its fields', n)
+        type(message_t) :: q, r
+        call q%put_int(OP_FIELD_COUNT)
+        n = exchange(file, q, r, 'count', 'its fields', st, writing=.false.)
     end function med_field_count
 
     !> Field `it`: name, mesh and component names (at most `capacity` components).
@@ -978,26 +725,27 @@ contains
         character(len=:), allocatable, intent(out) :: name, mesh
         character(len=MED_SNAME_LEN), allocatable, intent(out) :: components(:)
         type(status_t), intent(out) :: st
-        integer(c_int), parameter :: CAPACITY = 64
-        character(kind=c_char) :: name_buffer(MED_NAME_LEN + 1), mesh_buffer(MED_NAME_LEN + 1)
-        character(kind=c_char) :: buffer(MED_SNAME_LEN * CAPACITY + 1)
+        integer, parameter :: CAPACITY = 64
+        type(message_t) :: q, r
+        character(kind=c_char), allocatable :: name_buffer(:), mesh_buffer(:), buffer(:)
         integer(c_int) :: rc, ncomponent
         integer(i4) :: k
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%field_info(file%fid, int(it, c_int), CAPACITY, name_buffer, mesh_buffer, &
-                               ncomponent, buffer)
-        call fp_end(fp)
+        call q%put_int(OP_FIELD_INFO)
+        call q%put_int(int(it))
+        call q%put_int(CAPACITY)
+        rc = exchange(file, q, r, 'read', 'the description of field ' // to_text(it), st, &
+                      writing=.false.)
+        call r%get_chars(name_buffer)
+        call r%get_chars(mesh_buffer)
+        ncomponent = r%get_int()
+        call r%get_chars(buffer)
         name = buffer_text(name_buffer, 1, MED_NAME_LEN)
         mesh = buffer_text(mesh_buffer, 1, MED_NAME_LEN)
         allocate (components(0))
-        if (rc < 0) then
-            call fail(st, file, 'cannot read the description of field ' // to_text(it), rc)
-            return
-        end if
+        if (st%failed()) return
         deallocate (components)
-        allocate (components(ncomponent))
-        do k = 1, ncomponent
+        allocate (components(max(0, min(ncomponent, CAPACITY))))
+        do k = 1, size(components, kind=i4)
             components(k) = buffer_text(buffer, (k - 1) * MED_SNAME_LEN + 1, MED_SNAME_LEN)
         end do
     end subroutine med_field_info
@@ -1008,37 +756,26 @@ contains
         character(len=*), intent(in) :: field, mesh
         character(len=MED_SNAME_LEN), intent(in) :: components(:)
         type(status_t), intent(out) :: st
-        character(kind=c_char), allocatable :: names(:), units(:)
+        type(message_t) :: q, r
+        character(len=MED_SNAME_LEN) :: units(size(components))
         integer(c_int) :: rc
-        integer :: k, j
-        type(fp_state_t) :: fp
-        allocate (names(MED_SNAME_LEN * size(components) + 1))
-        allocate (units(MED_SNAME_LEN * size(components) + 1))
         units = ' '
-        do k = 1, size(components)
-            do j = 1, MED_SNAME_LEN
-                names((k - 1) * MED_SNAME_LEN + j) = components(k)(j:j)
-            end do
-        end do
-        names(size(names)) = c_null_char
-        units(size(units)) = c_null_char
-        call fp_begin(fp)
-        rc = plugin%create_field(file%fid, field // c_null_char, mesh // c_null_char, &
-                                 int(size(components), c_int), names, units)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot create field ' // field, rc, &
-                              writing=.true.)
+        call q%put_int(OP_CREATE_FIELD)
+        call q%put_text(field)
+        call q%put_text(mesh)
+        call q%put_int(size(components))
+        call q%put_chars(fixed_chars(components, MED_SNAME_LEN))
+        call q%put_chars(fixed_chars(units, MED_SNAME_LEN))
+        rc = exchange(file, q, r, 'create', 'field ' // field, st, writing=.true.)
     end subroutine med_create_field
 
     !> Number of profiles in the file.
     integer(i4) function med_profile_count(file, st) result(n)
         type(med_file_t), intent(in) :: file
         type(status_t), intent(out) :: st
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        n = plugin%profile_count(file%fid)
-        call fp_end(fp)
-        if (n < 0) call fail(st, file, 'cannot count its profiles', n)
+        type(message_t) :: q, r
+        call q%put_int(OP_PROFILE_COUNT)
+        n = exchange(file, q, r, 'count', 'its profiles', st, writing=.false.)
     end function med_profile_count
 
     !> Writes profile `name`: the node numbers a field is given on.
@@ -1047,14 +784,12 @@ contains
         character(len=*), intent(in) :: name
         integer(i4), intent(in) :: numbers(:)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%write_profile(file%fid, name // c_null_char, int(size(numbers), c_int), &
-                                  numbers)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write profile ' // name, rc, &
-                              writing=.true.)
+        call q%put_int(OP_WRITE_PROFILE)
+        call q%put_text(name)
+        call q%put_ints(numbers)
+        rc = exchange(file, q, r, 'write', 'profile ' // name, st, writing=.true.)
     end subroutine med_write_profile
 
     !> Writes node field values(components, n) at step (numdt, numit), time dt, on the nodes
@@ -1066,48 +801,47 @@ contains
         real(dp), intent(in) :: dt
         real(dp), intent(in) :: values(:, :)
         type(status_t), intent(out) :: st
+        type(message_t) :: q, r
         integer(c_int) :: rc
-        type(fp_state_t) :: fp
-        call fp_begin(fp)
-        rc = plugin%write_field_values(file%fid, field // c_null_char, int(numdt, c_int), &
-                                       int(numit, c_int), real(dt, c_double), &
-                                       int(size(values, 2), c_int), profile // c_null_char, &
-                                       values)
-        call fp_end(fp)
-        if (rc < 0) call fail(st, file, 'cannot write field ' // field // ' at step ' // &
-            to_text(numdt), rc, writing=.true.)
+        call q%put_int(OP_WRITE_FIELD_VALUES)
+        call q%put_text(field)
+        call q%put_int(int(numdt))
+        call q%put_int(int(numit))
+        call q%put_real(dt)
+        call q%put_int(size(values, 2))
+        call q%put_text(profile)
+        call q%put_reals(reshape(values, [size(values)]))
+        rc = exchange(file, q, r, 'write', 'field ' // field // ' at step ' // &
+                      to_text(numdt), st, writing=.true.)
     end subroutine med_write_field_values
 
-    ! STATUS_MESH_ERROR "MED file PATH: WHAT (MED error RC)" (reading: the file's contents are
-    ! at fault) or STATUS_IO_ERROR (writing).
-    subroutine fail(st, file, what, rc, writing)
-        type(status_t), intent(inout) :: st
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: what
-        integer(c_int), intent(in) :: rc
-        logical, intent(in), optional :: writing
-        if (present(writing)) then
-            call set_error(st, STATUS_IO_ERROR, 'MED file ' // file%path // ': ' // what // &
-                ' (MED error ' // to_text(int(rc, i4)) // ')')
-        else if (rc == PLUGIN_BAD_SIZE) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': ' // what // &
-                ' (it holds more than parasol expects)')
-        else
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': ' // what // &
-                ' (MED error ' // to_text(int(rc, i4)) // '; the file is damaged, truncated ' &
-                // 'or inconsistent)')
-        end if
-    end subroutine fail
+    ! The head of a request on a mesh at a computation step: the operation, the mesh's name,
+    ! numdt and numit.
+    subroutine step_request(q, op, mesh, numdt, numit)
+        type(message_t), intent(inout) :: q
+        integer, intent(in) :: op
+        character(len=*), intent(in) :: mesh
+        integer(i4), intent(in) :: numdt, numit
+        call q%put_int(op)
+        call q%put_text(mesh)
+        call q%put_int(int(numdt))
+        call q%put_int(int(numit))
+    end subroutine step_request
 
-    ! A count too large to hold in memory.
-    subroutine too_big(st, file, what, n)
-        type(status_t), intent(inout) :: st
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: what
-        integer(i8), intent(in) :: n
-        call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': it claims ' // &
-            to_text(n) // ' ' // what // ', more than this machine can hold')
-    end subroutine too_big
+    ! Fixed-width names as one C buffer (each `width` characters, blank-padded), NUL-ended.
+    function fixed_chars(names, width) result(buffer)
+        character(len=*), intent(in) :: names(:)
+        integer, intent(in) :: width
+        character(kind=c_char), allocatable :: buffer(:)
+        integer :: k, j
+        allocate (buffer(width * size(names) + 1))
+        do k = 1, size(names)
+            do j = 1, width
+                buffer((k - 1) * width + j) = names(k)(j:j)
+            end do
+        end do
+        buffer(size(buffer)) = c_null_char
+    end function fixed_chars
 
     ! Characters start .. start+length-1 of a C buffer, up to the first NUL, trailing blanks
     ! removed.
@@ -1127,21 +861,5 @@ contains
         end do
         text = trim(text)
     end function buffer_text
-
-    ! Saves the floating-point environment and switches traps off before a call into
-    ! MED/HDF5 (see the module header). Done through C's <fenv.h>, not the IEEE intrinsic
-    ! modules: a Fortran procedure using those gets its halting modes restored on return.
-    subroutine fp_begin(state)
-        type(fp_state_t), intent(out) :: state
-        integer(c_int) :: rc
-        rc = c_feholdexcept(state%env)
-    end subroutine fp_begin
-
-    ! Restores the traps and flags saved by fp_begin (what MED raised is not parasol's).
-    subroutine fp_end(state)
-        type(fp_state_t), intent(in) :: state
-        integer(c_int) :: rc
-        rc = c_fesetenv(state%env)
-    end subroutine fp_end
 
 end module med_file

@@ -20,6 +20,9 @@ module load_commands
         LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
         LOAD_FORCE_CONTOUR, SLOT_PRES, load_set_location
     use function_concept, only: function_concept_t
+    use relation_commands, only: select_nodes, face_impo_item, liaison_ddl_item, &
+        liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
+        liaison_group_item
     implicit none
     private
 
@@ -140,6 +143,8 @@ contains
                     ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
                 if (st%failed()) return
             end do
+            call relation_items(cmd, p, functions, cm%loads, st)
+            if (st%failed()) return
             do i = 1, cmd%count('FORCE_NODALE')
                 call node_item(cmd%occurrence('FORCE_NODALE', i), p, LOAD_FORCE_NODALE, &
                     ['FX', 'FY', 'FZ', 'MX', 'MY', 'MZ'], functions, cm%loads, st)
@@ -168,7 +173,54 @@ contains
         call move_alloc(cm, result)
     end subroutine build_char_meca
 
-    !> DDL_IMPO / FORCE_NODALE occurrence: nodes from TOUT, GROUP_NO, GROUP_MA or NOEUD.
+    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands).
+    subroutine relation_items(cmd, mc, functions, loads, st)
+        type(command_t), intent(in) :: cmd
+        type(model_concept_t), intent(in) :: mc
+        logical, intent(in) :: functions
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        integer(i4) :: i
+        do i = 1, cmd%count('FACE_IMPO')
+            call face_impo_item(cmd%occurrence('FACE_IMPO', i), mc, functions, .false., &
+                loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('ARETE_IMPO')
+            call face_impo_item(cmd%occurrence('ARETE_IMPO', i), mc, functions, .true., &
+                loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_DDL')
+            call liaison_ddl_item(cmd%occurrence('LIAISON_DDL', i), mc, functions, loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_OBLIQUE')
+            call liaison_oblique_item(cmd%occurrence('LIAISON_OBLIQUE', i), mc, functions, &
+                loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_GROUP')
+            call liaison_group_item(cmd%occurrence('LIAISON_GROUP', i), mc, functions, &
+                loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_UNIF')
+            call liaison_unif_item(cmd%occurrence('LIAISON_UNIF', i), mc, loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_SOLIDE')
+            call liaison_solide_item(cmd%occurrence('LIAISON_SOLIDE', i), mc, loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_RBE3')
+            call liaison_rbe3_item(cmd%occurrence('LIAISON_RBE3', i), mc, loads, st)
+            if (st%failed()) return
+        end do
+    end subroutine relation_items
+
+    !> DDL_IMPO / FORCE_NODALE occurrence: the nodes of TOUT, GROUP_NO, GROUP_MA and NOEUD
+    !> less SANS_GROUP_MA and SANS_GROUP_NO (relation_commands select_nodes).
     subroutine node_item(occ, mc, kind, keys, functions, loads, st)
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
@@ -177,47 +229,11 @@ contains
         logical, intent(in) :: functions
         type(load_set_t), intent(inout) :: loads
         type(status_t), intent(out) :: st
-        integer(i4), allocatable :: nodes(:), cells(:)
-        type(string_t), allocatable :: names(:)
-        integer(i4) :: k, g, index
+        integer(i4), allocatable :: nodes(:)
+        integer(i4) :: k, index
         character(len=:), allocatable :: label
-        allocate (nodes(0))
-        label = ''
-        if (occ%has('TOUT')) then
-            nodes = nodes_of_cells(mc%mesh, all_cells(mc%mesh))
-            label = 'TOUT'
-        else if (occ%has('GROUP_MA')) then
-            call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
-            if (st%failed()) return
-            nodes = nodes_of_cells(mc%mesh, cells)
-            label = 'GROUP_MA'
-        else
-            if (occ%has('GROUP_NO')) then
-                call occ%get_texts('GROUP_NO', names, st)
-                if (st%failed()) return
-                do k = 1, size(names)
-                    g = find_node_group(mc%mesh, names(k)%s, st)
-                    if (st%failed()) then
-                        call relocate_error(occ, 'GROUP_NO', st)
-                        return
-                    end if
-                    call append(nodes, nodes_of_group(mc%mesh, g))
-                end do
-                label = names(1)%s
-            else
-                call occ%get_texts('NOEUD', names, st)
-                if (st%failed()) return
-                do k = 1, size(names)
-                    g = find_node(mc%mesh, names(k)%s, st)
-                    if (st%failed()) then
-                        call relocate_error(occ, 'NOEUD', st)
-                        return
-                    end if
-                    call append(nodes, [g])
-                end do
-                label = names(1)%s
-            end if
-        end if
+        call select_nodes(occ, mc, nodes, label, st)
+        if (st%failed()) return
         if (any([(occ%has(trim(keys(k))), k = 1, size(keys))])) then
             call load_add_item(loads, kind, nodes, index, label)
             call locate_item(occ, loads, index)
@@ -386,15 +402,5 @@ contains
         call occ%location('', file, line, col)
         call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
     end subroutine locate_item
-
-    subroutine append(list, more)
-        integer(i4), allocatable, intent(inout) :: list(:)
-        integer(i4), intent(in) :: more(:)
-        integer(i4), allocatable :: grown(:)
-        allocate (grown(size(list) + size(more)))
-        grown(1:size(list)) = list
-        grown(size(list) + 1:) = more
-        call move_alloc(grown, list)
-    end subroutine append
 
 end module load_commands

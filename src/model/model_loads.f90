@@ -6,6 +6,13 @@
 !>   FORCE_COQUE   plate cells, PRES (force = -PRES n) or FX/FY/FZ per unit area
 !>   PRES_REP      plate cells, PRES
 !>   FORCE_CONTOUR SEG2 edge cells of plane models, FX FY per unit length (unit depth)
+!>   RELATION      linear relations between components of nodes (LIAISON_DDL,
+!>                 LIAISON_OBLIQUE, LIAISON_UNIF, LIAISON_SOLIDE, LIAISON_GROUP,
+!>                 LIAISON_RBE3, LIAISON_MAIL, FACE_IMPO and ARETE_IMPO DNOR/DTAN): each
+!>                 relation sum_k a_k u(node_k, comp_k) = beta, beta the value of one slot
+!>                 (COEF_IMPO, DNOR, DX of an oblique frame ...) evaluated at one node, or 0;
+!>                 the occurrence's keyword names the item. The analysis eliminates them
+!>                 (assembly_relations, doc/analysis.md "Linear relations").
 !> Each of the six slots of an item holds either a real constant (AFFE_CHAR_MECA) or a
 !> function of (INST, X, Y, Z) (AFFE_CHAR_MECA_F). A function slot keeps a POINTER to a
 !> function concept owned by the run context (the deck's symbol table): the load set never
@@ -27,16 +34,16 @@ module model_loads
     private
 
     integer(i4), parameter, public :: LOAD_DDL_IMPO = 1, LOAD_FORCE_NODALE = 2, &
-        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5
-    character(len=13), parameter, public :: LOAD_KIND_NAMES(5) = ['DDL_IMPO     ', &
-        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR']
+        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6
+    character(len=13), parameter, public :: LOAD_KIND_NAMES(6) = ['DDL_IMPO     ', &
+        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR', 'LIAISON      ']
     !> Slot of PRES in FORCE_COQUE / PRES_REP items (the FX FY FZ slots are 1..3).
     integer(i4), parameter, public :: SLOT_PRES = 4
     !> Names of the six slots of each kind (messages).
-    character(len=4), parameter :: SLOT_NAMES(6, 5) = reshape([character(len=4) :: &
+    character(len=4), parameter :: SLOT_NAMES(6, 6) = reshape([character(len=4) :: &
         'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', 'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', &
         'FX', 'FY', 'FZ', 'PRES', '', '', 'FX', 'FY', 'FZ', 'PRES', '', '', &
-        'FX', 'FY', '', '', '', ''], [6, 5])
+        'FX', 'FY', '', '', '', '', '', '', '', '', '', ''], [6, 6])
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
@@ -61,6 +68,17 @@ module model_loads
         character(len=:), allocatable :: file, command, keyword
         integer(i4) :: line = 0, col = 0
         logical :: blocage = .false.                 !< DDL_IMPO/BLOCAGE: skip absent components
+        !> RELATION items: relation r has the terms rel_ptr(r) .. rel_ptr(r+1)-1 of
+        !> (rel_node, rel_comp, rel_coef); its right-hand side is values(rel_slot(r))
+        !> evaluated at node rel_at(r) (rel_slot 0: zero)
+        integer(i4) :: n_rel = 0
+        integer(i4), allocatable :: rel_ptr(:), rel_node(:), rel_comp(:), rel_slot(:), &
+            rel_at(:)
+        real(dp), allocatable :: rel_coef(:)
+        !> LIAISON_SOLIDE: the nodes of the rigid body (its cells store no energy)
+        integer(i4), allocatable :: solid_nodes(:)
+        !> names of the value slots, for messages (RELATION items: COEF_IMPO, DNOR, ...)
+        character(len=16) :: slot_names(6) = ''
     end type load_item_t
 
     !> A char_meca concept's content.
@@ -71,7 +89,8 @@ module model_loads
     end type load_set_t
 
     public :: load_add_item, load_set_constant, load_set_function, load_value_at, &
-        load_has_kind, load_set_location, load_locate, load_item_where, load_slot_name
+        load_has_kind, load_set_location, load_locate, load_item_where, load_slot_name, &
+        load_add_relation, item_slot_name
 
 contains
 
@@ -119,6 +138,15 @@ contains
         to%blocage = from%blocage
         call move_alloc(from%nodes, to%nodes)
         call move_alloc(from%cells, to%cells)
+        to%n_rel = from%n_rel
+        if (allocated(from%rel_ptr)) call move_alloc(from%rel_ptr, to%rel_ptr)
+        if (allocated(from%rel_node)) call move_alloc(from%rel_node, to%rel_node)
+        if (allocated(from%rel_comp)) call move_alloc(from%rel_comp, to%rel_comp)
+        if (allocated(from%rel_coef)) call move_alloc(from%rel_coef, to%rel_coef)
+        if (allocated(from%rel_slot)) call move_alloc(from%rel_slot, to%rel_slot)
+        if (allocated(from%rel_at)) call move_alloc(from%rel_at, to%rel_at)
+        if (allocated(from%solid_nodes)) call move_alloc(from%solid_nodes, to%solid_nodes)
+        to%slot_names = from%slot_names
         call move_alloc(from%group, to%group)
         if (allocated(from%file)) call move_alloc(from%file, to%file)
         if (allocated(from%command)) call move_alloc(from%command, to%command)
@@ -137,6 +165,68 @@ contains
                 from%values(k)%binding%provided, to%values(k)%binding%provided)
         end do
     end subroutine move_item
+
+    !> Appends one relation sum_k coefs(k) u(nodes(k), comps(k)) = beta to RELATION item
+    !> `index`, beta being slot `slot` evaluated at node `at` (slot 0: beta = 0).
+    subroutine load_add_relation(set, index, nodes, comps, coefs, slot, at)
+        type(load_set_t), intent(inout) :: set
+        integer(i4), intent(in) :: index, nodes(:), comps(:), slot, at
+        real(dp), intent(in) :: coefs(:)
+        integer(i4) :: n, m
+        associate (item => set%items(index))
+            if (.not. allocated(item%rel_ptr)) then
+                allocate (item%rel_ptr(17), item%rel_slot(16), item%rel_at(16))
+                allocate (item%rel_node(64), item%rel_comp(64), item%rel_coef(64))
+                item%rel_ptr(1) = 1
+            end if
+            n = item%n_rel
+            m = item%rel_ptr(n + 1) - 1
+            if (n + 1 > size(item%rel_slot)) then
+                call grow_int(item%rel_ptr, 2 * size(item%rel_slot) + 1)
+                call grow_int(item%rel_slot, 2 * size(item%rel_slot))
+                call grow_int(item%rel_at, 2 * size(item%rel_at))
+            end if
+            if (m + size(nodes) > size(item%rel_node)) then
+                call grow_int(item%rel_node, 2 * (m + size(nodes)))
+                call grow_int(item%rel_comp, 2 * (m + size(nodes)))
+                call grow_real(item%rel_coef, 2 * (m + size(nodes)))
+            end if
+            item%rel_node(m + 1:m + size(nodes)) = nodes
+            item%rel_comp(m + 1:m + size(nodes)) = comps
+            item%rel_coef(m + 1:m + size(nodes)) = coefs
+            item%n_rel = n + 1
+            item%rel_ptr(n + 2) = m + size(nodes, kind=i4) + 1
+            item%rel_slot(n + 1) = slot
+            item%rel_at(n + 1) = at
+        end associate
+    end subroutine load_add_relation
+
+    subroutine grow_int(a, n)
+        integer(i4), allocatable, intent(inout) :: a(:)
+        integer, intent(in) :: n
+        integer(i4), allocatable :: b(:)
+        allocate (b(n), source=0_i4)
+        b(1:size(a)) = a
+        call move_alloc(b, a)
+    end subroutine grow_int
+
+    subroutine grow_real(a, n)
+        real(dp), allocatable, intent(inout) :: a(:)
+        integer, intent(in) :: n
+        real(dp), allocatable :: b(:)
+        allocate (b(n), source=0.0_dp)
+        b(1:size(a)) = a
+        call move_alloc(b, a)
+    end subroutine grow_real
+
+    !> Name of slot `slot` of an item: its own names (RELATION items), else its kind's.
+    pure function item_slot_name(item, slot) result(name)
+        type(load_item_t), intent(in) :: item
+        integer(i4), intent(in) :: slot
+        character(len=:), allocatable :: name
+        name = trim(item%slot_names(slot))
+        if (len(name) == 0) name = load_slot_name(item%kind, slot)
+    end function item_slot_name
 
     !> Sets slot `slot` (1..6) of item `index` to a constant.
     subroutine load_set_constant(set, index, slot, value)
@@ -181,7 +271,7 @@ contains
         if (allocated(st%file)) return
         call add_context(st, file=item%file, line=item%line, column=item%col, &
                          command=item%command, keyword=item%keyword // '/' // &
-                         load_slot_name(item%kind, slot))
+                         item_slot_name(item, slot))
     end subroutine load_locate
 
     !> "deck.comm:53:24" of an item ('' when unknown), for messages naming two occurrences.
@@ -201,17 +291,20 @@ contains
     end function load_slot_name
 
     !> Value of slot `slot` of a load of `kind` at time t and point x, checked: finite, and
-    !> for DDL_IMPO at most MAX_LENGTH in magnitude (a displacement or rotation that the
-    !> products formed from it in the analysis cannot overflow), for the forces within the
-    !> magnitude products may still be formed from (number_limits).
+    !> for DDL_IMPO and the right-hand sides of relations at most MAX_LENGTH in magnitude (a
+    !> displacement or rotation that the products formed from it in the analysis cannot
+    !> overflow), for the forces within the magnitude products may still be formed from
+    !> (number_limits).
     !>  st : out, the function's evaluation error, with the load kind added; a value out of
     !>       range (then located by the caller with load_locate)
-    subroutine load_value_at(value, kind, slot, t, x, y, st)
+    !>  slot_name : in, optional, the slot's name in messages (default: the kind's)
+    subroutine load_value_at(value, kind, slot, t, x, y, st, slot_name)
         type(load_value_t), intent(in) :: value
         integer(i4), intent(in) :: kind, slot
         real(dp), intent(in) :: t, x(3)
         real(dp), intent(out) :: y
         type(status_t), intent(out) :: st
+        character(len=*), intent(in), optional :: slot_name
         character(len=:), allocatable :: name
         y = value%constant
         if (associated(value%func)) then
@@ -223,10 +316,12 @@ contains
             end if
         end if
         name = load_slot_name(kind, slot)
+        if (present(slot_name)) name = slot_name
         if (.not. is_finite(y)) then
             call set_error(st, STATUS_MODEL_ERROR, name // ' is not a finite number at INST ' &
                 // to_text(t))
-        else if (kind == LOAD_DDL_IMPO .and. abs(y) > MAX_LENGTH) then
+        else if ((kind == LOAD_DDL_IMPO .or. kind == LOAD_RELATION) .and. &
+                 abs(y) > MAX_LENGTH) then
             call set_error(st, STATUS_MODEL_ERROR, name // ' = ' // to_text(y) // ' at INST ' &
                 // to_text(t) // ' is out of range (|' // name // '| <= ' // &
                 to_text(MAX_LENGTH) // ')')

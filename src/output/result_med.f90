@@ -23,7 +23,8 @@ module result_med
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_INTERNAL
     use strings, only: string_t, to_text
     use atomic_file, only: delete_file, temporary_path, track_temporary, untrack_temporary, &
-        publish_file
+        publish_file, scratch_path, copy_file
+    use system_error, only: path_kind, PATH_FOLDER, PATH_DEVICE
     use mesh_types, only: mesh_t, node_name, cell_name, n_node_groups, n_cell_groups, &
         nodes_of_group, cells_of_group, node_group_name, cell_group_name, N_CELL_TYPES, &
         CELL_TYPE_ORDER, CELL_TYPE_NODES
@@ -57,6 +58,7 @@ module result_med
         type(med_file_t) :: file
         character(len=:), allocatable :: path        !< final name
         character(len=:), allocatable :: temp_path   !< written meanwhile
+        logical :: to_device = .false.               !< path is a device: copied at commit
         type(string_t), allocatable :: profile_names(:)
         type(int_list_t), allocatable :: profile_nodes(:)
     end type med_output_t
@@ -66,24 +68,41 @@ module result_med
 
 contains
 
-    !> Opens `path` for writing through `path.<pid>.partial`.
+    !> Opens `path` for writing through `path.<pid>.partial`; a device (/dev/stdout, a FIFO,
+    !> /dev/full) through a scratch file (atomic_file's scratch_path) copied to it at commit,
+    !> since HDF5 cannot write a device itself.
     !>  append : in, add to the existing file (written earlier in this run) instead of
     !>           replacing it
-    !>  st     : out, STATUS_IO_ERROR (output folder missing or not writable, file to add to
-    !>           missing or unreadable); plug-in load errors
+    !>  st     : out, STATUS_IO_ERROR (output folder missing or not writable, a folder, file
+    !>           to add to missing or unreadable, a device to add to); plug-in load errors
     subroutine med_output_open(out, path, append, st)
         type(med_output_t), intent(out) :: out
         character(len=*), intent(in) :: path
         logical, intent(in) :: append
         type(status_t), intent(out) :: st
         out%path = path
-        out%temp_path = temporary_path(path)
         allocate (out%profile_names(0), out%profile_nodes(0))
+        select case (path_kind(path))
+        case (PATH_FOLDER)
+            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // path // ': it is a folder ' &
+                // '(a file name is needed here)')
+            return
+        case (PATH_DEVICE)
+            if (append) then
+                call set_error(st, STATUS_IO_ERROR, 'cannot add to ' // path // ': a MED ' // &
+                    'file written to a device cannot be added to by a later IMPR_RESU (bind ' &
+                    // 'the unit to a file)')
+                return
+            end if
+            out%to_device = .true.
+            out%temp_path = scratch_path(path)
+        case default
+            out%temp_path = temporary_path(path)
+        end select
         call track_temporary(out%temp_path)
         if (append) then
-            call copy_file(path, out%temp_path, st)
-            if (st%failed()) return
-            call med_open(out%file, out%temp_path, MED_APPEND, st)
+            call copy_file(path, out%temp_path, path, st)
+            if (st%ok()) call med_open(out%file, out%temp_path, MED_APPEND, st)
         else
             call med_open(out%file, out%temp_path, MED_CREATE, st)
         end if
@@ -95,18 +114,21 @@ contains
         out%file%path = path   ! messages name the file the user asked for
     end subroutine med_output_open
 
-    !> Closes the file and renames it to its final name.
-    !>  st : out, STATUS_IO_ERROR when MED cannot finish it or the rename fails
+    !> Closes the file and gives it its final name (renamed; copied to a device).
+    !>  st : out, STATUS_IO_ERROR when MED cannot finish it, or the rename or copy fails
+    !>       ("cannot write PATH: <reason>"); nothing is left under a temporary name
     subroutine med_output_commit(out, st)
         type(med_output_t), intent(inout) :: out
         type(status_t), intent(out) :: st
         call med_close(out%file, st)
-        if (st%failed()) then
-            call untrack_temporary(out%temp_path)
-            call delete_file(out%temp_path)
+        if (st%ok() .and. out%to_device) then
+            call copy_file(out%temp_path, out%path, out%path, st)
+        else if (st%ok()) then
+            call publish_file(out%temp_path, out%path, st)
             return
         end if
-        call publish_file(out%temp_path, out%path, st)
+        call untrack_temporary(out%temp_path)
+        call delete_file(out%temp_path)
     end subroutine med_output_commit
 
     !> Closes and deletes the temporary file: the final name is left untouched.
@@ -508,36 +530,5 @@ contains
         call move_alloc(names, out%profile_names)
         call move_alloc(lists, out%profile_nodes)
     end subroutine node_profile
-
-    ! Copies file `from` to `to` (binary).
-    subroutine copy_file(from, to, st)
-        character(len=*), intent(in) :: from, to
-        type(status_t), intent(out) :: st
-        character(len=:), allocatable :: bytes
-        integer :: in, out, ios
-        integer(i8) :: size_bytes
-        character(len=256) :: msg
-        open (newunit=in, file=from, access='stream', form='unformatted', status='old', &
-              action='read', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call set_error(st, STATUS_IO_ERROR, 'cannot reopen ' // from // ' to add to it: ' &
-                // trim(msg))
-            return
-        end if
-        inquire (unit=in, size=size_bytes)
-        allocate (character(len=max(size_bytes, 0_i8)) :: bytes)
-        if (size_bytes > 0) read (in, iostat=ios, iomsg=msg) bytes
-        close (in)
-        if (ios /= 0) then
-            call set_error(st, STATUS_IO_ERROR, 'cannot read ' // from // ': ' // trim(msg))
-            return
-        end if
-        open (newunit=out, file=to, access='stream', form='unformatted', status='replace', &
-              action='write', iostat=ios, iomsg=msg)
-        if (ios == 0) write (out, iostat=ios, iomsg=msg) bytes
-        if (ios == 0) close (out, iostat=ios)
-        if (ios /= 0) call set_error(st, STATUS_IO_ERROR, 'cannot write ' // to // ': ' // &
-            trim(msg))
-    end subroutine copy_file
 
 end module result_med

@@ -87,13 +87,19 @@ module low_rank_update
 contains
 
     !> Allocates n blocks, all empty.
-    subroutine block_set_init(set, n)
+    !>  width : in, optional, the largest block (default MAX_BLOCK; more when linear
+    !>          relations put a spring's node on the equations of others: assembly_relations)
+    subroutine block_set_init(set, n, width)
         type(block_set_t), intent(out) :: set
         integer(i4), intent(in) :: n
+        integer(i4), intent(in), optional :: width
+        integer(i4) :: w
+        w = MAX_BLOCK
+        if (present(width)) w = max(width, MAX_BLOCK)
         set%n_blocks = n
         allocate (set%sizes(n), source=0_i4)
-        allocate (set%eqs(MAX_BLOCK, n), source=0_i4)
-        allocate (set%k(MAX_BLOCK, MAX_BLOCK, n), source=0.0_dp)
+        allocate (set%eqs(w, n), source=0_i4)
+        allocate (set%k(w, w, n), source=0.0_dp)
     end subroutine block_set_init
 
     !> y = (A + sum_k signs(k) K_active(k)) x.

@@ -3,7 +3,7 @@
 
 usage: fuzz.py PARASOL [--compare PARASOL2] [--seed S] [--cases N] [--first K] [--jobs J]
                [--timeout T] [--work DIR] [--seeds NAMES] [--keep N] [--report FILE]
-               [--show K] [--quiet]
+               [--show K] [--quiet] [--aster-med DIR]
 
 Makes N cases from the seed inputs below, each from (S, case number) alone: one seed input
 (the SSNL130 decks on their .mail, Gmsh 2.2, Gmsh 4.1 and MED meshes, a Code_Aster export
@@ -23,10 +23,17 @@ in its own folder with a time limit and a 4 GB address-space limit and is classi
              error, backtrace, "Error allocating", double free, ...)
   hang       still running at the time limit
   unlocated  exit 1 without a located error line, or exit 0/2 with an error line
+  unnamed    (a Code_Aster MED mesh read alone, --aster-med) exit 1 without exactly one
+             line on stderr naming the mesh file
   nan        NaN or Inf in an output (the .mess and .resu, result files, stdout; deck echo
              and quoted input left out)
   temporary  a temporary file (*.partial) left behind
   mismatch   (--compare) the second program (e.g. the Release build) exits differently
+
+--aster-med DIR adds Code_Aster's own MED meshes (every *.mmed below DIR) as seeds read by a
+deck that does nothing else (issue 23); --seeds med keeps the seeds with a MED mesh only
+(the damaged-MED campaign of doc/stability.md, "Faults"; skipped with exit 77 when DIR is
+missing).
 
 --first K starts at case K (to rerun one case: --first K --cases 1 --keep 1 --show 1; the
 case folder stays under WORK/cases/K with the command in `command.txt`). Exit status 0 when
@@ -76,17 +83,21 @@ class Seed:
     """One input set: files copied into the case folder (role -> file name), the command
     arguments, the files that may be mutated (role -> mutation family) and a weight."""
 
-    def __init__(self, name, files, args, targets, weight=1.0):
+    def __init__(self, name, files, args, targets, weight=1.0, names=None):
         self.name, self.files, self.args = name, files, args
         self.targets, self.weight = targets, weight
+        # a file every error of the case must name (a deck that only reads it)
+        self.names = names
 
 
 def run_tool(argv, **kw):
     return subprocess.run(argv, check=True, capture_output=True, **kw)
 
 
-def make_seeds(parasol, work, wanted):
-    """Writes the seed inputs into WORK/seeds and returns the Seed list."""
+def make_seeds(parasol, work, wanted, aster_med=None):
+    """Writes the seed inputs into WORK/seeds and returns the Seed list. aster_med: a folder
+    whose Code_Aster MED meshes (*.mmed, searched below it) become seeds read by a deck that
+    does nothing else (issue 23: a damaged MED file is one error line naming it)."""
     seeds_dir = os.path.join(work, "seeds")
     os.makedirs(seeds_dir, exist_ok=True)
     py = sys.executable
@@ -171,7 +182,8 @@ def make_seeds(parasol, work, wanted):
                                  "case.mail": os.path.join(verif, name + ".mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # The plane family on its five cell types (an export file binding five meshes, curved
-    # quadratic cells) and the discrete elements with rotations and full matrices (issue 21).
+    # quadratic cells), their thermal strains (AFFE_VARC) and the discrete elements with
+    # rotations and full matrices (issue 21).
     plane = os.path.join(SOURCE, "tests", "plane")
     files = {"case.export": os.path.join(plane, "patch_plane.export"),
              "patch_plane.comm": os.path.join(plane, "patch_plane.comm")}
@@ -181,6 +193,13 @@ def make_seeds(parasol, work, wanted):
                       {"case.export": "export", "patch_plane.comm": "deck",
                        "patch_tria6.mail": "mail", "patch_quad8.mail": "mail",
                        "patch_quad9.mail": "mail"}, 1.0))
+    files = {"case.export": os.path.join(plane, "thermal_plane.export"),
+             "thermal_plane.comm": os.path.join(plane, "thermal_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("plane_thermal", files, [],
+                      {"case.export": "export", "thermal_plane.comm": "deck",
+                       "thermal_tria6.mail": "mail", "thermal_quad8.mail": "mail"}, 0.6))
     discrete = os.path.join(SOURCE, "tests", "discrete")
     seeds.append(Seed("discrete", {"case.export": os.path.join(discrete, "discrete.export"),
                                    "discrete.comm": os.path.join(discrete, "discrete.comm"),
@@ -205,6 +224,25 @@ def make_seeds(parasol, work, wanted):
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE.
+    for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
+                       ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
+                       ("ssnl130a_solide", meshes[("a", "aster")])):
+        seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
+                                 "case.mail": mesh}, [],
+                          dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # The deck language's Python: every construct, checked by assert (tests/decks/good).
+    seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                           "python_language.comm")},
+                      [], comm_targets, 1.0))
+    # Code_Aster's CA.TestCase: every assert, passing and failing.
+    seeds.append(Seed("testcase", {"case.comm": os.path.join(SOURCE, "tests", "decks", "python",
+                                                             "testcase_asserts.comm")},
+                      [], comm_targets, 0.4))
+    # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
+    seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                            "session_commands.comm")},
+                      [], comm_targets, 0.5))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
@@ -223,6 +261,14 @@ def make_seeds(parasol, work, wanted):
     # Functions by points: CALC_FONCTION's operations, TEST_FONCTION, IMPR_FONCTION.
     seeds.append(Seed("functions", {"case.comm": os.path.join(tables, "functions.comm")},
                       [], comm_targets, 1.0))
+    # POST_RELEVE_T on formula fields of the annulus, and on SSNL130's reactions.
+    seeds.append(Seed("post_releve", {"case.comm": os.path.join(tables, "post_releve.comm"),
+                                      "case.mail": os.path.join(tables, "annulus.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 1.0))
+    seeds.append(Seed("post_releve_ssnl130",
+                      {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
+                       "case.mail": meshes[("a", "aster")]}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
@@ -238,8 +284,27 @@ def make_seeds(parasol, work, wanted):
                                      "case.mgib": os.path.join(mesh_commands, "strip.mgib")},
                       ["--unit", "19=case.mgib"], dict(comm_targets, **{"case.mgib": "gibi"}),
                       0.7))
+    if aster_med:
+        read_deck = os.path.join(seeds_dir, "read_med.comm")
+        with open(read_deck, "w", encoding="utf-8") as f:
+            f.write("DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\nFIN()\n")
+        found = []
+        for root, _, names in os.walk(aster_med):
+            found += [os.path.join(root, n) for n in names if n.endswith(".mmed")]
+        stems = set()
+        for path in sorted(found):
+            stem = os.path.splitext(os.path.basename(path))[0]
+            if stem in stems:
+                continue
+            stems.add(stem)
+            seeds.append(Seed("aster_med_" + stem, {"case.comm": read_deck, "case.med": path},
+                              [], {"case.med": "med"}, 0.5, names="case.med"))
+        if not stems:
+            print("fuzz: no *.mmed under %s" % aster_med)
     if wanted:
-        seeds = [s for s in seeds if s.name in wanted]
+        # "med": every seed with a MED mesh
+        seeds = [s for s in seeds if s.name in wanted or
+                 ("med" in wanted and "case.med" in s.files)]
     return seeds
 
 
@@ -462,8 +527,9 @@ def med_not_finite(path):
     return bad
 
 
-def classify(result, folder):
-    """The class of a run and its reasons."""
+def classify(result, folder, names=None):
+    """The class of a run and its reasons. names: a file the error of exit 1 must name, on
+    the one line of stderr (class `unnamed` otherwise)."""
     err, status = result["stderr"], result["status"]
     reasons = []
     if status is None:
@@ -478,6 +544,10 @@ def classify(result, folder):
         return "unlocated", ["exit 1, stderr: " + (err.strip()[:300] or "(empty)")]
     if status in (0, 2) and ERROR_LINE.search(err):
         return "unlocated", ["exit %d with an error on stderr: %s" % (status, err[:300])]
+    if names and status == 1:
+        lines = [line for line in err.splitlines() if line.strip()]
+        if len(lines) != 1 or names not in lines[0]:
+            return "unnamed", ["exit 1 without one line naming %s: %s" % (names, err[:300])]
     if nan:
         return "nan", nan[:5]
     if temps:
@@ -500,7 +570,7 @@ def do_case(ctx, index):
     main = "case.export" if ("case.export" in seed.files or via_export) else main[0]
     args = seed.args + [main]
     result = run_one(ctx["parasol"], folder, args, ctx["timeout"])
-    kind, reasons = classify(result, folder)
+    kind, reasons = classify(result, folder, seed.names)
     record = {"case": index, "seed_input": seed.name + (" (export)" if via_export else ""),
               "file": role, "mutations": what,
               "class": kind, "reasons": reasons, "status": result["status"],
@@ -508,7 +578,7 @@ def do_case(ctx, index):
     if ctx["compare"]:
         other = run_one(ctx["compare"], folder, args, ctx["timeout"] * 2)
         record["status_compare"] = other["status"]
-        other_kind, _ = classify(other, folder)
+        other_kind, _ = classify(other, folder, seed.names)
         record["class_compare"] = other_kind
         if kind == "clean" and other["status"] != result["status"]:
             record["class"] = "mismatch"
@@ -540,13 +610,18 @@ def main(argv=None):
     parser.add_argument("--report", help="JSON report file")
     parser.add_argument("--show", type=int, default=10, help="cases printed per class")
     parser.add_argument("--quiet", action="store_true")
+    parser.add_argument("--aster-med", help="a folder of Code_Aster MED meshes (*.mmed): "
+                        "seeds read by a deck that only reads them (--seeds med: MED only)")
     opts = parser.parse_args(argv)
     parasol = os.path.abspath(opts.parasol)
     compare = os.path.abspath(opts.compare) if opts.compare else None
     work = os.path.abspath(opts.work)
     os.makedirs(os.path.join(work, "cases"), exist_ok=True)
     wanted = [w for w in opts.seeds.split(",") if w]
-    seeds = make_seeds(parasol, work, wanted)
+    if opts.aster_med and not os.path.isdir(opts.aster_med):
+        print("fuzz: SKIPPED: no folder %s for --aster-med" % opts.aster_med)
+        return 77
+    seeds = make_seeds(parasol, work, wanted, opts.aster_med)
     words, texts = vocabulary(seeds)
     ctx = {"work": work, "seeds": seeds, "words": words, "texts": texts, "seed": opts.seed,
            "parasol": parasol, "compare": compare, "timeout": opts.timeout,
@@ -573,9 +648,12 @@ def main(argv=None):
     for r in records:
         by_seed.setdefault(r["seed_input"], 0)
         by_seed[r["seed_input"]] += 1
+    # cases where the MED library died in its own process and parasol reported it (issue 23)
+    contained = sum(1 for r in records if "the MED library died" in r["stderr"])
     summary = {"parasol": parasol, "compare": compare, "seed": opts.seed,
                "first": opts.first, "cases": len(records), "seconds": round(elapsed, 1),
                "classes": counts, "exit_statuses": statuses, "seed_inputs": by_seed,
+               "med_library_died": contained,
                "not_clean": [r for r in records if r["class"] != "clean"]}
     if opts.report:
         with open(opts.report, "w") as f:
@@ -584,6 +662,9 @@ def main(argv=None):
         opts.seed, opts.first, opts.first + len(records) - 1,
         ", ".join("%s %d" % kv for kv in sorted(counts.items())),
         ", ".join("%s: %d" % kv for kv in sorted(statuses.items())), elapsed))
+    if contained:
+        print("fuzz: in %d case(s) the MED library died in its own process, reported as "
+              "one line" % contained)
     shown = {}
     for r in summary["not_clean"]:
         shown[r["class"]] = shown.get(r["class"], 0) + 1

@@ -12,12 +12,20 @@ Meshes (node names N1.., cell names M1.., in the order written):
                    N7 (2/3,2/3), N8 (1/3,2/3). GROUP_MA PATCH; GROUP_NO BORD (N1-N4),
                    INTER (N5-N8).
   patch_dkt.mail   the same 8 nodes, 10 TRIA3 (each patch quadrilateral cut in two).
-  patch_plan.mail  the QUAD4 patch as a 2D mesh (COOR_2D) for D_PLAN / C_PLAN.
+  patch_plan.mail  the QUAD4 patch as a 2D mesh (COOR_2D) for D_PLAN / C_PLAN, with the
+                   one-node groups PN1 .. PN4 of its corners.
   plate_dkq_N.mail square plate a = 1 in z = 0, N x N QUAD4 (N = 4, 8, 16, 32);
   plate_dkt_N.mail the same grid, each square cut into 2 TRIA3 with the diagonal pointing
                    to the plate centre (N = 8, 16, 32), so the mesh keeps both symmetries.
                    Plate groups: GROUP_MA PLAQUE; GROUP_NO BORD (the 4N edge nodes),
                    CENTRE (a/2, a/2), PT_A (0,0), PT_B (a,0).
+  slanted_block.mail 2D trapezoid (0,0) (2,0) (1.5,1) (0,1), its right side slanted: 2 x 2
+                   QUAD4 (GROUP_MA BLOC) with the interior node moved to (0.9, 0.45), and
+                   its sides as SEG2 running counter-clockwise (outward normals): BAS,
+                   DROITE (the slanted one), HAUT, GAUCHE; GROUP_NO CENTRE (the interior
+                   node), MDROITE (the middle of DROITE), COIN_A (0,0), COIN_B (2,0).
+  list_inst_cutting.mail three 2D nodes N0 (0,0) N1 (1,0) N2 (2,0), SEG2 LIN (N0 N1) in
+                   GLIN and CHOC (N1 N2) in GCHOC; GROUP_NO SOL (N0 N2), NOEUD (N1).
   cantilever_NXxNY.mail plane-strain cantilever L = 10 x h = 1 (2D), NX x NY QUAD4
                    (20x2, 40x4, 80x8, 160x16): GROUP_MA POUTRE (QUAD4), EXTREM (the NY
                    SEG2 of the tip edge x = L); GROUP_NO ENCAST (x = 0), PTIP (L, h/2),
@@ -69,6 +77,48 @@ def patch(kind, dim):
             mesh.cell("TRIA3", (q[0], q[1], q[2]), "PATCH")
             mesh.cell("TRIA3", (q[0], q[2], q[3]), "PATCH")
     mesh.node_groups = {"BORD": [1, 2, 3, 4], "INTER": [5, 6, 7, 8]}
+    if dim == 2:
+        for k in range(1, 5):
+            mesh.node_groups[f"PN{k}"] = [k]
+    return mesh
+
+
+def slanted_block():
+    mesh = Mesh(2, "Trapezoid with a slanted side, 2 x 2 QUAD4 (FACE_IMPO DNOR)")
+    corners = [(0, 0), (2, 0), (Fraction(3, 2), 1), (0, 1)]
+
+    def point(s, t):
+        return tuple((1 - s) * (1 - t) * a + s * (1 - t) * b + s * t * c + (1 - s) * t * d
+                     for a, b, c, d in zip(*corners))
+    grid = {}
+    for j in range(3):
+        for i in range(3):
+            xy = point(Fraction(i, 2), Fraction(j, 2))
+            if (i, j) == (1, 1):
+                xy = (Fraction(9, 10), Fraction(9, 20))
+            grid[i, j] = mesh.node(*xy)
+    for j in range(2):
+        for i in range(2):
+            mesh.cell("QUAD4", (grid[i, j], grid[i + 1, j], grid[i + 1, j + 1],
+                                grid[i, j + 1]), "BLOC")
+    sides = {"BAS": [(0, 0), (1, 0), (2, 0)], "DROITE": [(2, 0), (2, 1), (2, 2)],
+             "HAUT": [(2, 2), (1, 2), (0, 2)], "GAUCHE": [(0, 2), (0, 1), (0, 0)]}
+    for name, path in sides.items():
+        for k in range(2):
+            mesh.cell("SEG2", (grid[path[k]], grid[path[k + 1]]), name)
+    mesh.node_groups = {"CENTRE": [grid[1, 1]], "MDROITE": [grid[2, 1]],
+                        "COIN_A": [grid[0, 0]], "COIN_B": [grid[2, 0]]}
+    return mesh
+
+
+def pulled_node():
+    mesh = Mesh(2, "A node held by a spring and pulled away from an obstacle "
+                "(list_inst_cutting.comm)")
+    for x in (0, 1, 2):
+        mesh.node(x, 0)
+    mesh.cell("SEG2", (1, 2), "GLIN")
+    mesh.cell("SEG2", (2, 3), "GCHOC")
+    mesh.node_groups = {"SOL": [1, 3], "NOEUD": [2]}
     return mesh
 
 
@@ -150,6 +200,8 @@ def all_meshes():
         meshes[f"plate_dkt_{n}.mail"] = plate(n, "TRIA3")
     for nx, ny in CANTILEVERS:
         meshes[f"cantilever_{nx}x{ny}.mail"] = cantilever(nx, ny)
+    meshes["slanted_block.mail"] = slanted_block()
+    meshes["list_inst_cutting.mail"] = pulled_node()
     return {name: to_aster(mesh) for name, mesh in meshes.items()}
 
 
