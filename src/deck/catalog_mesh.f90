@@ -308,7 +308,8 @@ contains
         type(catalog_t), intent(inout) :: c
         call c%command('CREA_MAILLAGE', 'maillage')
         call c%key('MAILLAGE', 'maillage', req=.true.)
-        call c%rule(RULE_UN_PARMI, 'CREA_MAILLE CREA_POI1 LINE_QUAD MODI_MAILLE QUAD_LINE')
+        call c%rule(RULE_UN_PARMI, 'CREA_MAILLE CREA_POI1 LINE_QUAD MODI_MAILLE QUAD_LINE ' // &
+                    'RESTREINT')
         call c%fact('CREA_POI1', max=MANY)
         call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_MA GROUP_NO NOEUD')
         call c%key('NOM_GROUP_MA', 'TXM', max=MANY)
@@ -341,6 +342,12 @@ contains
         call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%end_fact()
+        call c%fact('RESTREINT')
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('TOUT_GROUP_MA', 'TXM', def='NON', into=OUI_NON)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('TOUT_GROUP_NO', 'TXM', def='NON', into=OUI_NON)
         call c%end_fact()
         call c%key('TITRE', 'TXM')
         call c%key('INFO', 'I', def='1', into='1 2')

@@ -68,6 +68,7 @@ OPERATIONS = [
     ("crea_maille", PLATE, "M2 = CREA_MAILLAGE(MAILLAGE=MA, CREA_MAILLE=_F(NOM='C', GROUP_MA='PLAQUE'))"),
     ("quad_tria3", PLATE, "M2 = CREA_MAILLAGE(MAILLAGE=MA, MODI_MAILLE=_F(OPTION='QUAD_TRIA3', TOUT='OUI'))"),
     ("line_quad", PLATE, "M2 = CREA_MAILLAGE(MAILLAGE=MA, LINE_QUAD=_F(TOUT='OUI'))"),
+    ("restreint", PLATE, "M2 = CREA_MAILLAGE(MAILLAGE=MA, RESTREINT=_F(GROUP_MA='PLAQUE', TOUT_GROUP_MA='OUI', TOUT_GROUP_NO='OUI'))"),
 ]
 # operations timed against a baseline that already made what they need (key -> its body)
 BASES = {
