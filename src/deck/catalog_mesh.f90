@@ -59,7 +59,7 @@ contains
         call c%key('PARTITIONNEUR', 'TXM', def='SANS', into='SANS PTSCOTCH', noop=.true.)
         call c%end_bloc()
         call c%bloc(key='FORMAT', equals='IDEAS')
-        call c%key('CREA_GROUP_COUL', 'TXM', def='NON', into=OUI_NON, noop=.true.)
+        call c%key('CREA_GROUP_COUL', 'TXM', def='NON', into=OUI_NON)
         call c%end_bloc()
         call c%key('INFO', 'I', def='1', into='0 1 2')
     end subroutine describe_lire_maillage

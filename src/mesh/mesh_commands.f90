@@ -24,8 +24,9 @@ module mesh_commands
 
 contains
 
-    !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH'|'GIBI', UNITE=20, NOM_MED): reads the mesh
-    !> file (GIBI as PRE_GIBI converts it; FORMAT='IDEAS' is refused at FORMAT), the
+    !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH'|'GIBI'|'IDEAS', UNITE=20, NOM_MED,
+    !> CREA_GROUP_COUL): reads the mesh file (GIBI as PRE_GIBI converts it, IDEAS as
+    !> PRE_IDEAS does: mesh_ideas_reader), the
     !> parallel and bookkeeping keywords (PARTITIONNEUR, INFO_MED, VERI_MAIL) having no effect;
     !> bound to UNITE (ctx%unit_path; MED is the default FORMAT, as in Code_Aster) and writes
     !> its summary (nodes, cells per type, groups with sizes, bounding box) to the .mess.
@@ -44,7 +45,7 @@ contains
         class(concept_t), allocatable, intent(out) :: result
         type(status_t), intent(out) :: st
         type(mesh_concept_t), allocatable :: mc
-        character(len=:), allocatable :: format, path, mesh_name
+        character(len=:), allocatable :: format, path, mesh_name, colours
         character(len=100), allocatable :: lines(:)
         type(string_t), allocatable :: notes(:)
         integer(i4) :: unit, k
@@ -52,10 +53,10 @@ contains
         call cmd%get_text('FORMAT', format, st)
         if (st%failed()) return
         if (format /= 'MED' .and. format /= 'ASTER' .and. format /= 'GMSH' .and. &
-            format /= 'GIBI') then
+            format /= 'GIBI' .and. format /= 'IDEAS') then
             call cmd%error_at('FORMAT', 'parasol does not read the ' // format // &
-                ' format (it reads MED, ASTER, GMSH and GIBI meshes: convert the mesh to ' // &
-                'one of them)', st, code=STATUS_NOT_IMPLEMENTED)
+                ' format (it reads MED, ASTER, GMSH, GIBI and IDEAS meshes: convert the ' // &
+                'mesh to one of them)', st, code=STATUS_NOT_IMPLEMENTED)
             return
         end if
         call cmd%get_int('UNITE', unit, st)
@@ -81,6 +82,12 @@ contains
                 call locate_med_error(cmd, st)
                 return
             end if
+        else if (format == 'IDEAS') then
+            call cmd%get_text('CREA_GROUP_COUL', colours, st)
+            if (st%failed()) return
+            call read_mesh(path, mc%mesh, st, format, notes=notes, &
+                           colour_groups=colours == 'OUI')
+            if (st%failed()) return
         else
             call read_mesh(path, mc%mesh, st, format, notes=notes)
             if (st%failed()) return

@@ -9,7 +9,7 @@ module mesh_gibi_writer
     implicit none
     private
 
-    public :: write_aster
+    public :: write_aster, join_lines
 
     !> The cells of pile 1 as stable_order sorts them (identical_cells).
     type, extends(item_order_t) :: cell_order_t
@@ -148,7 +148,7 @@ contains
         end do
         here = g%last_line
         call put(' FIN')
-        text = join(out(1:n_out))
+        text = join_lines(out(1:n_out))
         origin = origin(1:n_out)
     contains
         subroutine put(s)
@@ -263,7 +263,8 @@ contains
         text = name
     end function pad8
 
-    function join(lines) result(text)
+    !> The lines, each ended by a newline, as one text.
+    function join_lines(lines) result(text)
         type(string_t), intent(in) :: lines(:)
         character(len=:), allocatable :: text
         integer(i8) :: n
@@ -280,6 +281,6 @@ contains
             text(p:p) = achar(10)
             p = p + 1
         end do
-    end function join
+    end function join_lines
 
 end module mesh_gibi_writer

@@ -295,6 +295,11 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                                      "case.mgib": os.path.join(mesh_commands, "strip.mgib")},
                       ["--unit", "19=case.mgib"], dict(comm_targets, **{"case.mgib": "gibi"}),
                       0.7))
+    # I-DEAS universal files (LIRE_MAILLAGE FORMAT='IDEAS'): the file mutated as text.
+    seeds.append(Seed("ideas_strip", {"case.comm": os.path.join(mesh_commands, "ideas_strip.comm"),
+                                      "case.unv": os.path.join(mesh_commands, "strip.unv")},
+                      ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "ideas"}),
+                      0.7))
     if aster_med:
         read_deck = os.path.join(seeds_dir, "read_med.comm")
         with open(read_deck, "w", encoding="utf-8") as f:
