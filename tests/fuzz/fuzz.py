@@ -295,6 +295,11 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                                      "case.mgib": os.path.join(mesh_commands, "strip.mgib")},
                       ["--unit", "19=case.mgib"], dict(comm_targets, **{"case.mgib": "gibi"}),
                       0.7))
+    # Gmsh's 1.0 format ($NOD, $ELM): the file mutated as text.
+    seeds.append(Seed("gmsh1_strip", {"case.comm": os.path.join(mesh_commands, "gmsh1_strip.comm"),
+                                      "case.msh": os.path.join(mesh_commands, "strip1.msh")},
+                      ["--unit", "19=case.msh"], dict(comm_targets, **{"case.msh": "gmsh1"}),
+                      0.5))
     # I-DEAS universal files (LIRE_MAILLAGE FORMAT='IDEAS'): the file mutated as text.
     seeds.append(Seed("ideas_strip", {"case.comm": os.path.join(mesh_commands, "ideas_strip.comm"),
                                       "case.unv": os.path.join(mesh_commands, "strip.unv")},
