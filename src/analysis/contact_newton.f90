@@ -127,6 +127,7 @@ contains
         type(elimination_t) :: elim
         integer(i4) :: k, step, n_eq
         real(dp), allocatable :: targets(:), forc(:)
+        character(len=:), allocatable :: text
         integer(i4), allocatable :: levels(:)
         real(dp) :: t_prev
         type(step_start_t) :: saved
@@ -218,6 +219,8 @@ contains
             t_prev = targets(k)
             k = k + 1
         end do
+        text = state%solver%iteration_summary()       ! GCPC, PETSC: their iterations
+        if (len(text) > 0) call log_add(log, text)
     end subroutine stat_non_line
 
     !> A step to targets(k) from t_prev failed with status st. When the list of instants
