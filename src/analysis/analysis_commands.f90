@@ -27,6 +27,7 @@ module analysis_commands
     use function_concept, only: param_binding_t
     use direct_solver, only: solver_options_t
     use solver_factory, only: DEFAULT_METHOD, default_renum, renum_allowed
+    use residual_line_search, only: line_search_options_t
     use krylov_solver, only: pre_cond_allowed, algorithm_allowed, KRYLOV_DEFAULT_RESI_RELA
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
@@ -465,6 +466,10 @@ contains
             if (st%ok()) call occ%get_int('REAC_INCR', options%reac_incr, st)
             if (st%failed()) return
         end if
+        if (cmd%count('RECH_LINEAIRE') > 0) then
+            call read_line_search(cmd%occurrence('RECH_LINEAIRE', 1), options%line, st)
+            if (st%failed()) return
+        end if
         if (cmd%count('CONVERGENCE') > 0) then
             ! Code_Aster (U4.51.03, nmcore): the criteria given are all tested; RESI_GLOB_RELA
             ! at its default 1e-6 only when neither is given.
@@ -600,5 +605,38 @@ contains
             end if
         end if
     end subroutine read_iterative
+
+    !> RECH_LINEAIRE (U4.51.03; residual_line_search): METHODE CORDE or MIXTE (PILOTAGE goes
+    !> with PILOTAGE, which parasol does not build), RESI_LINE_RELA, ITER_LINE_MAXI (0: no
+    !> search), RHO_MIN < RHO_MAX, RHO_EXCL.
+    !>  st : out, located at METHODE (PILOTAGE) or RHO_MAX (not above RHO_MIN)
+    subroutine read_line_search(occ, line, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(line_search_options_t), intent(inout) :: line
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: text
+        call occ%get_text('METHODE', text, st)
+        if (st%failed()) return
+        if (text == 'PILOTAGE') then
+            call occ%error_at('METHODE', 'the line search PILOTAGE goes with STAT_NON_LINE/' // &
+                'PILOTAGE (continuation), which parasol does not build: use CORDE or MIXTE', &
+                st, code=STATUS_NOT_IMPLEMENTED)
+            return
+        end if
+        line%mixte = text == 'MIXTE'
+        call occ%get_real('RESI_LINE_RELA', line%resi_line_rela, st)
+        if (st%ok()) call occ%get_int('ITER_LINE_MAXI', line%iter_line_maxi, st)
+        if (st%ok()) call occ%get_real('RHO_MIN', line%rho_min, st)
+        if (st%ok()) call occ%get_real('RHO_MAX', line%rho_max, st)
+        if (st%ok()) call occ%get_real('RHO_EXCL', line%rho_excl, st)
+        if (st%failed()) return
+        if (.not. line%rho_max > line%rho_min) then
+            call occ%error_at('RHO_MAX', 'must be above RHO_MIN (' // real_e13(line%rho_min) // &
+                '): the steps of the line search lie in [RHO_MIN, RHO_MAX]', st, &
+                code=STATUS_MODEL_ERROR)
+            return
+        end if
+        line%enabled = line%iter_line_maxi > 0
+    end subroutine read_line_search
 
 end module analysis_commands

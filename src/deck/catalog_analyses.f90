@@ -61,6 +61,15 @@ contains
         call c%key('REAC_INCR', 'I', def='1', vmin=0.0_dp)     ! Code_Aster default, val_min
         call c%key('REAC_ITER', 'I', def='0', vmin=0.0_dp)     ! Code_Aster default, val_min
         call c%end_fact()
+        ! Code_Aster's C_RECH_LINEAIRE (c_rech_lineaire.py): residual_line_search
+        call c%fact('RECH_LINEAIRE')
+        call c%key('METHODE', 'TXM', def='CORDE', into='CORDE MIXTE PILOTAGE')
+        call c%key('RESI_LINE_RELA', 'R', def='1.0E-1', vmin=0.0_dp)
+        call c%key('ITER_LINE_MAXI', 'I', def='3', vmin=0.0_dp, vmax=999.0_dp)
+        call c%key('RHO_MIN', 'R', def='1.0E-2', vmin=0.0_dp)
+        call c%key('RHO_MAX', 'R', def='1.0E1', vmin=0.0_dp)
+        call c%key('RHO_EXCL', 'R', def='0.9E-2', vmin=0.0_dp)
+        call c%end_fact()
         call c%fact('CONVERGENCE')
         call c%key('RESI_GLOB_RELA', 'R', vmin=0.0_dp)
         call c%key('RESI_GLOB_MAXI', 'R', vmin=0.0_dp)
