@@ -8,7 +8,6 @@
 !>                                one cell per line: name node... (Code_Aster's node order)
 !>   GROUP_NO | GROUP_MA          name (`NOM=NAME` on the header line, or first token of the
 !>                                next line), then member names over any number of lines
-!>                                (the name's own line included: `P1 P1`)
 !> `%` starts a comment; blanks and commas separate tokens; other `KEY=VALUE` tokens on a
 !> header line (NBOBJ=, AUTEUR=, ...) are accepted and ignored. Names must be defined
 !> before they are used (nodes before cells, cells before groups), as every mesher does.
@@ -26,7 +25,7 @@ module mesh_aster_reader
     implicit none
     private
 
-    public :: read_aster_mesh
+    public :: read_aster_mesh, read_aster_text
 
     !> Cell types that Code_Aster knows and parasol refuses by name.
     character(len=7), parameter :: OTHER_CELL_TYPES(12) = ['SEG4   ', 'TRIA7  ', &
@@ -49,12 +48,32 @@ contains
         type(mesh_t), intent(out) :: mesh
         type(status_t), intent(out) :: st
         type(text_lexer_t) :: lex
+        call open_lexer(lex, path, st)
+        if (st%failed()) return
+        call read_lexer(lex, mesh, st)
+    end subroutine read_aster_mesh
+
+    !> Reads .mail text held in memory (what PRE_GIBI makes of a GIBI file) into `mesh`.
+    !>  name : in, what messages call the text (`name:LINE: ...`) and mesh%file
+    subroutine read_aster_text(text, name, mesh, st)
+        character(len=*), intent(in) :: text, name
+        type(mesh_t), intent(out) :: mesh
+        type(status_t), intent(out) :: st
+        type(text_lexer_t) :: lex
+        lex%text = text
+        lex%file = name
+        call read_lexer(lex, mesh, st)
+    end subroutine read_aster_text
+
+    ! The sub-files of `lex` to FIN, then the mesh checked (mesh_finish).
+    subroutine read_lexer(lex, mesh, st)
+        type(text_lexer_t), intent(inout) :: lex
+        type(mesh_t), intent(out) :: mesh
+        type(status_t), intent(inout) :: st
         integer(i4) :: first, last, dim
         logical :: found_fin
         character(len=:), allocatable :: word
-        call open_lexer(lex, path, st)
-        if (st%failed()) return
-        call mesh_init(mesh, 3_i4, path)
+        call mesh_init(mesh, 3_i4, lex%file)
         dim = 0
         found_fin = .false.
         do while (.not. at_end(lex))
@@ -73,12 +92,12 @@ contains
         end do
         if (.not. found_fin) then
             call set_error(st, STATUS_MESH_ERROR, 'no FIN at the end of the mesh file ' // &
-                '(the file is truncated?)', file=path, line=lex%line)
+                '(the file is truncated?)', file=lex%file, line=lex%line)
             return
         end if
         mesh%dim = max(dim, 2_i4)
         call mesh_finish(mesh, lex%line, st)
-    end subroutine read_aster_mesh
+    end subroutine read_lexer
 
     ! Dispatches on the sub-file keyword `word` (already consumed) and reads to FINSF.
     subroutine read_sub_file(lex, mesh, word, dim, st)
@@ -267,20 +286,18 @@ contains
     end subroutine read_cells
 
     ! GROUP_NO / GROUP_MA: name from NOM= on the header line or first token of the next
-    ! line, then member names (the rest of the name's line included) until FINSF.
+    ! line, then member names until FINSF.
     subroutine read_group(lex, mesh, of_nodes, st)
         type(text_lexer_t), intent(inout) :: lex
         type(mesh_t), intent(inout) :: mesh
         logical, intent(in) :: of_nodes
         type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: name
+        character(len=:), allocatable :: name, message
         integer(i4), allocatable :: members(:)
-        integer(i4) :: first, last, n, header_line
+        integer(i4) :: first, last, n, header_line, k
         header_line = lex%line
         name = header_name(lex)
         call next_line(lex)
-        allocate (members(64))
-        n = 0
         if (len(name) == 0) then
             if (at_finsf(lex, first, last)) then
                 call set_error(st, STATUS_MESH_ERROR, 'group without a name', &
@@ -289,65 +306,51 @@ contains
             end if
             name = lex%text(first:last)
             header_line = lex%line
-            ! members may follow the name on its line (`P1 P1`: Code_Aster reads the
-            ! sub-file as a stream of names, the first one naming the group)
+            ! members may follow the name on its line (PRE_GIBI writes `A  N1`)
             call next_token(lex, first, last)
-            call add_members(lex, mesh, of_nodes, name, first, last, members, n, st)
-            if (st%failed()) return
-            call next_line(lex)
+        else
+            first = 0
         end if
+        allocate (members(64))
+        n = 0
         do while (.not. at_end(lex))
-            if (at_finsf(lex, first, last)) then
-                if (of_nodes) then
-                    call mesh_add_node_group(mesh, name, members(1:n), header_line, st)
-                else
-                    call mesh_add_cell_group(mesh, name, members(1:n), header_line, st)
+            if (first == 0) then   ! a new line (else: the rest of the name's line)
+                if (at_finsf(lex, first, last)) then
+                    if (of_nodes) then
+                        call mesh_add_node_group(mesh, name, members(1:n), header_line, st)
+                    else
+                        call mesh_add_cell_group(mesh, name, members(1:n), header_line, st)
+                    end if
+                    return
                 end if
-                return
             end if
-            call add_members(lex, mesh, of_nodes, name, first, last, members, n, st)
-            if (st%failed()) return
+            do while (first > 0)
+                if (n == size(members)) members = [members, members]
+                n = n + 1
+                if (of_nodes) then
+                    k = name_find(mesh%node_names, lex%text(first:last))
+                else
+                    k = name_find(mesh%cell_names, lex%text(first:last))
+                end if
+                if (k == 0) then
+                    if (of_nodes) then
+                        message = not_found_message(mesh, mesh%node_names, ENTITY_NODE, &
+                                                    lex%text(first:last))
+                    else
+                        message = not_found_message(mesh, mesh%cell_names, ENTITY_CELL, &
+                                                    lex%text(first:last))
+                    end if
+                    call set_error(st, STATUS_MESH_ERROR, trim(merge('GROUP_NO', 'GROUP_MA', &
+                        of_nodes)) // ' ' // name // ': ' // message, file=mesh%file, line=lex%line)
+                    return
+                end if
+                members(n) = k
+                call next_token(lex, first, last)
+            end do
             call next_line(lex)
         end do
         call missing_finsf(lex, mesh, st)
     end subroutine read_group
-
-    ! The member names from token (first, last) to the end of the line, appended to
-    ! members(1:n) (grown as needed); an unknown name is an error at its line.
-    subroutine add_members(lex, mesh, of_nodes, name, first, last, members, n, st)
-        type(text_lexer_t), intent(inout) :: lex
-        type(mesh_t), intent(in) :: mesh
-        logical, intent(in) :: of_nodes
-        character(len=*), intent(in) :: name
-        integer(i4), intent(inout) :: first, last, n
-        integer(i4), allocatable, intent(inout) :: members(:)
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer(i4) :: k
-        do while (first > 0)
-            if (n == size(members)) members = [members, members]
-            n = n + 1
-            if (of_nodes) then
-                k = name_find(mesh%node_names, lex%text(first:last))
-            else
-                k = name_find(mesh%cell_names, lex%text(first:last))
-            end if
-            if (k == 0) then
-                if (of_nodes) then
-                    message = not_found_message(mesh, mesh%node_names, ENTITY_NODE, &
-                                                lex%text(first:last))
-                else
-                    message = not_found_message(mesh, mesh%cell_names, ENTITY_CELL, &
-                                                lex%text(first:last))
-                end if
-                call set_error(st, STATUS_MESH_ERROR, trim(merge('GROUP_NO', 'GROUP_MA', &
-                    of_nodes)) // ' ' // name // ': ' // message, file=mesh%file, line=lex%line)
-                return
-            end if
-            members(n) = k
-            call next_token(lex, first, last)
-        end do
-    end subroutine add_members
 
     ! Name given as NOM=NAME (or NOM= NAME) on the rest of the header line, else ''.
     function header_name(lex) result(name)
