@@ -142,7 +142,38 @@ contains
         call describe_crea_resu(c)
         call describe_post_champ(c)
         call describe_modi_repere(c)
+        call describe_lire_champ(c)
     end subroutine describe_fields
+
+    !> LIRE_CHAMP (code_aster/Cata/Commands/lire_champ.py, U7.02.02): a field of a MED file,
+    !> of the type of TYPE_CHAM.
+    subroutine describe_lire_champ(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, &
+            RULE_PRESENT_PRESENT
+        type(catalog_t), intent(inout) :: c
+        call c%command('LIRE_CHAMP', '@TYPE_CHAM')
+        call c%key('MAILLAGE', 'maillage', req=.true.)
+        call c%key('FORMAT', 'TXM', def='MED', into='MED')
+        call c%key('UNITE', 'I', def='81')
+        call c%rule(RULE_UN_PARMI, 'NOM_CMP_IDEM NOM_CMP')
+        call c%rule(RULE_PRESENT_PRESENT, 'NOM_CMP NOM_CMP_MED')
+        call c%rule(RULE_EXCLUS, 'NUME_ORDRE INST')
+        call c%rule(RULE_EXCLUS, 'NUME_PT INST')
+        call c%key('NOM_MED', 'TXM', req=.true.)
+        call c%key('NOM_CMP_IDEM', 'TXM', into='OUI')
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%key('NOM_CMP_MED', 'TXM', max=MANY)
+        call c%key('PROL_ZERO', 'TXM', def='NON', into='OUI NON')
+        call c%key('NUME_PT', 'I', max=MANY)
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('NOM_MAIL_MED', 'TXM', noop=.true.)
+        call c%key('TYPE_CHAM', 'TXM', req=.true., into=type_cham_names())
+        call c%key('MODELE', 'modele')
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+    end subroutine describe_lire_champ
 
     !> MODI_REPERE (code_aster/Cata/Commands/modi_repere.py, U4.74.01): the type of the
     !> RESULTAT or CHAM_GD given; REPERE UTILISATEUR and CYLINDRIQUE (the others refused by

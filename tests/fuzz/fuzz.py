@@ -222,11 +222,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
                                        "case.mail": os.path.join(verif, "patch_plan.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
-    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH).
+    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH), and the
+    # MED files read back by LIRE_CHAMP (units 80, 81 written and read by the deck itself).
     seeds.append(Seed("fields_output", {"case.comm": os.path.join(SOURCE, "tests", "output",
                                                                   "field_output.comm"),
                                         "case.mail": os.path.join(verif, "patch_dkq.mail")},
-                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.6))
+                      ["--unit", "20=case.mail", "--unit", "80=all.rmed", "--unit",
+                       "81=cham.rmed", "--unit", "82=mesh.rmed"],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.6))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
