@@ -15,6 +15,7 @@ module command_registration
     use post_champ_command, only: run_post_champ
     use modi_repere_command, only: run_modi_repere
     use lire_champ_command, only: run_lire_champ
+    use proj_champ_command, only: run_proj_champ
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage
@@ -67,6 +68,7 @@ contains
         call ctx%register('POST_CHAMP', run_post_champ)
         call ctx%register('MODI_REPERE', run_modi_repere, reuse=.true.)
         call ctx%register('LIRE_CHAMP', run_lire_champ)
+        call ctx%register('PROJ_CHAMP', run_proj_champ, reuse=.true.)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)

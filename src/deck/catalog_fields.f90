@@ -143,7 +143,74 @@ contains
         call describe_post_champ(c)
         call describe_modi_repere(c)
         call describe_lire_champ(c)
+        call describe_proj_champ(c)
     end subroutine describe_fields
+
+    !> PROJ_CHAMP (code_aster/Cata/Commands/proj_champ.py, U4.72.05): the type of RESULTAT or
+    !> CHAM_GD, else (PROJECTION='NON') a corresp_2_mailla. The blocks of PROJECTION are
+    !> flattened: METHODE takes every method (the handler refuses those not built; its
+    !> default is AUTO, COLLOCATION with PROJECTION='NON').
+    subroutine describe_proj_champ(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_AU_MOINS_UN
+        type(catalog_t), intent(inout) :: c
+        call c%command('PROJ_CHAMP', '@RESULTAT CHAM_GD corresp_2_mailla', &
+            reentrant='f:RESULTAT')
+        call c%key('PROJECTION', 'TXM', def='OUI', into='OUI NON')
+        call c%key('MATR_PROJECTION', 'corresp_2_mailla')
+        call c%key('METHODE', 'TXM', into='AUTO COLLOCATION NUAGE_DEG_0 NUAGE_DEG_1 ' // &
+            'ECLA_PG SOUS_POINT COUPLAGE')
+        call c%rule(RULE_EXCLUS, 'RESULTAT CHAM_GD')
+        call c%rule(RULE_EXCLUS, 'MODELE_1 MAILLAGE_1')
+        call c%rule(RULE_EXCLUS, 'MODELE_2 MAILLAGE_2')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('MODELE_1', 'modele')
+        call c%key('MAILLAGE_1', 'maillage')
+        call c%key('MODELE_2', 'modele')
+        call c%key('MAILLAGE_2', 'maillage')
+        call c%key('CHAM_NO_REFE', 'cham_no_sdaster')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%key('CAS_FIGURE', 'TXM', into='2D 3D 2.5D 1.5D')
+        call c%key('DISTANCE_MAX', 'R', vmin=0.0_dp)
+        call c%key('DISTANCE_ALARME', 'R', vmin=0.0_dp)
+        call c%key('TRANSF_GEOM_1', 'FUNC', min=2, max=3)
+        call c%key('TRANSF_GEOM_2', 'FUNC', min=2, max=3)
+        call c%key('ALARME', 'TXM', def='OUI', into='OUI NON')
+        call c%key('TYPE_CHAM', 'TXM', into='NOEU', noop=.true.)
+        call c%key('PROL_VALE', 'R')
+        call c%key('PROL_ZERO', 'TXM', into='OUI NON')
+        call c%rule(RULE_EXCLUS, 'PROL_VALE PROL_ZERO')
+        call c%key('NOM_PARA', 'TXM', max=MANY, noop=.true.)
+        call c%key('TOUT_CHAM', 'TXM', into='OUI')
+        call c%key('NOM_CHAM', 'TXM', max=MANY, into=NOM_CHAM_NAMES)
+        call c%rule(RULE_EXCLUS, 'TOUT_CHAM NOM_CHAM')
+        call c%key('NUME_DDL', 'nume_ddl_sdaster', noop=.true.)
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%fact('VIS_A_VIS', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT_1 GROUP_MA_1 MAILLE_1 GROUP_NO_1 NOEUD_1')
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT_2 GROUP_MA_2 GROUP_NO_2 NOEUD_2')
+        call c%key('TOUT_1', 'TXM', into='OUI')
+        call c%key('GROUP_MA_1', 'TXM', max=MANY)
+        call c%key('MAILLE_1', 'TXM', max=MANY)
+        call c%key('GROUP_NO_1', 'TXM', max=MANY)
+        call c%key('NOEUD_1', 'TXM', max=MANY)
+        call c%key('TOUT_2', 'TXM', into='OUI')
+        call c%key('GROUP_MA_2', 'TXM', max=MANY)
+        call c%key('GROUP_NO_2', 'TXM', max=MANY)
+        call c%key('NOEUD_2', 'TXM', max=MANY)
+        call c%key('CAS_FIGURE', 'TXM', into='2D 3D 2.5D 1.5D 0D')
+        call c%key('TRANSF_GEOM_1', 'FUNC', min=2, max=3)
+        call c%key('TRANSF_GEOM_2', 'FUNC', min=2, max=3)
+        call c%key('DISTANCE_0D', 'R', vmin=0.0_dp)
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+    end subroutine describe_proj_champ
 
     !> LIRE_CHAMP (code_aster/Cata/Commands/lire_champ.py, U7.02.02): a field of a MED file,
     !> of the type of TYPE_CHAM.

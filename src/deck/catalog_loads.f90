@@ -69,6 +69,13 @@ contains
         call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
         call add_components(c, DOFS, vtype, also='BLOCAGE', bound=MAX_LENGTH)  ! lengths, angles
         call c%end_fact()
+        if (vtype == 'R') then          ! values of a field (field's PROJ_CHAMP zooms)
+            call c%fact('CHAMNO_IMPO', max=MANY)
+            call c%key('CHAM_NO', 'cham_no_sdaster', req=.true.)
+            call c%key('COEF_IMPO', 'R', req=.true.)
+            call c%key('NUME_LAGR', 'TXM', def='NORMAL', into='NORMAL APRES', noop=.true.)
+            call c%end_fact()
+        end if
         call describe_face_impo(c, 'FACE_IMPO', DOFS // ' DNOR DRNOR DTAN', vtype)
         if (vtype == 'R') call describe_face_impo(c, 'ARETE_IMPO', 'DX DY DZ DTAN', vtype)
         call describe_relations(c, vtype)

@@ -143,6 +143,10 @@ contains
                     ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
                 if (st%failed()) return
             end do
+            do i = 1, cmd%count('CHAMNO_IMPO')
+                call chamno_impo_item(cmd%occurrence('CHAMNO_IMPO', i), p, cm%loads, st)
+                if (st%failed()) return
+            end do
             call relation_items(cmd, p, functions, cm%loads, st)
             if (st%failed()) return
             do i = 1, cmd%count('FORCE_NODALE')
@@ -292,6 +296,70 @@ contains
             if (blocked(comp)) call load_set_constant(loads, index, comp, 0.0_dp)
         end do
     end subroutine blocage_item
+
+    !> CHAMNO_IMPO (Code_Aster U4.44.01): every component DX..DRZ a node of the CHAM_NO
+    !> carries is imposed at COEF_IMPO times its value, as a DDL_IMPO of that node (Code_Aster
+    !> writes it as one linear relation per value; the solution is the same). A value on a
+    !> component the node lacks in the model is an error, as for DDL_IMPO.
+    subroutine chamno_impo_item(occ, mc, loads, st)
+        use field_types, only: FIELD_NOEU, field_component
+        use field_concept, only: field_concept_t
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        real(dp) :: coef
+        integer(i4) :: n, comp, i, index, n_imposed
+        integer(i4) :: at(6)
+        call occ%get_concept('CHAM_NO', p, st)
+        if (st%ok()) call occ%get_real('COEF_IMPO', coef, st)
+        if (st%failed()) return
+        select type (p)
+        type is (field_concept_t)
+            associate (f => p%field)
+                if (f%location /= FIELD_NOEU .or. f%n_nodes /= mc%mesh%n_nodes) then
+                    call occ%error_at('CHAM_NO', 'expected a nodal field of the model''s ' // &
+                        'mesh (' // to_text(mc%mesh%n_nodes) // ' nodes), got a field of ' // &
+                        to_text(merge(f%n_nodes, f%n_cells, f%location == FIELD_NOEU)) // &
+                        ' ' // trim(merge('nodes', 'cells', f%location == FIELD_NOEU)), st, &
+                        code=STATUS_MODEL_ERROR)
+                    return
+                end if
+                do comp = 1, 6
+                    at(comp) = field_component(f, trim(COMPONENT_NAMES(comp)))
+                end do
+                if (all(at == 0)) then
+                    call occ%error_at('CHAM_NO', 'the field has none of the components ' // &
+                        'DX DY DZ DRX DRY DRZ (it is a ' // f%quantity // ')', st, &
+                        code=STATUS_MODEL_ERROR)
+                    return
+                end if
+                n_imposed = 0
+                do n = 1, f%n_nodes
+                    if (.not. any([(at(comp) > 0, comp = 1, 6)])) cycle
+                    if (.not. any([(f%node_has(max(at(comp), 1), n) .and. at(comp) > 0, &
+                        comp = 1, 6)])) cycle
+                    call load_add_item(loads, LOAD_DDL_IMPO, [n], index, 'CHAMNO_IMPO')
+                    call locate_item(occ, loads, index)
+                    do comp = 1, 6
+                        i = at(comp)
+                        if (i == 0) cycle
+                        if (.not. f%node_has(i, n)) cycle
+                        call check_component(occ, mc, [n], 'CHAM_NO', comp, st)
+                        if (st%failed()) return
+                        call load_set_constant(loads, index, comp, coef * f%node_values(i, n))
+                    end do
+                    n_imposed = n_imposed + 1
+                end do
+                if (n_imposed == 0) call occ%error_at('CHAM_NO', 'the field has no value ' // &
+                    'at any node: it imposes nothing', st, code=STATUS_MODEL_ERROR)
+            end associate
+        class default
+            call occ%error_at('CHAM_NO', 'expected a nodal field (cham_no_sdaster), got ' // &
+                p%type_name(), st)
+        end select
+    end subroutine chamno_impo_item
 
     !> A DDL_IMPO or FORCE_NODALE value on a component a node does not have (its elements do
     !> not use it) is an error at the keyword: it would silently do nothing.

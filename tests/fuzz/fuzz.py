@@ -222,6 +222,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
                                        "case.mail": os.path.join(verif, "patch_plan.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+    # PROJ_CHAMP between two meshes (collocation, VIS_A_VIS, DISTANCE_MAX, MATR_PROJECTION)
+    # and CHAMNO_IMPO of the projected field.
+    seeds.append(Seed("fields_projection",
+                      {"case.comm": os.path.join(fields, "proj_champ.comm"),
+                       "case.mail": os.path.join(verif, "patch_plan.mail"),
+                       "target.mail": os.path.join(fields, "proj_target.mail")},
+                      ["--unit", "20=case.mail", "--unit", "21=target.mail"],
+                      dict(comm_targets, **{"case.mail": "mail", "target.mail": "mail"}), 0.5))
     # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH), and the
     # MED files read back by LIRE_CHAMP (units 80, 81 written and read by the deck itself).
     seeds.append(Seed("fields_output", {"case.comm": os.path.join(SOURCE, "tests", "output",
