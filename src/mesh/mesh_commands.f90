@@ -21,8 +21,8 @@ module mesh_commands
 
 contains
 
-    !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH', UNITE=20, NOM_MED): reads the mesh file
-    !> (FORMAT='GIBI' and 'IDEAS', in Code_Aster's catalog, are refused at FORMAT), the
+    !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH'|'IDEAS', UNITE=20, NOM_MED): reads the mesh
+    !> file (FORMAT='GIBI', in Code_Aster's catalog, is refused at FORMAT), the
     !> parallel and bookkeeping keywords (PARTITIONNEUR, INFO_MED, VERI_MAIL) having no effect;
     !> bound to UNITE (ctx%unit_path; MED is the default FORMAT, as in Code_Aster) and writes
     !> its summary (nodes, cells per type, groups with sizes, bounding box) to the .mess.
@@ -48,9 +48,10 @@ contains
         logical :: exists
         call cmd%get_text('FORMAT', format, st)
         if (st%failed()) return
-        if (format /= 'MED' .and. format /= 'ASTER' .and. format /= 'GMSH') then
+        if (format /= 'MED' .and. format /= 'ASTER' .and. format /= 'GMSH' .and. &
+            format /= 'IDEAS') then
             call cmd%error_at('FORMAT', 'parasol does not read the ' // format // &
-                ' format (it reads MED, ASTER and GMSH meshes: convert the mesh to one ' // &
+                ' format (it reads MED, ASTER, GMSH and IDEAS meshes: convert the mesh to one ' // &
                 'of them)', st, code=STATUS_NOT_IMPLEMENTED)
             return
         end if

@@ -1,4 +1,5 @@
-!> One entry point for every mesh format (LIRE_MAILLAGE FORMAT='ASTER' | 'GMSH' | 'MED').
+!> One entry point for every mesh format (LIRE_MAILLAGE FORMAT='ASTER' | 'GMSH' | 'MED' |
+!> 'IDEAS').
 module mesh_reader
     use status, only: status_t
     use strings, only: string_t, ends_with, to_lower, to_upper
@@ -6,6 +7,7 @@ module mesh_reader
     use mesh_aster_reader, only: read_aster_mesh
     use mesh_gmsh_reader, only: read_gmsh_mesh
     use mesh_med_reader, only: read_med_mesh
+    use mesh_ideas_reader, only: read_ideas_mesh
     implicit none
     private
     public :: read_mesh
@@ -16,9 +18,9 @@ contains
     !>  st        : out, errors of the format's reader (text formats: file:line: message;
     !>              MED: "MED file PATH: ..." with st%keyword = 'NOM_MED' when the mesh name
     !>              is at fault)
-    !>  format    : in, optional 'ASTER', 'GMSH' or 'MED' (case-insensitive); without it the
-    !>              extension decides: .msh is Gmsh, .med/.mmed/.rmed MED, anything else the
-    !>              .mail format
+    !>  format    : in, optional 'ASTER', 'GMSH', 'MED' or 'IDEAS' (case-insensitive);
+    !>              without it the extension decides: .msh is Gmsh, .med/.mmed/.rmed MED,
+    !>              anything else the .mail format
     !>  mesh_name : in, optional, MED only: the mesh to read (NOM_MED; '' = the only one)
     !>  notes     : out, optional, lines for the .mess (MED: mesh read, groups dropped)
     subroutine read_mesh(path, mesh, st, format, mesh_name, notes)
@@ -39,6 +41,8 @@ contains
         select case (kind)
         case ('GMSH')
             call read_gmsh_mesh(path, mesh, st)
+        case ('IDEAS')
+            call read_ideas_mesh(path, mesh, st)
         case ('MED')
             name = ''
             if (present(mesh_name)) name = mesh_name

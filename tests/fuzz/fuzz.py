@@ -222,6 +222,12 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
                                        "case.mail": os.path.join(verif, "patch_plan.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+    # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
+    seeds.append(Seed("ideas_mesh",
+                      {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
+                       "case.unv": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.unv")},
+                      ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "mail"}),
+                      0.5))
     # PROJ_CHAMP between two meshes (collocation, VIS_A_VIS, DISTANCE_MAX, MATR_PROJECTION)
     # and CHAMNO_IMPO of the projected field.
     seeds.append(Seed("fields_projection",
