@@ -54,6 +54,7 @@ contains
         call ctx%register('POURSUITE', run_poursuite, at_check=.true.)
         call ctx%register('FIN', run_fin)
         call ctx%register('DEBUG', run_debug)
+        call ctx%register('MAJ_CATA', run_debug)     ! no effect either (field, zzzz230a)
         call ctx%register('DEFI_FICHIER', run_defi_fichier)
         ! DETRUIRE forgets names: the check pass too, so that it sees the names the run sees
         call ctx%register('DETRUIRE', run_detruire, at_check=.true.)
