@@ -28,6 +28,7 @@ module crea_table_command
     use mesh_types, only: mesh_t, node_name, cell_name
     use mesh_concept, only: mesh_concept_t
     use model_concept, only: model_concept_t
+    use analysis_result, only: result_concept_t
     use field_types, only: field_t, FIELD_NOEU, FIELD_ELGA, FIELD_ELNO, FIELD_ELEM, &
         field_is_cell_field, field_location_name, field_component, field_position
     use field_concept, only: field_concept_t
@@ -557,9 +558,11 @@ contains
             mesh => support%mesh
         type is (model_concept_t)
             mesh => support%mesh
+        type is (result_concept_t)      ! CREA_CHAMP EXTR: the result's mesh (field_support)
+            mesh => support%mesh
         class default
             call set_error(st, STATUS_MODEL_ERROR, 'the field''s support is a ' // &
-                support%type_name() // ', not a mesh or a model')
+                support%type_name() // ', not a mesh, a model or a result')
         end select
     end subroutine mesh_of_support
 
