@@ -16,6 +16,7 @@ module command_registration
     use modi_repere_command, only: run_modi_repere
     use lire_champ_command, only: run_lire_champ
     use proj_champ_command, only: run_proj_champ
+    use calc_erreur_command, only: run_calc_erreur
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage
@@ -71,6 +72,7 @@ contains
         call ctx%register('MODI_REPERE', run_modi_repere, reuse=.true.)
         call ctx%register('LIRE_CHAMP', run_lire_champ)
         call ctx%register('PROJ_CHAMP', run_proj_champ, reuse=.true.)
+        call ctx%register('CALC_ERREUR', run_calc_erreur, reuse=.true.)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)

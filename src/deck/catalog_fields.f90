@@ -144,7 +144,47 @@ contains
         call describe_modi_repere(c)
         call describe_lire_champ(c)
         call describe_proj_champ(c)
+        call describe_calc_erreur(c)
     end subroutine describe_fields
+
+    !> CALC_ERREUR (code_aster/Cata/Commands/calc_erreur.py, U4.81.04): the type of
+    !> RESULTAT; OPTION takes Code_Aster's error options (the handler refuses those not built).
+    subroutine describe_calc_erreur(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+        type(catalog_t), intent(inout) :: c
+        call c%command('CALC_ERREUR', '@RESULTAT', reentrant='f:RESULTAT')
+        call c%key('RESULTAT', 'RESU', req=.true.)
+        call c%key('MODELE', 'modele', noop=.true.)
+        call c%key('CHAM_MATER', 'cham_mater', noop=.true.)
+        call c%key('CARA_ELEM', 'cara_elem', noop=.true.)
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('TOUT', 'TXM', def='OUI', into='OUI')
+        call c%key('OPTION', 'TXM', req=.true., max=MANY, into='SIZ1_NOEU ERZ1_ELEM ' // &
+            'SIZ2_NOEU ERZ2_ELEM ERME_ELEM ERME_ELNO ERME_NOEU QIRE_ELEM QIRE_ELNO ' // &
+            'QIRE_NOEU QIZ1_ELEM QIZ2_ELEM SING_ELEM SING_ELNO ERTH_ELEM ERTH_ELNO ERTH_NOEU')
+        call c%key('RESU_DUAL', 'RESU')
+        call c%key('PREC_ERR', 'R', vmin=0.0_dp)
+        call c%key('TYPE_ESTI', 'TXM', into='ERME_ELEM ERZ1_ELEM ERZ2_ELEM QIRE_ELEM ' // &
+            'QIZ1_ELEM QIZ2_ELEM')
+        call c%fact('EXCIT', max=MANY, noop=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
+        call c%key('FONC_MULT', 'FUNC')
+        call c%end_fact()
+        call c%fact('SOLVEUR', noop=.true.)
+        call c%key('METHODE', 'TXM', into='LDLT MULT_FRONT MUMPS PETSC GCPC')
+        call c%key('RENUM', 'TXM')
+        call c%key('NPREC', 'I')
+        call c%key('STOP_SINGULIER', 'TXM', into='OUI NON')
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+        call c%key('TITRE', 'TXM', noop=.true.)
+    end subroutine describe_calc_erreur
 
     !> PROJ_CHAMP (code_aster/Cata/Commands/proj_champ.py, U4.72.05): the type of RESULTAT or
     !> CHAM_GD, else (PROJECTION='NON') a corresp_2_mailla. The blocks of PROJECTION are

@@ -228,6 +228,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "case.unv": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.unv")},
                       ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "mail"}),
                       0.5))
+    # CALC_ERREUR's Zhu-Zienkiewicz estimators on the plane patch.
+    seeds.append(Seed("fields_error", {"case.comm": os.path.join(fields, "calc_erreur.comm"),
+                                       "case.mail": os.path.join(verif, "patch_plan.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
     # PROJ_CHAMP between two meshes (collocation, VIS_A_VIS, DISTANCE_MAX, MATR_PROJECTION)
     # and CHAMNO_IMPO of the projected field.
     seeds.append(Seed("fields_projection",
