@@ -6,6 +6,10 @@
 !> POUR_CENT, its share of the whole model's energy in percent (100 for TOUT; 0 when the
 !> whole has none). In a linear static analysis it is half the work of the loads
 !> (Clapeyron), which the suite checks.
+!> TRAV_EXT (pewext): per stored instant, NUME_ORDRE, INST, TRAV_ELAS = 1/2 FORC_NODA . DEPL
+!> and TRAV_REEL, the work accumulated by the trapezoidal rule from the first instant
+!> (0 there): W += 1/2 (F0.U1 - F1.U0 + F1.U1 - F0.U0); the dot products run over the
+!> nodes and the components DX .. DRZ both fields hold.
 !> Not built, each a located error: CHAM_GD (a displacement field without its result),
 !> cells with a contact law (DIS_CHOC, DIS_CONTACT), results with thermal strains
 !> (AFFE_VARC: Code_Aster counts the strain less its thermal part).
@@ -34,7 +38,7 @@ module post_elem_energy
     use crea_table_command, only: result_of_occurrence
     implicit none
     private
-    public :: ener_pot_rows, mesh_concept_name
+    public :: ener_pot_rows, trav_ext_rows, mesh_concept_name
 
 contains
 
@@ -137,6 +141,68 @@ contains
             end do
         end do
     end subroutine ener_pot_rows
+
+    !> TRAV_EXT: the columns and rows of the table (module header).
+    subroutine trav_ext_rows(cmd, t, st)
+        type(command_t), intent(in) :: cmd
+        type(table_t), intent(inout) :: t
+        type(status_t), intent(inout) :: st
+        class(result_fields_t), pointer :: res
+        type(field_t), pointer :: u, f
+        real(dp), allocatable :: u0(:, :), f0(:, :), u1(:, :), f1(:, :)
+        integer, allocatable :: indices(:)
+        logical :: by_inst
+        real(dp) :: w
+        integer :: j, c, r
+        call result_of_occurrence(cmd, res, st)
+        if (st%ok()) call selected_instants(cmd, res, indices, by_inst, st)
+        if (st%failed()) then
+            call relocate_at(cmd, 'RESULTAT', st)
+            return
+        end if
+        call table_add_column(t, 'NUME_ORDRE', TABLE_INT, c, st)
+        call table_add_column(t, 'INST', TABLE_REAL, c, st)
+        call table_add_column(t, 'TRAV_ELAS', TABLE_REAL, c, st)
+        call table_add_column(t, 'TRAV_REEL', TABLE_REAL, c, st)
+        w = 0.0_dp
+        do j = 1, size(indices)
+            if (st%failed()) return
+            call result_field_at(res, int(indices(j), i4), 'DEPL', u, st)
+            if (st%ok()) call result_field_at(res, int(indices(j), i4), 'FORC_NODA', f, st)
+            if (st%failed()) then
+                call relocate_at(cmd, 'RESULTAT', st)
+                return
+            end if
+            call displacement_part(u, u1)
+            call displacement_part(f, f1)
+            if (j >= 2) w = w + 0.5_dp * (sum(f0 * u1) - sum(f1 * u0) + sum(f1 * u1) - &
+                                          sum(f0 * u0))
+            call table_add_rows(t, 1)
+            r = t%n_rows
+            call table_set_int(t, 1, r, int(res%nume_ordre(indices(j)), i8), st)
+            call table_set_real(t, 2, r, res%inst(indices(j)), st)
+            call table_set_real(t, 3, r, 0.5_dp * sum(f1 * u1), st)
+            call table_set_real(t, 4, r, w, st)
+            call move_alloc(u1, u0)
+            call move_alloc(f1, f0)
+        end do
+    end subroutine trav_ext_rows
+
+    !> The DX .. DRZ components of a nodal field, 0 where it holds none (cnsreddepl).
+    subroutine displacement_part(f, v)
+        type(field_t), intent(in) :: f
+        real(dp), allocatable, intent(out) :: v(:, :)
+        integer :: comp, k, node
+        allocate (v(N_COMPONENTS, f%n_nodes), source=0.0_dp)
+        if (f%location /= FIELD_NOEU) return
+        do comp = 1, N_COMPONENTS
+            k = field_component(f, trim(COMPONENT_NAMES(comp)))
+            if (k == 0) cycle
+            do node = 1, f%n_nodes
+                if (f%node_has(k, node)) v(comp, node) = f%node_values(k, node)
+            end do
+        end do
+    end subroutine displacement_part
 
     !> 1/2 ue . Ke ue of every cell (0 for cells without an element or energy).
     subroutine cell_energies(cmd, s, f, energy, st)
