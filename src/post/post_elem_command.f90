@@ -16,7 +16,7 @@
 !> degrees of the principal frame: its x axis along the first principal axis, its y axis
 !> along the second; each axis signed so that its largest component is positive); with
 !> ORIG_INER the point P (X_P, Y_P, Z_P) and the moments and products about P (IX_P ..).
-!> ENER_POT and TRAV_EXT are post_elem_energy's. The other options, and MASS_INER on a RESULTAT or
+!> ENER_POT and TRAV_EXT are post_elem_energy's, MINMAX post_elem_minmax's. The other options, and MASS_INER on a RESULTAT or
 !> CHAM_GD (GEOMETRIE 'DEFORMEE'), are located errors saying they are not built.
 module post_elem_command
     use kinds, only: dp, i4
@@ -36,13 +36,14 @@ module post_elem_command
     use table_concept, only: table_t, table_init, table_add_column, table_add_rows, &
         table_set_real, table_set_text, TABLE_REAL, TABLE_TEXT
     use table_keywords, only: relocate_at
+    use post_elem_minmax, only: minmax_rows
     use post_elem_energy, only: ener_pot_rows, trav_ext_rows, mesh_concept_name
     implicit none
     private
     public :: run_post_elem
 
     !> The options of Code_Aster's POST_ELEM other than MASS_INER (not built).
-    character(len=*), parameter :: OTHER_OPTIONS = 'ENER_CIN MINMAX ' // &
+    character(len=*), parameter :: OTHER_OPTIONS = 'ENER_CIN ' // &
         'WEIBULL RICE_TRACEY CARA_GEOM CHAR_LIMITE NORME CARA_POUTRE INDIC_ENER ' // &
         'INDIC_SEUIL VOLUMOGRAMME AIRE_INTERNE ENER_ELAS ENER_ELTR ENER_TOTALE ENER_DISS ' // &
         'INTEGRALE'
@@ -89,19 +90,23 @@ contains
             b = index(OTHER_OPTIONS(a:) // ' ', ' ') + a - 2
             if (cmd%count(OTHER_OPTIONS(a:b)) > 0) then
                 call cmd%error_at(OTHER_OPTIONS(a:b), 'POST_ELEM ' // OTHER_OPTIONS(a:b) // &
-                    ' is not built by parasol: MASS_INER, ENER_POT and TRAV_EXT are', st, &
+                    ' is not built by parasol: MASS_INER, ENER_POT, TRAV_EXT and MINMAX are', &
+                    st, &
                     STATUS_NOT_IMPLEMENTED)
                 return
             end if
             a = b + 2
         end do
-        if (cmd%count('ENER_POT') > 0 .or. cmd%count('TRAV_EXT') > 0) then
+        if (cmd%count('ENER_POT') > 0 .or. cmd%count('TRAV_EXT') > 0 .or. &
+            cmd%count('MINMAX') > 0) then
             allocate (t)
             call table_init(t)
             if (cmd%count('ENER_POT') > 0) then
                 call ener_pot_rows(ctx, cmd, t, st)
-            else
+            else if (cmd%count('TRAV_EXT') > 0) then
                 call trav_ext_rows(cmd, t, st)
+            else
+                call minmax_rows(cmd, t, st)
             end if
             if (st%failed()) return
             if (cmd%has('TITRE')) call cmd%get_texts('TITRE', t%title, st)
