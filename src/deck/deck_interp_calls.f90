@@ -223,6 +223,14 @@ contains
         select case (f%kind)
         case (VK_BUILTIN)
             call call_builtin(ctx, id, f%s, args, kwargs, v, st, frame)
+        case (VK_FACTOR)
+            if (allocated(f%s)) then
+                if (f%s == 'UserMacro') then             ! deck_interp_macros
+                    call call_user_macro(ctx, id, f, args, kwargs, v, st, frame)
+                    return
+                end if
+            end if
+            call fail(st, ctx, id, kind_label(f) // ' cannot be called')
         case (VK_CONCEPT)
             call call_concept(ctx, id, f, args, kwargs, v, st)
         case (VK_MODULE)

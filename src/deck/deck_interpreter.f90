@@ -364,6 +364,25 @@ module deck_interpreter
             type(status_t), intent(inout) :: st
         end subroutine new_testcase
 
+        ! ---- deck_interp_macros ----
+        module subroutine cata_builtin(ctx, id, name, args, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: name
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine cata_builtin
+        module recursive subroutine call_user_macro(ctx, id, f, args, kwargs, v, st, frame)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: f
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+            type(frame_t), intent(inout), optional, target :: frame
+        end subroutine call_user_macro
+
         ! ---- deck_interp_imports ----
         module recursive subroutine exec_import(ctx, id, st, frame)
             type(run_context_t), intent(inout) :: ctx
