@@ -229,7 +229,7 @@ contains
             call kwarg(kv, 'typ', typ, has_typ)
             types = ''
             one = ''
-            if (typ%kind == VK_TUPLE) then
+            if (typ%kind == VK_TUPLE .or. typ%kind == VK_LIST) then
                 parts = unpack_value(typ)
                 do j = 1, size(parts%items)
                     one = simple_type(parts%items(j))
@@ -249,7 +249,25 @@ contains
             end if
             call kwarg(kv, 'defaut', x, has_def)
             def_text = ''
-            if (has_def) def_text = words_of(x)
+            if (has_def) then
+                ! Code_Aster checks a default against typ when the catalog is built
+                if (x%kind == VK_TUPLE .or. x%kind == VK_LIST) then
+                    parts = unpack_value(x)
+                else
+                    if (allocated(parts%items)) deallocate (parts%items)
+                    allocate (parts%items(1))
+                    parts%items(1) = x
+                end if
+                do j = 1, size(parts%items)
+                    if (.not. type_accepts(types, parts%items(j)) .or. &
+                        parts%items(j)%kind == VK_CONCEPT) then
+                        call fail(st, ctx, id, 'MACRO: ' // key // '=SIMP(defaut=' // &
+                            text_of(ctx, parts%items(j), .true.) // '): not a value of ' // &
+                            'its typ (' // types // ')'); return
+                    end if
+                end do
+                def_text = words_of(x)
+            end if
             call kwarg(kv, 'into', x, has_into)
             into_text = ''
             if (has_into) into_text = words_of(x)
@@ -261,6 +279,10 @@ contains
             vmax = 0.0_dp
             if (has_max .and. is_number(x)) vmax = as_real(x)
             has_max = has_max .and. is_number(x)
+            if (min_of(kv) > max_of(kv, 1)) then
+                call fail(st, ctx, id, 'MACRO: ' // key // '=SIMP(min=..., max=...): min ' // &
+                          'is above max'); return
+            end if
             if (has_min .and. has_max) then
                 call cat%key(key, types, min=min_of(kv), max=max_of(kv, 1), &
                     req=statut_of(kv) == 'o', def=def_text, into=into_text, vmin=vmin, &
@@ -287,7 +309,7 @@ contains
             if (rule_kind(rv) > 0) then
                 allocate (rules%items(1))
                 rules%items(1) = rv
-            else if (rv%kind == VK_TUPLE) then
+            else if (rv%kind == VK_TUPLE .or. rv%kind == VK_LIST) then
                 rules = unpack_value(rv)
             else
                 allocate (rules%items(1))
@@ -418,7 +440,7 @@ contains
         character(len=:), allocatable :: text
         type(value_list_t) :: parts
         integer :: j
-        if (x%kind == VK_TUPLE) then
+        if (x%kind == VK_TUPLE .or. x%kind == VK_LIST) then     ! flat: describe_macro
             parts = unpack_value(x)
             text = ''
             do j = 1, size(parts%items)
