@@ -653,6 +653,17 @@ contains
 
     ! ---- commands ---------------------------------------------------------------------------
 
+    !> Command `name` of the catalog run from the interpreter itself (a function of
+    !> Code_Aster's library that is a command underneath), located at node id.
+    module procedure run_catalog_command
+        integer :: icmd
+        icmd = ctx%catalog%find_command(name)
+        if (icmd == 0) then
+            call fail(st, ctx, id, 'unknown command ' // name); return
+        end if
+        call run_command(ctx, icmd, id, kwargs, v, st)
+    end procedure run_catalog_command
+
     !> Validates and runs (or, in the check pass, stands in for) catalog command icmd. Its
     !> keyword values are flat copies (a list given to a command is the list as it is now).
     recursive subroutine run_command(ctx, icmd, name_node, kwargs_in, v, st, target)

@@ -169,6 +169,10 @@ contains
                 if (provided_for_macros(module, name)) then          ! deck_interp_macros
                     x%kind = VK_BUILTIN; x%s = 'Cata.' // name; x%i = 0
                 end if
+                if (module == 'code_aster.MedUtils' .and. &
+                    name == 'splitMeshAndFieldsFromMedFile') then    ! deck_interp_medutils
+                    x%kind = VK_BUILTIN; x%s = 'MedUtils.' // name; x%i = 0
+                end if
                 call bind_name(ctx, n, alias, x, frame)
             end do
         end subroutine from_foreign
@@ -204,6 +208,8 @@ contains
                 if (what == 'TestCase' .and. (module == 'code_aster.CA' .or. &
                     module == 'code_aster.Utilities')) cycle
                 if (provided_for_macros(module, what)) cycle
+                if (module == 'code_aster.MedUtils' .and. &
+                    what == 'splitMeshAndFieldsFromMedFile') cycle
                 ! Code_Aster's data structure types: the types of user macros' keywords
                 if (module == 'code_aster.Cata.DataStructure' .and. what /= '*') cycle
                 return
