@@ -6,7 +6,7 @@ module model_cara_elem
     use strings, only: to_text, to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, &
-        is_discrete_rotational, ELEMENT_NAMES
+        is_discrete_rotational, ELEMENT_NAMES, is_plate_edge, ELEM_NONE
     implicit none
     private
 
@@ -51,6 +51,9 @@ module model_cara_elem
         integer(i4), allocatable :: discrete_matrix(:)
         type(discrete_matrix_t), allocatable :: matrices(:)   !< one per DISCRET occurrence
         integer(i4) :: n_matrices = 0
+        !> (n_cells) a discrete mass (M_*) that is not zero: its values are not kept (they
+        !> play no part in statics), PESANTEUR on it is refused
+        logical, allocatable :: has_mass(:)
     end type cara_elem_t
 
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
@@ -77,20 +80,22 @@ contains
         allocate (cara%orientation_values(3, n), source=0.0_dp)
         allocate (cara%discrete_matrix(n), source=0_i4)
         allocate (cara%matrices(4))
+        allocate (cara%has_mass(n), source=.false.)
     end subroutine cara_elem_init
 
     !> COQUE: thickness (and drilling coefficient) of plate cells.
-    !>  cells : in, cells of the occurrence; each must carry a DKT/DKQ element
+    !>  cells_in : in, cells of the occurrence; each must carry a DKT/DKQ element (or a
+    !>             plate edge, or none: then passed over)
     !>  epais : in, thickness > 0;  coef_rigi_drz : in, optional (default 1e-5)
     !>  st    : out, STATUS_MODEL_ERROR for EPAIS <= 0 or a cell that is not a plate
     !>  direction : in, optional, ANGL_REP / VECTEUR as a direction (default global X)
     !>  layers : in, optional, COQUE_NCOU (default 1)
-    subroutine assign_coque(cara, model, mesh, cells, epais, st, coef_rigi_drz, group, &
+    subroutine assign_coque(cara, model, mesh, cells_in, epais, st, coef_rigi_drz, group, &
                             direction, layers)
         type(cara_elem_t), intent(inout) :: cara
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
-        integer(i4), intent(in) :: cells(:)
+        integer(i4), intent(in) :: cells_in(:)
         real(dp), intent(in) :: epais
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: coef_rigi_drz
@@ -98,12 +103,17 @@ contains
         real(dp), intent(in), optional :: direction(3)
         integer(i4), intent(in), optional :: layers
         integer(i4) :: i
+        integer(i4), allocatable :: cells(:)
         if (epais <= 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, 'EPAIS must be > 0, got ' // to_text(epais))
             return
         end if
+        ! a cell without an element is passed over (Code_Aster's map covers the mesh); the
+        ! plates' edges (SEG2 of a DKT model) take it too, as Code_Aster's MEBODKT
+        cells = pack(cells_in, model%element(cells_in) /= ELEM_NONE)
         do i = 1, size(cells)
-            if (.not. is_plate(model%element(cells(i)))) then
+            if (.not. (is_plate(model%element(cells(i))) .or. &
+                       is_plate_edge(model%element(cells(i))))) then
                 call set_error(st, STATUS_MODEL_ERROR, 'COQUE on ' // &
                     cell_label(mesh, cells(i), group) // ', which is ' // &
                     trim(ELEMENT_NAMES(model%element(cells(i)))) // ' (COQUE needs DKT)')
@@ -399,6 +409,7 @@ contains
                 call set_error(st, STATUS_MODEL_ERROR, reason)
                 return
             end if
+            if (what == 'M') cara%has_mass(c) = any(abs(values) > 0.0_dp)
             if (what /= 'K') cycle
             if (.not. diagonal .and. matrix == 0) call store_matrix(k, matrix)
             cara%discrete_cara(c) = code
