@@ -8,6 +8,7 @@ module analysis_excitation
     use function_concept, only: function_concept_t, param_binding_t
     use assembly_system, only: structure_t
     use assembly_loads, only: impose_values, add_external_forces
+    use assembly_varc, only: add_varc_forces
     implicit none
     private
 
@@ -18,12 +19,13 @@ module analysis_excitation
         class(function_concept_t), pointer :: fonc_mult => null()
     end type excitation_t
 
-    public :: loads_at
+    public :: loads_at, recorded_internal_forces
 
 contains
 
-    !> Imposed values into u and external forces at t, over all EXCIT occurrences.
-    !>  st : out, function evaluation errors (FONC_MULT included)
+    !> Imposed values into u and external forces at t, over all EXCIT occurrences, and the
+    !> forces of the thermal strains of AFFE_VARC (assembly_varc, elem's).
+    !>  st : out, function evaluation errors (FONC_MULT included), temperature errors
     subroutine loads_at(s, excit, t, u, fext, st)
         type(structure_t), intent(in) :: s
         type(excitation_t), intent(in) :: excit(:)
@@ -49,6 +51,21 @@ contains
             if (st%ok()) call add_external_forces(s, excit(k)%load, t, factor, fext, st)
             if (st%failed()) return
         end do
+        call add_varc_forces(s, t, fext, st)
     end subroutine loads_at
+
+    !> The nodal internal forces a result records (FORC_NODA) at t: f_int = K u less the
+    !> forces of the thermal strains (which loads_at puts into f_ext), i.e. int B^T sigma
+    !> with sigma = D (eps - eps_th), as Code_Aster's FORC_NODA. Without AFFE_VARC: f_int.
+    !>  st : out, temperature errors (as loads_at)
+    subroutine recorded_internal_forces(s, t, fint, forc, st)
+        type(structure_t), intent(in) :: s
+        real(dp), intent(in) :: t, fint(:)
+        real(dp), intent(out) :: forc(:)
+        type(status_t), intent(out) :: st
+        forc = 0.0_dp
+        call add_varc_forces(s, t, forc, st)
+        forc = fint - forc
+    end subroutine recorded_internal_forces
 
 end module analysis_excitation

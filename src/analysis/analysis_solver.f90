@@ -80,6 +80,9 @@ module analysis_solver
         real(dp) :: max_digits_lost = 0.0_dp
         character(len=:), allocatable :: digits_at
         real(dp) :: min_pivot = huge(1.0_dp), max_pivot = 0.0_dp
+        !> a factorization gave no pivots (MUMPS): its loss is only checked against NPREC
+        !> by the back-end's null-pivot detection
+        logical :: pivots_unknown = .false.
     end type pivot_record_t
 
     public :: open_solver, log_numbering, factor_and_diagnose_linear, assemble_and_factor, &
@@ -537,11 +540,14 @@ contains
         end if
         acc%min_pivot = min(acc%min_pivot, diag%min_pivot)
         acc%max_pivot = max(acc%max_pivot, diag%max_pivot)
+        if (.not. diag%digits_known) acc%pivots_unknown = .true.
     end subroutine accumulate_pivots
 
     !> The .mess line of solver diagnostics (style.md): the method, the largest loss of
     !> significant digits over the factorizations, where, against NPREC (as given: -1 is
-    !> reported as -1, "check off" for MUMPS), and the range of |pivot|.
+    !> reported as -1, "check off" for MUMPS), and the range of |pivot|. A back-end that
+    !> gives no pivots (MUMPS) is said so: the figure is then the coarse matrix's of the
+    !> rigid modes (0 without), the factor's loss being checked by MUMPS against NPREC.
     function solver_diagnostics_line(acc, nprec, method) result(text)
         class(pivot_record_t), intent(in) :: acc
         integer(i4), intent(in) :: nprec
@@ -560,6 +566,11 @@ contains
             text = text // ': check off'
         else if (nprec <= 0) then
             text = text // ', read as ' // to_text(effective_nprec(opt))
+        end if
+        if (acc%pivots_unknown) then
+            text = text // '; ' // trim(method) // ' gives no pivots: its null-pivot ' // &
+                'detection checked NPREC)'
+            return
         end if
         text = text // '), |pivot| from ' // real_short(acc%min_pivot) // ' to ' // &
             real_short(acc%max_pivot)

@@ -62,7 +62,7 @@ module contact_newton
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
         solve_held, answer_digits, real_digits
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
     use analysis_relations, only: prepare_relations, relations_at
     use assembly_relations, only: elimination_t
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
@@ -126,7 +126,7 @@ contains
         logical, allocatable :: imposed(:), rigid(:)
         type(elimination_t) :: elim
         integer(i4) :: k, step, n_eq
-        real(dp), allocatable :: targets(:)
+        real(dp), allocatable :: targets(:), forc(:)
         integer(i4), allocatable :: levels(:)
         real(dp) :: t_prev
         type(step_start_t) :: saved
@@ -208,7 +208,10 @@ contains
             end if
             step = step + 1
             call result_reserve(res, step + 1 + size(targets, kind=i4) - k)
-            call result_store(res, step, targets(k), state%u, state%fint, &
+            if (.not. allocated(forc)) allocate (forc(size(state%fint)))
+            call recorded_internal_forces(s, targets(k), state%fint, forc, st)
+            if (st%failed()) return
+            call result_store(res, step, targets(k), state%u, forc, &
                 reactions(map, state), state%closed, state%fn)
             call store_spring_fields(s, state%u, res, st)
             if (st%failed()) return
@@ -366,6 +369,8 @@ contains
         state%solves = 0
         state%updated = 0
         state%damped = 0
+        state%force_evaluations = 0
+        state%force_seconds = 0.0_dp
         previous_maxi = huge(1.0_dp)
         said_zero = .false.
         converged = .false.
@@ -377,10 +382,12 @@ contains
         ! Prediction (Code_Aster nmprta/nsassp): the imposed-value increments enter through
         ! the prediction matrix, K du = f_ext(t+) - f_int(t-) - K du_imposed, i.e. the springs
         ! are linearised about the start of the step (doc/analysis.md, "Prediction").
+        t0 = wall_seconds()
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
             state%closed, state%fn, st, state%linear, u_ref=state%u_start, &
             elastic_ref=prediction_is_elastic(options), history=state%history)
         if (st%failed()) return
+        call count_forces(state, t0)
         do iter = 0, options%iter_glob_maxi
             call options%deadline%check('STAT_NON_LINE at INST ' // real_e13(t) // &
                                         ', Newton iteration ' // to_text(iter), st)
@@ -418,10 +425,12 @@ contains
             call hat_body_part(state%solver, r, x)
             call scatter_free(map, alpha * x, du_body)
             history(:, iter) = state%closed
+            seconds = wall_seconds()
             call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
                 state%fint, state%closed, state%fn, st, state%linear, history=state%history, &
                 du_body=du_body)
             if (st%failed()) return
+            call count_forces(state, seconds)
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
@@ -473,6 +482,8 @@ contains
         call log_add(log, '  solves with a factor: ' // to_text(state%solves) // &
             '; tangents through another status''s factor: ' // to_text(state%updated) // &
             '; corrections damped by the line search: ' // to_text(state%damped))
+        call log_add(log, '  internal forces: ' // to_text(state%force_evaluations) // &
+            ' evaluation(s), ' // seconds_text(state%force_seconds) // ' s')
         call log_add(log, '  closed in the step: ' // changed_names(s, map, start, &
             state%closed, want_closed=.true.))
         call log_add(log, '  opened in the step: ' // changed_names(s, map, start, &
@@ -499,6 +510,15 @@ contains
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
+
+    !> One more evaluation of the internal forces, started at wall time t0 (the step's count
+    !> and time, for the .mess: doc/performance.md measures them).
+    subroutine count_forces(state, t0)
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: t0
+        state%force_evaluations = state%force_evaluations + 1
+        state%force_seconds = state%force_seconds + (wall_seconds() - t0)
+    end subroutine count_forces
 
     !> The .mess line on the digits the converged answer holds: one solve with the factor
     !> for the final residual (computed from the increments, element by element: without

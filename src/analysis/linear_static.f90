@@ -19,7 +19,7 @@ module linear_static
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
         internal_forces, gather_free, scatter_free
     use assembly_loads, only: mark_imposed
-    use analysis_excitation, only: excitation_t, loads_at
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
     use analysis_relations, only: prepare_relations, relations_at
     use assembly_relations, only: elimination_t
     use analysis_solver, only: factor_and_diagnose_linear, open_solver, log_numbering, &
@@ -65,7 +65,8 @@ contains
         class(direct_solver_t), allocatable :: solver
         type(held_t) :: held
         logical, allocatable :: imposed(:), closed(:), rigid(:)
-        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:), du(:)
+        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:), du(:), &
+            forc(:)
         type(elimination_t) :: elim
         integer(i4) :: k, n_eq, pass
         if (any(s%choc)) then
@@ -90,7 +91,7 @@ contains
         call open_solver(s, map, options, matrix, solver, log, st)
         if (present(progress) .and. st%ok()) solver%progress => progress
         if (st%failed()) return
-        allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), r(map%n_free), &
+        allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
             x(map%n_free), du(n_eq), closed(0), fn(0))
         u = 0.0_dp
         call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
@@ -118,7 +119,9 @@ contains
                 call internal_forces(s, map, u, fint, closed, fn, st, u_body=u_body)
                 if (st%failed()) return
             end do
-            call result_store(res, k, times(k), u, fint, merge(fint - fext, 0.0_dp, &
+            call recorded_internal_forces(s, times(k), fint, forc, st)   ! less thermal forces
+            if (st%failed()) return
+            call result_store(res, k, times(k), u, forc, merge(fint - fext, 0.0_dp, &
                 map%constrained))
             call log_add(log, 'INST ' // to_text(times(k)) // ': solved; the answer holds ' &
                 // real_digits(answer_digits(x, u)) // ' significant digits (correction ' // &

@@ -109,6 +109,9 @@ module newton_state
         type(pivot_diagnosis_t) :: judged
         type(held_t) :: held                !< equations held with the check off
         integer(i4) :: factorizations = 0, solves = 0, updated = 0, damped = 0  !< this step
+        !> evaluations of the internal forces in this step, and their wall time (s)
+        integer(i4) :: force_evaluations = 0
+        real(dp) :: force_seconds = 0.0_dp
         logical :: refactored = .false.
         integer(i4) :: nprec = 0            !< SOLVEUR/NPREC
         type(solver_options_t) :: solver_options

@@ -405,7 +405,7 @@ contains
     end function error_line
 
     !> Takes from an export file what the run needs: its command files (in order), its
-    !> units (F mmed|med|mail|msh NAME D U, and the result files parasol writes on a unit),
+    !> units (every F TYPE NAME D|R U with U > 0, as run_aster makes it fort.U),
     !> its modules (F nom), its listings (F mess|resu NAME R U) and its time limit.
     !>  files : out, the command files;  file_lines : out, their F comm lines
     subroutine apply_export(ctx, exp, files, file_lines, mess_path, resu_path)
@@ -428,7 +428,7 @@ contains
                 case ('mess', 'resu')
                     if (e%result .and. e%type == 'mess') mess_path = e%path
                     if (e%result .and. e%type == 'resu') resu_path = e%path
-                case ('mmed', 'med', 'mail', 'msh', 'rmed')
+                case default            ! any other file on a unit, as run_aster's fort.U
                     if (e%unit > 0) call ctx%bind_unit(e%unit, e%path)
                 end select
             end associate

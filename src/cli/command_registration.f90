@@ -3,7 +3,8 @@
 !> without a registered handler stops the run with "COMMAND is not implemented yet".
 module command_registration
     use run_context, only: run_context_t
-    use session_commands, only: run_debut, run_poursuite, run_fin
+    use session_commands, only: run_debut, run_poursuite, run_fin, run_debug, &
+        run_defi_fichier, run_detruire
     use function_commands, only: run_defi_constante, run_defi_fonction, run_formule, &
         run_defi_list_reel
     use test_resu_command, only: run_test_resu
@@ -28,6 +29,7 @@ module command_registration
     use lire_table_command, only: run_lire_table
     use recu_fonction_command, only: run_recu_fonction
     use calc_fonction_command, only: run_calc_fonction
+    use post_releve_command, only: run_post_releve_t
     use test_fonction_command, only: run_test_fonction
     use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
@@ -46,6 +48,10 @@ contains
         call ctx%register('DEBUT', run_debut, at_check=.true.)
         call ctx%register('POURSUITE', run_poursuite, at_check=.true.)
         call ctx%register('FIN', run_fin)
+        call ctx%register('DEBUG', run_debug)
+        call ctx%register('DEFI_FICHIER', run_defi_fichier)
+        ! DETRUIRE forgets names: the check pass too, so that it sees the names the run sees
+        call ctx%register('DETRUIRE', run_detruire, at_check=.true.)
         call ctx%register('DEFI_CONSTANTE', run_defi_constante, at_check=.true.)
         call ctx%register('DEFI_FONCTION', run_defi_fonction, at_check=.true.)
         call ctx%register('FORMULE', run_formule, at_check=.true.)
@@ -77,6 +83,7 @@ contains
         call ctx%register('LIRE_TABLE', run_lire_table)
         call ctx%register('RECU_FONCTION', run_recu_fonction)
         call ctx%register('CALC_FONCTION', run_calc_fonction)
+        call ctx%register('POST_RELEVE_T', run_post_releve_t)
         call ctx%register('TEST_FONCTION', run_test_fonction)
         call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)

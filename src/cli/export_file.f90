@@ -18,13 +18,11 @@ module export_file
     implicit none
     private
 
-    !> File types read by parasol: command files, Python modules, meshes on a unit.
-    character(len=*), parameter :: READ_TYPES = ' comm nom mmed med mail msh '
     !> Result types parasol writes: its listings, and meshes/results on a unit (IMPR_RESU).
     character(len=*), parameter :: WRITTEN_TYPES = ' mess resu rmed mmed med msh '
-    !> Other Code_Aster file types: accepted, reported in the .mess, not used.
-    character(len=*), parameter :: OTHER_TYPES = ' datg mgib gibi libr unv ideas btc base ' &
-        // 'bhdf repe erre cast dat tab pos ensi para hist '
+    !> Any other type word is accepted, as run_aster accepts it (msup, libr, datg, tab, ...):
+    !> a file with a unit is bound to it (a command reading or writing that unit uses it),
+    !> one without is reported in the .mess.
 
     !> One F or R line.
     !>  folder : an R line;  type : comm, mmed, ...;  name : the path as written
@@ -308,10 +306,6 @@ contains
             call fail('bad logical unit "' // words(size(words))%s // '" (a number >= 0, ' // &
                       'e.g. 20 for a mesh, 1 for a command file)'); return
         end if
-        if (index(READ_TYPES // WRITTEN_TYPES // OTHER_TYPES, ' ' // e%type // ' ') == 0) then
-            call fail('unknown file type "' // e%type // '" (known: comm nom mmed med mail ' &
-                      // 'msh mess resu rmed' // trim(OTHER_TYPES) // ')'); return
-        end if
         if (.not. (e%data .or. e%result)) then
             call fail('flags "' // flags // '" give neither D (data) nor R (result)'); return
         end if
@@ -374,6 +368,9 @@ contains
             else if (e%result .and. index(WRITTEN_TYPES, ' ' // e%type // ' ') > 0) then
                 what = 'bound to logical unit ' // to_text(e%unit) // ' (IMPR_RESU UNITE=' // &
                     to_text(e%unit) // ' writes it)'
+            else if (e%unit > 0 .and. e%type /= 'mess' .and. e%type /= 'resu') then
+                what = 'bound to logical unit ' // to_text(e%unit) // ' (a command that ' // &
+                    'reads or writes unit ' // to_text(e%unit) // ' uses it)'
             else if (e%result) then
                 what = 'not written: parasol writes no ' // e%type // ' file'
             else

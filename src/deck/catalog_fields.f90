@@ -202,7 +202,7 @@ contains
     !> TYPE_RESU's ('@TYPE_RESU'); the AFFE block's keywords; the other operations are
     !> refused by the handler as not built.
     subroutine describe_crea_resu(c)
-        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI
         type(catalog_t), intent(inout) :: c
         call c%command('CREA_RESU', '@TYPE_RESU', reentrant='f:RESULTAT')
         call c%key('OPERATION', 'TXM', req=.true., into='AFFE ASSE PERM_CHAM PROL_RTZ ' // &
@@ -228,9 +228,27 @@ contains
         call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
         call c%end_fact()
         call c%fact('PREP_VARC')
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('EVOL_THER', 'evol_ther')
+        call c%rule(RULE_UN_PARMI, 'CHAM_GD EVOL_THER')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('CARA_ELEM', 'cara_elem', req=.true.)
-        call c%key('EVOL_THER', 'evol_ther', req=.true.)
+        call c%bloc(exists='EVOL_THER')
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
+        call c%key('LIST_INST', 'listr8')
+        call c%key('INST', 'R', max=MANY)
+        call c%rule(RULE_EXCLUS, 'LIST_INST INST')
+        call c%bloc(exists='INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%end_bloc()
+        call c%bloc(exists='LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%end_bloc()
+        call c%end_bloc()
         call c%end_fact()
         call c%key('INFO', 'I', def='1', into='1 2')
         call c%key('TITRE', 'TXM', noop=.true.)

@@ -1,5 +1,5 @@
 !> The catalog of the table commands: CREA_TABLE, CALC_TABLE, RECU_TABLE, LIRE_TABLE,
-!> TEST_TABLE, IMPR_TABLE (issue 20). Part of THE command catalog (deck_catalog_data
+!> TEST_TABLE, IMPR_TABLE, POST_RELEVE_T (issue 20). Part of THE command catalog (deck_catalog_data
 !> gathers the parts): keywords, types, cardinality, defaults and rules as Code_Aster's
 !> catalog gives them (code_aster/Cata/Commands/<command>.py; test_table takes
 !> C_TEST_REFERENCE("TABLE") of Commons/c_test_reference.py).
@@ -11,7 +11,10 @@
 !> the handler, which says so.
 module catalog_tables
     use kinds, only: dp
-    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, &
+        RULE_PRESENT_PRESENT, RULE_PRESENT_ABSENT, RULE_ENSEMBLE
+    use catalog_common, only: ANGLE_MAX
+    use number_limits, only: MAX_LENGTH
     implicit none
     private
     public :: describe_tables
@@ -32,7 +35,77 @@ contains
         call describe_lire_table(c)
         call describe_test_table(c)
         call describe_impr_table(c)
+        call describe_post_releve_t(c)
     end subroutine describe_tables
+
+    !> POST_RELEVE_T (U4.81.21): values of fields along a list of nodes, their means,
+    !> resultants and moments, in a chosen frame. Code_Aster's three blocks (EXTREMA,
+    !> MOYENNE_ARITH, the others) share their keywords here; the rules of the last block
+    !> (a node list, one quantity, ...) are checked by the handler for the operations it
+    !> governs.
+    subroutine describe_post_releve_t(c)
+        type(catalog_t), intent(inout) :: c
+        call c%command('POST_RELEVE_T', TABLE_TYPE)
+        call c%fact('ACTION', max=MANY, req=.true.)
+        call c%rule(RULE_UN_PARMI, 'RESULTAT CHAM_GD')
+        call c%key('OPERATION', 'TXM', req=.true., max=2, &
+                   into='EXTRACTION MOYENNE MOYENNE_ARITH EXTREMA')
+        call c%key('INTITULE', 'TXM', req=.true.)
+        call c%key('CHAM_GD', 'cham_no_sdaster|cham_elem')
+        call c%key('RESULTAT', 'RESU')
+        ! ---- RESULTAT: the field and the instants
+        call c%key('NOM_CHAM', 'TXM')
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('LIST_ORDRE', 'listis')
+        call c%key('NUME_MODE', 'I', max=MANY)
+        call c%key('LIST_MODE', 'listis')
+        call c%key('NOEUD_CMP', 'TXM', max=MANY)
+        call c%key('NOM_CAS', 'TXM', max=MANY)
+        call c%key('FREQ', 'R', max=MANY)
+        call c%key('LIST_FREQ', 'listr8')
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE LIST_ORDRE NUME_MODE LIST_MODE ' // &
+                    'INST LIST_INST FREQ LIST_FREQ NOEUD_CMP NOM_CAS')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        ! ---- where and what
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('MAILLE', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('NOEUD', 'TXM', max=MANY)
+        call c%key('TOUT_CMP', 'TXM', into='OUI')
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%rule(RULE_EXCLUS, 'TOUT_CMP NOM_CMP')
+        call c%key('INVARIANT', 'TXM', into='OUI')
+        call c%key('ELEM_PRINCIPAUX', 'TXM', into='OUI')
+        call c%key('RESULTANTE', 'TXM', max=MANY, &
+                   into='DX DY DZ NXX NYY NXY PRE1 PRE2 TEMP')
+        call c%key('MOMENT', 'TXM', max=MANY, into='DRX DRY DRZ MXX MYY MXY')
+        call c%key('POINT', 'R', max=MANY, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%rule(RULE_PRESENT_PRESENT, 'TRAC_DIR DIRECTION')
+        call c%rule(RULE_ENSEMBLE, 'MOMENT POINT')
+        call c%rule(RULE_PRESENT_PRESENT, 'MOMENT RESULTANTE')
+        call c%rule(RULE_PRESENT_ABSENT, 'TOUT_CMP TRAC_DIR TRAC_NOR')
+        call c%rule(RULE_EXCLUS, 'TRAC_DIR TRAC_NOR')
+        call c%rule(RULE_PRESENT_PRESENT, 'ORIGINE AXE_Z')
+        call c%key('REPERE', 'TXM', def='GLOBAL', &
+                   into='GLOBAL LOCAL POLAIRE UTILISATEUR CYLINDRIQUE')
+        call c%key('ANGL_NAUT', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ORIGINE', 'R', min=3, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('AXE_Z', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('TRAC_NOR', 'TXM', into='OUI')
+        call c%key('TRAC_DIR', 'TXM', into='OUI')
+        call c%key('DIRECTION', 'R', max=MANY, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('VECT_Y', 'R', max=MANY, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('MOYE_NOEUD', 'TXM', def='OUI', into='OUI NON')
+        call c%key('FORMAT_C', 'TXM', def='MODULE', into='MODULE REEL IMAG')
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2')
+        call c%key('TITRE', 'TXM', max=MANY)
+    end subroutine describe_post_releve_t
 
     !> One FILTRE factor keyword (TEST_TABLE, IMPR_TABLE): several values allowed when
     !> `several`.

@@ -96,6 +96,8 @@ contains
         character(len=*), intent(in) :: text
         integer :: id
         type(node_t), allocatable :: bigger(:)
+        character(len=:), allocatable :: copy
+        copy = text          ! text may be a node's own text: the pool may move below
         if (.not. allocated(self%nodes)) allocate (self%nodes(256))
         if (self%n == size(self%nodes)) then
             allocate (bigger(2 * size(self%nodes)))
@@ -105,7 +107,7 @@ contains
         self%n = self%n + 1
         id = self%n
         self%nodes(id)%kind = kind
-        self%nodes(id)%text = text
+        call move_alloc(copy, self%nodes(id)%text)
         self%nodes(id)%line = line
         self%nodes(id)%col = col
         self%nodes(id)%end_line = line

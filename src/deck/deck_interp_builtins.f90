@@ -15,7 +15,7 @@ submodule(deck_interpreter) deck_interp_builtins
         'Exception ValueError TypeError RuntimeError KeyError IndexError AssertionError ' // &
         'NotImplementedError ZeroDivisionError NameError open eval exec input set ' // &
         'frozenset iter next compile globals locals vars setattr delattr id hash complex ' // &
-        'bytes object super '
+        'bytes object super CO '
 
 contains
 
@@ -197,6 +197,23 @@ contains
             call want(0, 100000, 'sep end file flush')
             if (st%failed()) return
             call print_values()
+        case ('CO')
+            ! CO('NAME'): the name of a concept a command makes besides its result
+            call want(1, 1, '')
+            if (st%failed()) return
+            if (args(1)%kind /= VK_STR) then
+                call fail(st, ctx, id, 'CO() takes the name of the concept to make, a ' // &
+                          'string'); return
+            end if
+            if (.not. identifier(args(1)%s)) then
+                call fail(st, ctx, id, 'CO(''' // args(1)%s // '''): a concept name is a ' // &
+                          'Python name (letters, digits, _; not starting with a digit)'); return
+            end if
+            v%kind = VK_CO
+            v%s = args(1)%s
+            v%line = ctx%ast%nodes(id)%line; v%col = ctx%ast%nodes(id)%col
+        case ('TestCase')
+            call new_testcase(ctx, id, args, kwargs, v, st)     ! CA.TestCase()
         case ('callable')
             call want(1, 1, '')
             if (st%failed()) return
@@ -327,6 +344,14 @@ contains
                           kind_label(args(1)))
             end select
         end subroutine to_int
+
+        pure logical function identifier(text)
+            character(len=*), intent(in) :: text
+            identifier = len(text) > 0
+            if (.not. identifier) return
+            identifier = verify(text, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ' // &
+                '0123456789_') == 0 .and. index('0123456789', text(1:1)) == 0
+        end function identifier
 
         pure function to_lower_char(c) result(l)
             character, intent(in) :: c

@@ -10,6 +10,7 @@ submodule(deck_interpreter) deck_interp_calls
     use deck_suggest, only: did_you_mean
     use deck_concept, only: concept_t, placeholder_concept_t, concept_display_name
     use deck_command, only: command_t
+    use deck_testcase, only: testcase_t
     use deck_validate, only: validate_command
     use run_context, only: method_call_t
     implicit none
@@ -247,8 +248,8 @@ contains
                 'loops and math)'
         case ('code_aster')
             text = m%s // ': parasol does not provide Code_Aster''s Python library ' // &
-                '(its objects, macros and test helpers); only its commands are part of the ' // &
-                'deck language'
+                '(its objects and macros); of it the deck language has the commands and ' // &
+                'CA.TestCase'
         case default
             text = m%s // ': parasol does not provide the Python module ' // module
         end select
@@ -471,6 +472,10 @@ contains
             v = obj
         case (VK_CONCEPT)
             allocate (none(0))
+            if (is_testcase(obj)) then
+                call testcase_method(ctx, id, obj, name, .false., none, empty_kwargs(), v, st)
+                return
+            end if
             call use_attribute(ctx, id, obj, name, .false., none, empty_kwargs(), v, st)
         case (VK_MODULE)
             if (obj%i > 0) then                               ! a module of the deck
@@ -495,6 +500,9 @@ contains
                             'atan2 sinh cosh tanh floor ceil fabs hypot degrees radians pi e)')
                     end if
                 end select
+            else if (name == 'TestCase' .and. (obj%s == 'code_aster.CA' .or. &
+                     obj%s == 'code_aster.Utilities')) then
+                v%kind = VK_BUILTIN; v%s = 'TestCase'      ! CA.TestCase: deck_interp_testcase
             else
                 call fail(st, ctx, id, unavailable(str_value(obj%s // '.' // name)))
             end if
@@ -520,6 +528,10 @@ contains
         case (VK_UNKNOWN)
             v = obj
         case (VK_CONCEPT)
+            if (is_testcase(obj)) then
+                call testcase_method(ctx, id, obj, name, .true., args, kwargs, v, st)
+                return
+            end if
             call use_attribute(ctx, id, obj, name, .true., args, kwargs, v, st)
         case (VK_MODULE)
             call get_attribute(ctx, id, obj, name, f, st)
@@ -613,6 +625,17 @@ contains
         end function provided
     end procedure use_attribute
 
+    !> True when value v is a CA.TestCase (its methods are the interpreter's).
+    logical function is_testcase(v)
+        type(value_t), intent(in) :: v
+        is_testcase = .false.
+        if (.not. associated(v%obj)) return
+        select type (o => v%obj)
+        type is (testcase_t)
+            is_testcase = .true.
+        end select
+    end function is_testcase
+
     !> True when value v is a concept (not a placeholder) with a handler for `name`.
     module procedure has_method
         has_method = .false.
@@ -685,6 +708,9 @@ contains
         run_it = h > 0
         if (ctx%checking .and. h > 0) run_it = ctx%handlers(h)%at_check .and. &
             .not. holds_unknown(kwargs)
+        ctx%has_plain_result = .false.
+        if (allocated(ctx%produced)) deallocate (ctx%produced)
+        allocate (ctx%produced(0))
         if (.not. ctx%checking) then
             call echo_statement(ctx, cmd%name, line)
             if (h == 0) then
@@ -704,7 +730,8 @@ contains
                     return
                 end if
             end block
-        else if (len(cmd%result_type) > 0 .and. .not. associated(cmd%reuse)) then
+        else if (len(cmd%result_type) > 0 .and. .not. associated(cmd%reuse) .and. &
+                 cmd%result_type /= 'entier') then
             allocate (placeholder_concept_t :: result)
             select type (result)
             type is (placeholder_concept_t)
@@ -713,6 +740,17 @@ contains
         end if
         ctx%ncommand = ctx%ncommand + 1
         if (cmd%name == 'FIN') ctx%finished = .true.
+        call bind_outputs(st)
+        if (st%failed()) return
+        if (cmd%result_type == 'entier') then
+            ! a plain value (DEFI_FICHIER's free unit), None when the command gave none;
+            ! in the check pass, when the handler does not run, known when the deck runs
+            v%kind = VK_NONE
+            if (ctx%checking .and. .not. run_it) v%kind = VK_UNKNOWN
+            if (ctx%has_plain_result) v = ctx%plain_result
+            ctx%has_plain_result = .false.
+            return
+        end if
         if (.not. allocated(result) .and. associated(cmd%reuse)) then
             ! reuse=X: the command modified X in place; the result is X itself (as in
             ! Code_Aster, where the command's result is the reused object)
@@ -737,6 +775,41 @@ contains
         v%s = ptr%type_name()
         v%line = line; v%col = col
         call ctx%write_mess('    -> ' // ptr%summary())
+    contains
+        !> The CO('NAME') outputs of the command: made by its handler (ctx%produce), or, in
+        !> the check pass when it does not run, placeholders of a type known when it runs.
+        subroutine bind_outputs(bst)
+            type(status_t), intent(inout) :: bst
+            class(concept_t), allocatable :: stand_in
+            integer :: j
+            if (.not. allocated(kwargs%tree)) return
+            do j = 1, size(kwargs%tree)
+                if (kwargs%tree(j)%kind /= VK_CO) cycle
+                if (ctx%checking .and. .not. run_it) then
+                    allocate (placeholder_concept_t :: stand_in)
+                    select type (stand_in)
+                    type is (placeholder_concept_t)
+                        stand_in%kind_name = 'unknown'
+                    end select
+                    call ctx%produce(kwargs%tree(j)%s, stand_in, bst)
+                    if (bst%failed()) return
+                else if (.not. produced(kwargs%tree(j)%s)) then
+                    call set_error(bst, STATUS_INTERNAL, cmd%name // ' did not make the ' // &
+                        'concept ' // kwargs%tree(j)%s // ' it was asked for with CO(''' // &
+                        kwargs%tree(j)%s // ''')', file=file, line=kwargs%tree(j)%line, &
+                        column=kwargs%tree(j)%col)
+                    return
+                end if
+            end do
+        end subroutine bind_outputs
+        logical function produced(name)
+            character(len=*), intent(in) :: name
+            integer :: j
+            produced = .false.
+            do j = 1, size(ctx%produced)
+                if (ctx%produced(j)%s == name) produced = .true.
+            end do
+        end function produced
     end subroutine run_command
 
     !> Writes the statement being evaluated to the .mess once, with its line numbers.

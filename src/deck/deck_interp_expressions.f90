@@ -416,6 +416,12 @@ contains
             v = bool_value(.false.); return
         case ('None')
             v%kind = VK_NONE; return
+        case ('CA', 'code_aster')
+            ! run_aster starts a command file with `import code_aster` and
+            ! `from code_aster import CA` (run_aster/command_files.py): stand-ins here
+            v%kind = VK_MODULE; v%s = 'code_aster'
+            if (name == 'CA') v%s = 'code_aster.CA'
+            return
         end select
         if (is_builtin(name) .or. builtin_id(name) > 0) then
             v%kind = VK_BUILTIN; v%s = name

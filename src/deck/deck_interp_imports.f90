@@ -47,9 +47,8 @@ contains
         module = ctx%ast%nodes(id)%text
         if (module == 'math') then
             call from_math()
-        else if (module == 'code_aster.Commands' .or. module == 'code_aster.Cata.Syntax' &
-                 .or. module == 'code_aster.Cata.Commands' .or. module == 'Accas' .or. &
-                 module == 'Cata.cata') then
+        else if (module == 'code_aster.Commands' .or. module == 'code_aster.Cata.Commands' &
+                 .or. module == 'Accas' .or. module == 'Cata.cata') then
             call from_commands()
         else if (module == 'code_aster' .or. index(module, 'code_aster.') == 1 .or. &
                  foreign(module)) then
@@ -160,6 +159,10 @@ contains
                 x%kind = VK_MODULE
                 x%s = module // '.' // name
                 x%i = MODULE_FOREIGN
+                if (name == 'TestCase' .and. (module == 'code_aster.CA' .or. &
+                    module == 'code_aster.Utilities')) then
+                    x%kind = VK_BUILTIN; x%s = 'TestCase'; x%i = 0   ! deck_interp_testcase
+                end if
                 call bind_name(ctx, n, alias, x, frame)
             end do
         end subroutine from_foreign
@@ -169,15 +172,35 @@ contains
             integer, intent(in) :: node
             character(len=:), allocatable :: what
             if (first_word(name) == 'code_aster') then
-                what = 'Code_Aster''s Python library (' // name // ')'
+                if (everything_provided()) return
+                what = 'of Code_Aster''s Python library (' // name // ') parasol provides ' // &
+                    'the commands and CA.TestCase; the deck stops where it uses anything else'
             else
-                what = 'the Python module ' // first_word(name)
+                what = 'parasol does not provide the Python module ' // first_word(name) // &
+                    '; the deck stops where it uses it'
             end if
             call ctx%write_warning(node_file(ctx, node) // ':' // &
                 to_text(int(ctx%ast%nodes(node)%line, i4)) // ':' // &
-                to_text(int(ctx%ast%nodes(node)%col, i4)) // ': warning: parasol does not ' // &
-                'provide ' // what // '; the deck stops where it uses it')
+                to_text(int(ctx%ast%nodes(node)%col, i4)) // ': warning: ' // what)
         end subroutine warn_foreign
+
+        !> from code_aster.CA import TestCase, from code_aster.Commands import *: nothing
+        !> the deck takes is missing.
+        logical function everything_provided()
+            integer :: j, n
+            character(len=:), allocatable :: what
+            everything_provided = .false.
+            if (ctx%ast%nodes(id)%kind == N_IMPORT) return
+            do j = 1, ctx%ast%nkids(id)
+                n = ctx%ast%kid(id, j)
+                what = ctx%ast%nodes(n)%text
+                if (what == '_F' .or. ctx%catalog%find_command(what) > 0) cycle
+                if (what == 'TestCase' .and. (module == 'code_aster.CA' .or. &
+                    module == 'code_aster.Utilities')) cycle
+                return
+            end do
+            everything_provided = .true.
+        end function everything_provided
     end procedure exec_import
 
     !> 'a' of 'a.b.c'.

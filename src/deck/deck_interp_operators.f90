@@ -313,7 +313,7 @@ contains
     end procedure compare_chain
 
     !> One comparison a OP b.
-    recursive subroutine compare_pair(ctx, id, op, a, b, r, st)
+    module recursive subroutine compare_pair(ctx, id, op, a, b, r, st)
         type(run_context_t), intent(inout) :: ctx
         integer, intent(in) :: id
         character(len=*), intent(in) :: op

@@ -286,13 +286,25 @@ contains
         case (VK_DEF)
             text = '<function ' // v%s // '>'
         case (VK_BUILTIN)
-            text = '<built-in function ' // v%s // '>'
+            select case (v%s)
+            case ('int', 'float', 'str', 'bool', 'list', 'tuple', 'dict', 'set', 'frozenset', &
+                  'complex', 'bytes', 'object', 'range', 'type', 'Exception', 'ValueError', &
+                  'TypeError', 'RuntimeError', 'KeyError', 'IndexError', 'AssertionError', &
+                  'NotImplementedError', 'ZeroDivisionError', 'NameError')
+                text = '<class ''' // v%s // '''>'            ! Python's types
+            case ('TestCase')
+                text = '<class ''code_aster.Utilities.Tester.TestCase''>'
+            case default
+                text = '<built-in function ' // v%s // '>'
+            end select
         case (VK_MODULE)
             text = '<module ''' // v%s // '''>'
         case (VK_METHOD)
             text = '<method ' // v%s // '>'
         case (VK_UNKNOWN)
             text = '<known when the deck runs>'
+        case (VK_CO)
+            text = "CO('" // v%s // "')"
         case default
             text = '?'
         end select

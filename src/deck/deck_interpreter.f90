@@ -190,6 +190,14 @@ module deck_interpreter
             type(value_t), intent(out) :: v
             type(status_t), intent(inout) :: st
         end subroutine unary
+        module recursive subroutine compare_pair(ctx, id, op, a, b, r, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: op
+            type(value_t), intent(in) :: a, b
+            type(value_t), intent(out) :: r
+            type(status_t), intent(inout) :: st
+        end subroutine compare_pair
         module recursive subroutine compare_chain(ctx, id, v, st, frame)
             type(run_context_t), intent(inout) :: ctx
             integer, intent(in) :: id
@@ -335,6 +343,26 @@ module deck_interpreter
             character(len=:), allocatable, intent(out) :: text
             type(status_t), intent(inout) :: st
         end subroutine percent_format
+
+        ! ---- deck_interp_testcase ----
+        module recursive subroutine testcase_method(ctx, id, obj, name, called, args, kwargs, &
+                                                    v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: obj
+            character(len=*), intent(in) :: name
+            logical, intent(in) :: called
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine testcase_method
+        module subroutine new_testcase(ctx, id, args, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine new_testcase
 
         ! ---- deck_interp_imports ----
         module recursive subroutine exec_import(ctx, id, st, frame)

@@ -751,8 +751,15 @@ contains
                 type_accepts = is_number(v)
             case ('TXM')
                 type_accepts = v%kind == VK_STR
+            case ('assd')                        ! Code_Aster's base of every concept
+                type_accepts = v%kind == VK_CONCEPT
+            case ('CO')                          ! a concept the command makes: CO('NAME')
+                type_accepts = v%kind == VK_CO
             case default
-                if (v%kind == VK_CONCEPT) type_accepts = v%s == words(i)%s
+                ! 'unknown': a check-pass placeholder for a CO('NAME') output, whose type is
+                ! known when the command runs
+                if (v%kind == VK_CONCEPT) type_accepts = v%s == words(i)%s .or. &
+                    v%s == 'unknown'
             end select
             if (type_accepts) return
         end do
@@ -803,6 +810,10 @@ contains
                 text = text // ' or a real'
             case ('TXM')
                 text = text // ' or a text'
+            case ('assd')
+                text = text // ' or a concept'
+            case ('CO')
+                text = text // " or the name of a concept to make, CO('NAME')"
             case default
                 if (len(concepts) > 0) concepts = concepts // ' or '
                 concepts = concepts // words(i)%s

@@ -9,7 +9,8 @@ module deck_value
 
     integer, parameter, public :: VK_NONE = 0, VK_INT = 1, VK_REAL = 2, VK_BOOL = 3, &
         VK_STR = 4, VK_TUPLE = 5, VK_LIST = 6, VK_FACTOR = 7, VK_CONCEPT = 8, VK_DEF = 9, &
-        VK_BUILTIN = 10, VK_UNKNOWN = 11, VK_DICT = 12, VK_MODULE = 13, VK_METHOD = 14
+        VK_BUILTIN = 10, VK_UNKNOWN = 11, VK_DICT = 12, VK_MODULE = 13, VK_METHOD = 14, &
+        VK_CO = 15
 
     !> One node of a flattened value tree (no recursive component: gfortran 12 shares the
     !> nested levels of recursive allocatable components on assignment, so composite values
@@ -35,6 +36,7 @@ module deck_value
     !>  (and back), a list is flat like a tuple (i = 0, items in `tree`), a dict a VK_FACTOR
     !>  VK_MODULE: s = an imported module's name (math, or one parasol does not provide)
     !>  VK_METHOD: s = a method name bound to the object tree(1) (`f = L.append`)
+    !>  VK_CO: s = the name of a concept a command is asked to make, CO('NAME')
     !>  VK_CONCEPT: obj (owned by the symbol table), s = its type name
     !>  VK_DEF: s = function name, i = its N_DEF node;  VK_BUILTIN: s = name
     !>  VK_UNKNOWN: a value known only when the deck runs (the check pass's stand-in for
@@ -311,6 +313,8 @@ contains
             text = 'the module ' // v%s
         case (VK_METHOD)
             text = 'the method ' // v%s
+        case (VK_CO)
+            text = 'CO(''' // v%s // ''')'
         case default
             text = 'None'
         end select
@@ -346,7 +350,7 @@ contains
             end do
             text = text // ')'
             if (v%kind == VK_FACTOR) text = '_F' // text
-        case (VK_CONCEPT, VK_DEF, VK_BUILTIN, VK_UNKNOWN, VK_DICT, VK_MODULE, VK_METHOD)
+        case (VK_CONCEPT, VK_DEF, VK_BUILTIN, VK_UNKNOWN, VK_DICT, VK_MODULE, VK_METHOD, VK_CO)
             text = kind_label(v)
         case default
             text = 'None'

@@ -144,6 +144,12 @@ module run_context
         type(heap_t) :: heap
         !> print() output not yet ended by a line end (print(..., end=''))
         character(len=:), allocatable :: print_line
+        !> The result of a command whose Code_Aster result is a plain value (catalog type
+        !> 'entier': DEFI_FICHIER's free unit): set by its handler (has_plain_result)
+        type(value_t) :: plain_result
+        logical :: has_plain_result = .false.
+        !> The names the running command made with ctx%produce (its CO('NAME') outputs)
+        type(string_t), allocatable :: produced(:)
         !> > 0 while a def, a comprehension or an import runs: their values live on the
         !> evaluator's stack, so the heap is not collected then
         integer :: gc_hold = 0
@@ -163,9 +169,13 @@ module run_context
         procedure :: find_method => ctx_find_method
         procedure :: method_names => ctx_method_names
         procedure :: concept_value => ctx_concept_value
+        procedure :: produce => ctx_produce
         procedure :: bind_unit => ctx_bind_unit
+        procedure :: release_unit => ctx_release_unit
+        procedure :: unit_of_path => ctx_unit_of_path
         procedure :: unit_path => ctx_unit_path
         procedure :: output_path => ctx_output_path
+        procedure :: in_outdir => ctx_in_outdir
         procedure :: write_mess => ctx_write_mess
         procedure :: write_warning => ctx_write_warning
         procedure :: write_resu => ctx_write_resu
@@ -378,6 +388,25 @@ contains
         v%s = ptr%type_name()
     end subroutine ctx_concept_value
 
+    !> Makes concept `obj` the deck name `name`: what a command does for a keyword given
+    !> CO('NAME') (Code_Aster's outputs besides the result: ASSEMBLAGE's matrices,
+    !> MACRO_ELAS_MULT's ...). The context owns it; the name is bound in the command files'
+    !> namespace, as Code_Aster binds it in the deck's.
+    !>  name : the text of the CO;  obj : inout, the concept (moved);  st : out
+    subroutine ctx_produce(self, name, obj, st)
+        class(run_context_t), intent(inout) :: self
+        character(len=*), intent(in) :: name
+        class(concept_t), allocatable, intent(inout) :: obj
+        type(status_t), intent(out) :: st
+        type(value_t) :: v
+        if (allocated(obj)) obj%name = name
+        call self%concept_value(obj, v, st)
+        if (st%failed()) return
+        call self%set_symbol(name, v, 0, SCOPE_SESSION)
+        if (.not. allocated(self%produced)) allocate (self%produced(0))
+        call append_string(self%produced, name)
+    end subroutine ctx_produce
+
     !> Binds logical unit `unit` to `path` (--unit N=PATH).
     subroutine ctx_bind_unit(self, unit, path)
         class(run_context_t), intent(inout) :: self
@@ -386,6 +415,43 @@ contains
         self%unit_numbers = [self%unit_numbers, int(unit, i4)]
         call append_string(self%unit_paths, path)
     end subroutine ctx_bind_unit
+
+    !> Frees logical unit `unit` (DEFI_FICHIER ACTION='LIBERER'): its bindings are gone.
+    !>  found : out, the unit was bound
+    subroutine ctx_release_unit(self, unit, found)
+        class(run_context_t), intent(inout) :: self
+        integer, intent(in) :: unit
+        logical, intent(out) :: found
+        integer(i4), allocatable :: numbers(:)
+        type(string_t), allocatable :: paths(:)
+        integer :: k
+        found = .false.
+        allocate (numbers(0), paths(0))
+        do k = 1, size(self%unit_numbers)
+            if (self%unit_numbers(k) == unit) then
+                found = .true.
+                cycle
+            end if
+            numbers = [numbers, self%unit_numbers(k)]
+            call append_string(paths, self%unit_paths(k)%s)
+        end do
+        call move_alloc(numbers, self%unit_numbers)
+        call move_alloc(paths, self%unit_paths)
+    end subroutine ctx_release_unit
+
+    !> The logical unit bound to file `path` (the latest binding), 0 if none.
+    integer function ctx_unit_of_path(self, path) result(unit)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: path
+        integer :: k
+        unit = 0
+        do k = size(self%unit_paths), 1, -1
+            if (self%unit_paths(k)%s == path) then
+                unit = self%unit_numbers(k)
+                return
+            end if
+        end do
+    end function ctx_unit_of_path
 
     !> The file of logical unit `unit` for a reader of format `format` (ASTER, GMSH, MED).
     !> An unbound unit 20 is the deck's stem with the format's extension beside the deck
@@ -426,15 +492,23 @@ contains
         class(run_context_t), intent(in) :: self
         character(len=*), intent(in) :: suffix
         character(len=:), allocatable :: path
-        path = self%deck_stem // suffix
+        path = self%in_outdir(self%deck_stem // suffix)
+    end function ctx_output_path
+
+    !> `file` in the output folder (as given when there is none).
+    function ctx_in_outdir(self, file) result(path)
+        class(run_context_t), intent(in) :: self
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable :: path
+        path = file
         if (len(self%outdir) > 0) then
             if (ends_with(self%outdir, '/')) then
-                path = self%outdir // path
+                path = self%outdir // file
             else
-                path = self%outdir // '/' // path
+                path = self%outdir // '/' // file
             end if
         end if
-    end function ctx_output_path
+    end function ctx_in_outdir
 
     !> Writes one line to the .mess (nothing during the check pass or without a file).
     !> Each line is flushed: the .mess grows as the run goes (its temporary name, see

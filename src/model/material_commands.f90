@@ -18,6 +18,7 @@ module material_commands
     use model_material_merge, only: merge_materials
     use material_concept, only: material_concept_t, material_field_concept_t
     use function_concept, only: function_concept_t
+    use varc_commands, only: affe_varc_occurrences
     implicit none
     private
 
@@ -271,6 +272,8 @@ contains
             call ctx%write_mess('    material ' // merged%name // ' on ' // &
                                 to_text(size(cells, kind=i4)) // ' cells')
         end do
+        call affe_varc_occurrences(ctx, cmd, fc%mesh, fc%field%varc, st)
+        if (st%failed()) return
         call move_alloc(fc, result)
     end subroutine run_affe_materiau
 

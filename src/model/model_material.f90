@@ -16,6 +16,7 @@ module model_material
     use function_concept, only: function_concept_t
     use mesh_types, only: mesh_t, cell_label
     use model_types, only: model_t, is_plate, is_plane_solid, ELEMENT_NAMES
+    use model_varc, only: varc_field_t, varc_init
     implicit none
     private
 
@@ -85,6 +86,7 @@ module model_material
     type, public :: material_field_t
         type(material_t), allocatable :: materials(:)
         integer(i4), allocatable :: cell_material(:)
+        type(varc_field_t) :: varc          !< AFFE_VARC (model_varc, elem's)
     end type material_field_t
 
     public :: material_field_init, assign_material, check_materials, material_of_cell, &
@@ -107,6 +109,7 @@ contains
         type(mesh_t), intent(in) :: mesh
         allocate (field%materials(0))
         allocate (field%cell_material(mesh%n_cells), source=0_i4)
+        call varc_init(field%varc, mesh%n_cells)
     end subroutine material_field_init
 
     !> Assigns `material` to `cells` (later assignments override earlier ones). The material

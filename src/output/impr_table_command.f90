@@ -14,7 +14,8 @@
 !> FORMAT='XMGRACE' (a plot) and 'NUMPY' (a binary array) are not written by parasol:
 !> a located error says so.
 module impr_table_command
-    use kinds, only: i4
+    use kinds, only: i4, dp
+    use progress, only: wall_seconds
     use strings, only: string_t, to_text
     use status, only: status_t, STATUS_NOT_IMPLEMENTED, STATUS_MODEL_ERROR
     use python_format, only: float_repr, parse_real_format
@@ -56,6 +57,8 @@ contains
         integer, allocatable :: rows(:), columns(:)
         character(len=:), allocatable :: format, where
         integer :: unit
+        real(dp) :: start
+        start = wall_seconds()
         if (allocated(result)) deallocate (result)
         call table_of_keyword(cmd, 'TABLE', t, st)
         if (st%ok()) call cmd%get_text('FORMAT', format, st)
@@ -94,8 +97,15 @@ contains
         call ctx%write_mess('    IMPR_TABLE: ' // concept_display_name(t) // ' (' // &
             to_text(int(selected%n_rows, i4)) // ' rows, ' // &
             to_text(int(size(columns), i4)) // ' columns, FORMAT ' // format // ') -> ' // &
-            where)
+            where // ', ' // trim(seconds_of(wall_seconds() - start)) // ' s')
     end subroutine run_impr_table
+
+    !> Seconds as text (three decimals).
+    function seconds_of(seconds) result(text)
+        real(dp), intent(in) :: seconds
+        character(len=32) :: text
+        write (text, '(f0.3)') seconds
+    end function seconds_of
 
     !> 1, 2, ..., n_rows.
     pure function all_rows(t) result(rows)

@@ -21,13 +21,10 @@
 !> DEBUT_TABLE replaces the three heading lines, FIN_TABLE the final empty line;
 !> DEBUT_LIGNE / FIN_LIGNE frame every other line; COMM_PARA starts the line of names.
 module table_listing
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use kinds, only: dp, i4, i8
-    use strings, only: string_t, to_text, to_upper
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use strings, only: string_t
     use table_concept, only: table_t, table_column_t, TABLE_INT, TABLE_REAL, TABLE_TEXT, &
         table_kind_label
-    use python_format, only: real_format_t, format_real
+    use python_format, only: real_format_t, format_real_column
     implicit none
     private
 
@@ -41,6 +38,12 @@ module table_listing
         character(len=:), allocatable :: data
         integer :: used = 0
     end type text_buffer_t
+
+    !> The formatted values of one numeric column, per row written.
+    type :: cell_texts_t
+        character(len=:), allocatable :: text(:)
+        integer, allocatable :: length(:)
+    end type cell_texts_t
 
     !> How IMPR_TABLE lays a table out.
     type, public :: table_layout_t
@@ -84,14 +87,15 @@ contains
         type(table_layout_t), intent(in) :: layout
         type(string_t), allocatable, intent(out) :: lines(:)
         integer, allocatable :: widths(:)
-        type(string_t), allocatable :: names(:), types(:), cells(:)
+        type(string_t), allocatable :: names(:), types(:)
+        type(cell_texts_t), allocatable :: numbers(:)
         logical :: aster, padded_names
         integer :: c, k, n
         type(text_buffer_t) :: buffer
         aster = layout%format == 'ASTER'
         padded_names = index(layout%separator, ' ') > 0
         n = size(columns)
-        allocate (widths(n), names(n), types(n), cells(n))
+        allocate (widths(n), names(n), types(n))
         do c = 1, n
             associate (col => t%columns(columns(c)))
                 widths(c) = column_width(col, layout%real_format)
@@ -120,17 +124,105 @@ contains
         end do
         call add(layout%names_prefix // joined(names, aster))
         if (aster) call add(joined(types, .true.))
+        call prepare_cells()
         do k = 1, size(rows)
             if (.not. any([(t%columns(columns(c))%present(rows(k)), c=1, n)])) cycle
+            call add_raw(layout%line_start)
             do c = 1, n
-                cells(c)%s = value_cell(t%columns(columns(c)), rows(k), widths(c), layout)
+                if (c > 1 .or. aster) call add_raw(layout%separator)
+                call add_cell(c, k)
             end do
-            call add(joined(cells, aster))
+            call add_raw(layout%line_end)
         end do
         if (aster) call add('#FIN_TABLE')
         call add_raw(layout%footer // new_line('a'))
         call split_lines(buffer%data(1:buffer%used), lines)
     contains
+        !> The formatted numbers of each numeric column, for the rows written, in one
+        !> internal write per column (format_real_column).
+        subroutine prepare_cells()
+            integer :: cc, i
+            character(len=24), allocatable :: digits(:)
+            allocate (numbers(n))
+            do cc = 1, n
+                associate (col => t%columns(columns(cc)), cell => numbers(cc))
+                    select case (col%kind)
+                    case (TABLE_REAL)
+                        allocate (character(len=max(64, layout%real_format%lead + &
+                                  layout%real_format%width + 1)) :: cell%text(size(rows)))
+                        allocate (cell%length(size(rows)))
+                        call format_real_column(layout%real_format, col%reals(rows), cell%text, &
+                                                cell%length)
+                    case (TABLE_INT)
+                        allocate (digits(size(rows)))
+                        allocate (character(len=24) :: cell%text(size(rows)))
+                        allocate (cell%length(size(rows)))
+                        if (size(rows) > 0) write (digits, '(i0)') col%ints(rows)
+                        do i = 1, size(rows)
+                            cell%length(i) = max(len_trim(digits(i)), INT_WIDTH)
+                            cell%text(i) = repeat(' ', cell%length(i) - len_trim(digits(i))) // &
+                                trim(digits(i))
+                        end do
+                        deallocate (digits)
+                    case default
+                    end select
+                end associate
+            end do
+        end subroutine prepare_cells
+
+        !> Cell (column c, k-th row written) into the buffer, as value_cell makes it.
+        subroutine add_cell(c, k)
+            integer, intent(in) :: c, k
+            integer :: own, lead, row
+            row = rows(k)
+            associate (col => t%columns(columns(c)))
+                lead = 0
+                select case (col%kind)
+                case (TABLE_TEXT)
+                    own = col%width
+                case (TABLE_INT)
+                    own = INT_WIDTH
+                case default
+                    lead = layout%real_format%lead
+                    own = lead + layout%real_format%width
+                end select
+                if (.not. col%present(row) .and. layout%format == 'AGRAF') call add_raw('\')
+                call add_spaces(max(widths(c) - own, 0))
+                if (.not. col%present(row)) then
+                    call add_spaces(lead)
+                    call add_raw('-')
+                    call add_spaces(own - lead - 1)
+                    return
+                end if
+                select case (col%kind)
+                case (TABLE_TEXT)
+                    call add_raw(col%texts(row)%s)
+                    call add_spaces(col%width - len(col%texts(row)%s))
+                case default
+                    call add_raw(numbers(c)%text(k)(1:numbers(c)%length(k)))
+                end select
+            end associate
+        end subroutine add_cell
+
+        subroutine add_spaces(count)
+            integer, intent(in) :: count
+            if (count <= 0) return
+            call reserve(count)
+            buffer%data(buffer%used + 1:buffer%used + count) = repeat(' ', count)
+            buffer%used = buffer%used + count
+        end subroutine add_spaces
+
+        subroutine reserve(extra)
+            integer, intent(in) :: extra
+            character(len=:), allocatable :: bigger
+            if (buffer%used + extra > len(buffer%data)) then
+                allocate (character(len=max(2 * len(buffer%data), buffer%used + extra)) :: &
+                          bigger)
+                bigger(1:buffer%used) = buffer%data(1:buffer%used)
+                call move_alloc(bigger, buffer%data)
+            end if
+        end subroutine reserve
+
         !> A line framed by DEBUT_LIGNE and FIN_LIGNE.
         subroutine add(text)
             character(len=*), intent(in) :: text
@@ -140,13 +232,7 @@ contains
         !> Appends to the buffer (its capacity doubles: linear in the table's size).
         subroutine add_raw(text)
             character(len=*), intent(in) :: text
-            character(len=:), allocatable :: bigger
-            if (buffer%used + len(text) > len(buffer%data)) then
-                allocate (character(len=max(2 * len(buffer%data), buffer%used + len(text))) :: &
-                          bigger)
-                bigger(1:buffer%used) = buffer%data(1:buffer%used)
-                call move_alloc(bigger, buffer%data)
-            end if
+            call reserve(len(text))
             buffer%data(buffer%used + 1:buffer%used + len(text)) = text
             buffer%used = buffer%used + len(text)
         end subroutine add_raw
@@ -199,43 +285,6 @@ contains
         shift = max(min(width - len(label), width - own), 0)
         text = repeat(' ', shift + lead) // pad_right(label, own - lead)
     end function header_cell
-
-    !> One cell: its value in the column's format, right-aligned in the column's width
-    !> (texts left-aligned in their Kn width); '-' (AGRAF '\-') for an absent cell.
-    function value_cell(col, row, width, layout) result(text)
-        type(table_column_t), intent(in) :: col
-        integer, intent(in) :: row, width
-        type(table_layout_t), intent(in) :: layout
-        character(len=:), allocatable :: text
-        character(len=24) :: buf
-        integer :: own, lead
-        lead = 0
-        select case (col%kind)
-        case (TABLE_TEXT)
-            own = col%width
-        case (TABLE_INT)
-            own = INT_WIDTH
-        case default
-            lead = layout%real_format%lead
-            own = lead + layout%real_format%width
-        end select
-        if (.not. col%present(row)) then
-            text = repeat(' ', lead) // pad_right('-', own - lead)
-        else
-            select case (col%kind)
-            case (TABLE_INT)
-                write (buf, '(i0)') col%ints(row)
-                text = trim(buf)
-                if (len(text) < INT_WIDTH) text = repeat(' ', INT_WIDTH - len(text)) // text
-            case (TABLE_REAL)
-                text = format_real(layout%real_format, col%reals(row))
-            case default
-                text = pad_right(col%texts(row)%s, col%width)
-            end select
-        end if
-        text = repeat(' ', max(width - own, 0)) // text
-        if (.not. col%present(row) .and. layout%format == 'AGRAF') text = '\' // text
-    end function value_cell
 
     !> The lines of a text (split at new lines; a final new line ends the last line).
     subroutine split_lines(text, lines)

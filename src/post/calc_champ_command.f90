@@ -277,7 +277,8 @@ contains
                     PLATE_GENERAL_CMPS, made, st, job%cells)
             case ('EPSI_ELGA')
                 call require_state(r, st)
-                if (st%ok()) call strain_field(r, r%depl(:, at), made, st, job%cells)
+                if (st%ok()) call strain_field(r, r%depl(:, at), made, st, job%cells, &
+                    r%inst(at))
             case ('SIEQ_ELGA', 'SIEQ_ELNO')
                 call input_field(job, at, 'SIGM' // name(5:), source, st)
                 if (st%ok()) call equivalent_field(source, 'SIGM', made, st)
@@ -334,11 +335,11 @@ contains
         if (st%failed()) return
         if (location == FIELD_ELNO .and. .not. job%linear) then
             call plate_field(r, r%depl(:, at), PLATE_FORCES, FIELD_ELGA, 'SIEF_R', &
-                PLATE_FORCES_CMPS, gauss, st, job%cells)
+                PLATE_FORCES_CMPS, gauss, st, job%cells, inst=r%inst(at))
             if (st%ok()) call gauss_to_nodes(gauss, r%mesh, r%model, plates, st)
         else
             call plate_field(r, r%depl(:, at), PLATE_FORCES, location, 'SIEF_R', &
-                PLATE_FORCES_CMPS, plates, st, job%cells)
+                PLATE_FORCES_CMPS, plates, st, job%cells, inst=r%inst(at))
         end if
         if (st%failed()) return
         any_spring = any(is_discrete(r%model%element) .and. job%cells)

@@ -31,6 +31,7 @@ module crea_resu_command
     use result_fields, only: result_fields_t, result_fields_init, result_add_instant, &
         result_put_field, result_find
     use analysis_result, only: result_concept_t
+    use crea_resu_prep_varc, only: run_prep_varc
     implicit none
     private
 
@@ -54,9 +55,13 @@ contains
         call cmd%get_text('OPERATION', operation, st)
         if (st%ok()) call cmd%get_text('TYPE_RESU', kind, st)
         if (st%failed()) return
+        if (operation == 'PREP_VARC') then      ! the layers of plates (elem's module)
+            call run_prep_varc(ctx, cmd, result, st)
+            return
+        end if
         if (operation /= 'AFFE') then
             call cmd%error_at('OPERATION', 'OPERATION=''' // operation // ''' is not built ' // &
-                'in parasol (AFFE is)', st, STATUS_NOT_IMPLEMENTED)
+                'in parasol (AFFE and PREP_VARC are)', st, STATUS_NOT_IMPLEMENTED)
             return
         end if
         kind = to_lower(kind)

@@ -25,8 +25,7 @@ module crea_table_command
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node_group, find_cell_group, nodes_of_group, &
-        cells_of_group, node_name, cell_name
+    use mesh_types, only: mesh_t, node_name, cell_name
     use mesh_concept, only: mesh_concept_t
     use model_concept, only: model_concept_t
     use field_types, only: field_t, FIELD_NOEU, FIELD_ELGA, FIELD_ELNO, FIELD_ELEM, &
@@ -40,6 +39,7 @@ module crea_table_command
     use table_keywords, only: relocate_at
     use function_points, only: function_samples_t, samples_of_function
     use result_instants, only: selected_instants
+    use crea_champ_command, only: selected_nodes, selected_cells
     implicit none
     private
 
@@ -530,29 +530,16 @@ contains
     !> The cells an occurrence designates: TOUT (every cell), GROUP_MA (each cell once, in
     !> the mesh's order).
     subroutine cells_of_occurrence(occ, mesh, cells, st)
-        class(keyword_set_t), intent(in) :: occ
+        type(keyword_set_t), intent(in) :: occ
         type(mesh_t), intent(in) :: mesh
         integer, allocatable, intent(out) :: cells(:)
         type(status_t), intent(inout) :: st
         logical, allocatable :: chosen(:)
-        type(string_t), allocatable :: names(:)
-        integer(i4) :: g
         integer :: k
-        allocate (chosen(mesh%n_cells), source=.false.)
-        if (occ%has('TOUT')) chosen = .true.
-        if (occ%has('GROUP_MA')) then
-            call occ%get_texts('GROUP_MA', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_cell_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate_at(occ, 'GROUP_MA', st)
-                    return
-                end if
-                chosen(cells_of_group(mesh, g)) = .true.
-            end do
-        end if
-        cells = pack([(k, k=1, mesh%n_cells)], chosen)
+        allocate (cells(0))
+        if (.not. (occ%has('TOUT') .or. occ%has('GROUP_MA'))) return
+        call selected_cells(occ, mesh, chosen, st)
+        if (st%ok()) cells = pack([(k, k=1, mesh%n_cells)], chosen)
     end subroutine cells_of_occurrence
 
     !> The mesh a field concept's numbers refer to (its support: a maillage or a modele).
@@ -599,47 +586,15 @@ contains
     !> nodes of their cells), NOEUD; each node once, in the mesh's order.
     !>  st : located at the group or node that does not exist
     subroutine nodes_of_occurrence(occ, mesh, nodes, st)
-        class(keyword_set_t), intent(in) :: occ
+        type(keyword_set_t), intent(in) :: occ
         type(mesh_t), intent(in) :: mesh
         integer, allocatable, intent(out) :: nodes(:)
         type(status_t), intent(inout) :: st
         logical, allocatable :: chosen(:)
-        type(string_t), allocatable :: names(:)
-        integer(i4), allocatable :: members(:)
-        integer(i4) :: g, c
-        integer :: k, i
-        allocate (chosen(mesh%n_nodes), source=.false.)
-        if (occ%has('TOUT')) chosen = .true.
-        if (occ%has('GROUP_NO')) then
-            call occ%get_texts('GROUP_NO', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_node_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate_at(occ, 'GROUP_NO', st)
-                    return
-                end if
-                members = nodes_of_group(mesh, g)
-                chosen(members) = .true.
-            end do
-        end if
-        if (occ%has('GROUP_MA')) then
-            call occ%get_texts('GROUP_MA', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_cell_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate_at(occ, 'GROUP_MA', st)
-                    return
-                end if
-                members = cells_of_group(mesh, g)
-                do i = 1, size(members)
-                    c = members(i)
-                    chosen(mesh%cell_nodes(mesh%cell_ptr(c):mesh%cell_ptr(c + 1) - 1)) = .true.
-                end do
-            end do
-        end if
-        nodes = pack([(k, k=1, mesh%n_nodes)], chosen)
+        integer :: k
+        allocate (nodes(0))
+        call selected_nodes(occ, mesh, chosen, st)
+        if (st%ok()) nodes = pack([(k, k=1, mesh%n_nodes)], chosen)
     end subroutine nodes_of_occurrence
 
 end module crea_table_command

@@ -32,11 +32,13 @@ module element_fields
         FIELD_ELGA, FIELD_ELNO
     use analysis_result, only: result_concept_t
     use plate_options, only: plate_cell_t, plate_prepare, plate_values, plate_value_count, &
-        PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS, PLATE_STRAIN_CMPS
+        PLATE_STRESS, PLATE_STRAIN, PLATE_STRESS_CMPS, PLATE_STRAIN_CMPS, &
+        PLATE_FORCES
     use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLATE, &
         MAX_GAUSS_POINTS
     use element_plane, only: plane_law_t, plane_law_isotropic, plane_rigi_rule, &
         plane_point_state
+    use assembly_varc, only: plate_thermal_strains, plane_thermal_strains
     implicit none
     private
 
@@ -128,10 +130,10 @@ contains
             if (n_points(c) == 0) cycle
             if (cell_set(c) == 1) then
                 call plate_cell_values(res, c, res%depl(:, at), PLATE_STRESS, .false., &
-                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst=res%inst(at))
             else if (cell_set(c) == 4) then
                 call plane_cell_values(res, c, res%depl(:, at), .true., &
-                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst=res%inst(at))
             else if (spring_of(c) > 0 .and. res%choc(c)) then
                 call stored_spring_values(res, spring_of(c), at, n_points(c), &
                     size(sets(cell_set(c))%cmp, kind=i4), &
@@ -148,12 +150,13 @@ contains
     !> EPSI_ELGA at the Gauss points of the plates and plane elements of `cells` (every
     !> cell when absent) for the displacements u (module header).
     !>  st : element failures naming the cell
-    subroutine strain_field(res, u, f, st, cells)
+    subroutine strain_field(res, u, f, st, cells, inst)
         type(result_concept_t), intent(in) :: res
         real(dp), intent(in) :: u(:)
         type(field_t), intent(out) :: f
         type(status_t), intent(out) :: st
         logical, intent(in), optional :: cells(:)
+        real(dp), intent(in), optional :: inst     !< the instant (C_PLAN's thermal EPZZ)
         type(string_t), allocatable :: cmps(:)
         type(component_set_t) :: sets(2)
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:)
@@ -194,7 +197,7 @@ contains
                     f%values(f%offset(c) + 1:f%offset(c + 1)), st)
             else if (cell_set(c) == 2) then
                 call plane_cell_values(res, c, u, .false., &
-                    f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst)
             end if
             if (st%failed()) return
         end do
@@ -229,15 +232,20 @@ contains
 
     !> A plane cell's stresses SIXX SIYY SIZZ SIXY (stresses) or strains EPXX EPYY EPZZ
     !> EPXY at its RIGI points, point by point (element_plane plane_point_state), from its
-    !> material's ELAS and the displacements u (an equation vector of the result's dofs).
+    !> material's ELAS and the displacements u (an equation vector of the result's dofs);
+    !> with `inst`, the thermal strains of AFFE_VARC there (assembly_varc) are taken off
+    !> the stresses and give C_PLAN's EPZZ.
     !>  st : STATUS_MODEL_ERROR naming the cell (no material, no ELAS, a degenerate cell)
-    subroutine plane_cell_values(res, c, u, stresses, values, st)
+    subroutine plane_cell_values(res, c, u, stresses, values, st, inst)
         type(result_concept_t), intent(in) :: res
         integer(i4), intent(in) :: c
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: stresses
         real(dp), intent(out) :: values(:)
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: inst
+        real(dp) :: eps0(4, MAX_GAUSS_POINTS)
+        logical :: has
         type(gauss_rule_t) :: rule
         type(plane_law_t) :: law
         real(dp) :: xy(2, MAX_CELL_NODES), ue(2 * MAX_CELL_NODES)
@@ -269,8 +277,16 @@ contains
             call plane_law_isotropic(e%e, e%nu, is_plane_strain(res%model%element(c)), law, st)
         end associate
         if (st%ok()) call plane_rigi_rule(ctype, rule, st)
-        if (st%ok()) call plane_point_state(ctype, xy(:, 1:nn), law, ue(1:2 * nn), rule, &
-            sig(:, 1:rule%n), eps(:, 1:rule%n), st)
+        has = .false.
+        if (st%ok() .and. present(inst)) call plane_thermal_strains(res%mesh, res%model, &
+            res%materials, c, inst, rule, eps0(:, 1:rule%n), has, st)
+        if (st%ok() .and. has) then
+            call plane_point_state(ctype, xy(:, 1:nn), law, ue(1:2 * nn), rule, &
+                sig(:, 1:rule%n), eps(:, 1:rule%n), st, eps0(:, 1:rule%n))
+        else if (st%ok()) then
+            call plane_point_state(ctype, xy(:, 1:nn), law, ue(1:2 * nn), rule, &
+                sig(:, 1:rule%n), eps(:, 1:rule%n), st)
+        end if
         if (st%failed()) then
             st%message = cell_label(res%mesh, c) // ': ' // st%message
             return
@@ -286,7 +302,7 @@ contains
     !> when absent), at RIGI points (ELGA) or at the nodes (ELNO, evaluated there).
     !>  location : in, FIELD_ELGA or FIELD_ELNO
     !>  quantity, cmps : in, the field's quantity and the kind's components
-    subroutine plate_field(res, u, kind, location, quantity, cmps, f, st, cells)
+    subroutine plate_field(res, u, kind, location, quantity, cmps, f, st, cells, inst)
         type(result_concept_t), intent(in) :: res
         real(dp), intent(in) :: u(:)
         integer(i4), intent(in) :: kind, location
@@ -294,6 +310,7 @@ contains
         type(field_t), intent(out) :: f
         type(status_t), intent(out) :: st
         logical, intent(in), optional :: cells(:)
+        real(dp), intent(in), optional :: inst     !< the instant (thermal strains, elem's)
         type(string_t), allocatable :: names(:)
         type(component_set_t) :: sets(1)
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:)
@@ -320,19 +337,22 @@ contains
         do c = 1, res%mesh%n_cells
             if (n_points(c) == 0) cycle
             call plate_cell_values(res, c, u, kind, location == FIELD_ELNO, &
-                f%values(f%offset(c) + 1:f%offset(c + 1)), st)
+                f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst)
             if (st%failed()) return
         end do
     end subroutine plate_field
 
-    !> The values of one plate cell, at its RIGI points or at its nodes.
-    subroutine plate_cell_values(res, c, u, kind, at_nodes, values, st)
+    !> The values of one plate cell, at its RIGI points or at its nodes; with `inst`, the
+    !> stresses and forces without the thermal strains of AFFE_VARC there (assembly_varc).
+    subroutine plate_cell_values(res, c, u, kind, at_nodes, values, st, inst)
         type(result_concept_t), intent(in) :: res
         integer(i4), intent(in) :: c, kind
         real(dp), intent(in) :: u(:)
         logical, intent(in) :: at_nodes
         real(dp), intent(out) :: values(:)
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: inst
+        logical :: has
         type(plate_cell_t) :: pc
         type(gauss_rule_t) :: rule
         integer(i4) :: np
@@ -346,6 +366,13 @@ contains
             call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': ' // &
                 to_text(size(values)) // ' values expected')
             return
+        end if
+        if (present(inst) .and. (kind == PLATE_STRESS .or. kind == PLATE_FORCES)) then
+            allocate (pc%eps_th(3 * pc%layers, np))
+            call plate_thermal_strains(res%mesh, res%materials, res%cara, c, inst, &
+                rule%xi(:, 1:np), pc%eps_th, has, st)
+            if (st%failed()) return
+            if (.not. has) deallocate (pc%eps_th)
         end if
         call plate_values(pc, kind, rule%xi(:, 1:np), np, values)
     end subroutine plate_cell_values

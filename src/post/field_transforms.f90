@@ -37,7 +37,7 @@ module field_transforms
         'INVA_2SG VECT_1_X VECT_1_Y VECT_1_Z VECT_2_X VECT_2_Y VECT_2_Z VECT_3_X VECT_3_Y ' // &
         'VECT_3_Z'
 
-    public :: gauss_to_nodes, nodes_average, equivalent_field
+    public :: gauss_to_nodes, nodes_average, equivalent_field, symmetric_eigen
 
 contains
 

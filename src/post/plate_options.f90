@@ -41,6 +41,10 @@ module plate_options
         real(dp) :: thickness = 0.0_dp, dm(3, 3) = 0.0_dp, df(3, 3) = 0.0_dp, dc = 0.0_dp
         integer(i4) :: layers = 1
         real(dp) :: ul(24) = 0.0_dp               !< local displacements
+        !> thermal strains (3 layers, points) at the sub-points of the points asked for
+        !> (assembly_varc, elem's), when the cell has some: the stresses and forces leave
+        !> them out (sigma = D (e + z k - eps_th), N = Dm e - int D eps_th, ...)
+        real(dp), allocatable :: eps_th(:, :)
     end type plate_cell_t
 
     public :: plate_prepare, plate_values, plate_value_count
@@ -129,7 +133,7 @@ contains
         integer(i4), intent(in) :: kind, np
         real(dp), intent(in) :: xi(2, np)
         real(dp), intent(out) :: values(:)
-        real(dp) :: e(3), k(3), t(2), det, h, z, shape, a(3), v(2), layer_h
+        real(dp) :: e(3), k(3), t(2), det, h, z, shape, a(3), v(2), layer_h, n0(3), m0(3)
         integer(i4) :: p, lay, level, base, nv
         nv = plate_value_count(kind, pc%layers)
         h = pc%thickness
@@ -142,8 +146,11 @@ contains
             base = (p - 1) * nv
             select case (kind)
             case (PLATE_FORCES)
-                values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, matmul(pc%dm, e))
-                values(base + 4:base + 6) = turn_plate_tensor(pc%c, pc%s, matmul(pc%df, k))
+                call thermal_resultants(p, n0, m0)
+                values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, &
+                    matmul(pc%dm, e) - n0)
+                values(base + 4:base + 6) = turn_plate_tensor(pc%c, pc%s, &
+                    matmul(pc%df, k) - m0)
                 values(base + 7:base + 8) = turn_plate_vector(pc%c, pc%s, t)
             case (PLATE_GENERAL)
                 values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, &
@@ -156,7 +163,10 @@ contains
                     do level = 1, 3              ! INF, MOY, SUP
                         z = -h / 2.0_dp + (lay - 1) * layer_h + (level - 1) * layer_h / 2.0_dp
                         if (kind == PLATE_STRESS) then
-                            a = matmul(pc%dm, e + z * k) / h
+                            a = e + z * k
+                            if (allocated(pc%eps_th)) a(1:2) = a(1:2) - &
+                                pc%eps_th(3 * lay - 3 + level, p)
+                            a = matmul(pc%dm, a) / h
                             shape = 6.0_dp / h**3 * (h * h / 4.0_dp - z * z)
                             v = shape * t
                         else
@@ -172,6 +182,26 @@ contains
                 end do
             end select
         end do
+    contains
+        ! N0 = int D eps_th dz, M0 = int D eps_th z dz at point q (Simpson per layer).
+        subroutine thermal_resultants(q, n0, m0)
+            integer(i4), intent(in) :: q
+            real(dp), intent(out) :: n0(3), m0(3)
+            real(dp) :: unit(3), zl, wl
+            integer(i4) :: l, j
+            n0 = 0.0_dp
+            m0 = 0.0_dp
+            if (.not. allocated(pc%eps_th)) return
+            unit = matmul(pc%dm, [1.0_dp, 1.0_dp, 0.0_dp]) / pc%thickness
+            do l = 1, pc%layers
+                do j = 1, 3
+                    zl = -pc%thickness / 2.0_dp + (l - 1) * layer_h + (j - 1) * layer_h / 2.0_dp
+                    wl = layer_h * merge(4.0_dp, 1.0_dp, j == 2) / 6.0_dp
+                    n0 = n0 + unit * wl * pc%eps_th(3 * l - 3 + j, q)
+                    m0 = m0 + unit * wl * zl * pc%eps_th(3 * l - 3 + j, q)
+                end do
+            end do
+        end subroutine thermal_resultants
     end subroutine plate_values
 
 end module plate_options

@@ -181,7 +181,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                                  "case.mail": os.path.join(verif, name + ".mail")}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # The plane family on its five cell types (an export file binding five meshes, curved
-    # quadratic cells) and the discrete elements with rotations and full matrices (issue 21).
+    # quadratic cells), their thermal strains (AFFE_VARC) and the discrete elements with
+    # rotations and full matrices (issue 21).
     plane = os.path.join(SOURCE, "tests", "plane")
     files = {"case.export": os.path.join(plane, "patch_plane.export"),
              "patch_plane.comm": os.path.join(plane, "patch_plane.comm")}
@@ -191,6 +192,13 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       {"case.export": "export", "patch_plane.comm": "deck",
                        "patch_tria6.mail": "mail", "patch_quad8.mail": "mail",
                        "patch_quad9.mail": "mail"}, 1.0))
+    files = {"case.export": os.path.join(plane, "thermal_plane.export"),
+             "thermal_plane.comm": os.path.join(plane, "thermal_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("plane_thermal", files, [],
+                      {"case.export": "export", "thermal_plane.comm": "deck",
+                       "thermal_tria6.mail": "mail", "thermal_quad8.mail": "mail"}, 0.6))
     discrete = os.path.join(SOURCE, "tests", "discrete")
     seeds.append(Seed("discrete", {"case.export": os.path.join(discrete, "discrete.export"),
                                    "discrete.comm": os.path.join(discrete, "discrete.comm"),
@@ -229,6 +237,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("python", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                            "python_language.comm")},
                       [], comm_targets, 1.0))
+    # Code_Aster's CA.TestCase: every assert, passing and failing.
+    seeds.append(Seed("testcase", {"case.comm": os.path.join(SOURCE, "tests", "decks", "python",
+                                                             "testcase_asserts.comm")},
+                      [], comm_targets, 0.4))
+    # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
+    seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                            "session_commands.comm")},
+                      [], comm_targets, 0.5))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
@@ -247,6 +263,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     # Functions by points: CALC_FONCTION's operations, TEST_FONCTION, IMPR_FONCTION.
     seeds.append(Seed("functions", {"case.comm": os.path.join(tables, "functions.comm")},
                       [], comm_targets, 1.0))
+    # POST_RELEVE_T on formula fields of the annulus, and on SSNL130's reactions.
+    seeds.append(Seed("post_releve", {"case.comm": os.path.join(tables, "post_releve.comm"),
+                                      "case.mail": os.path.join(tables, "annulus.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 1.0))
+    seeds.append(Seed("post_releve_ssnl130",
+                      {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
+                       "case.mail": meshes[("a", "aster")]}, [],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))

@@ -14,6 +14,8 @@
                        4n x n squares (n = 2, 4, 8, 16), triangles two per square (the
                        diagonal alternating); GROUP_MA BEAM, EXTREM (the edges at x = L);
                        GROUP_NO ENCAST (x = 0), TIP (L, 0).
+  thermal_<type>.mail  the cantilever mesh with n = 2 (8 x 2 squares), for thermal_plane.comm
+                       (committed, as the patch meshes).
   cantilever.export    (--cantilever) the session of cantilever_plane.comm on those meshes:
                        units 20 + 4 t + k for type t (TRIA3, TRIA6, QUAD4, QUAD8, QUAD9) and
                        mesh k (n = 2, 4, 8, 16).
@@ -138,7 +140,10 @@ def cantilever(ctype, n):
 
 
 def patch_files():
-    return {f"patch_{t.lower()}.mail": VERIFICATION.to_aster(patch(t)) for t in TYPES}
+    files = {f"patch_{t.lower()}.mail": VERIFICATION.to_aster(patch(t)) for t in TYPES}
+    for t in TYPES:
+        files[f"thermal_{t.lower()}.mail"] = VERIFICATION.to_aster(cantilever(t, 2))
+    return files
 
 
 def cantilever_files():
