@@ -9,7 +9,7 @@ _Static_assert(sizeof(med_idt) == 8, "parasol's MED plug-in binds med_idt as int
 _Static_assert(sizeof(med_float) == 8, "med_float is a double");
 _Static_assert(sizeof(med_bool) == 4 && sizeof(med_access_mode) == 4, "enums are int");
 _Static_assert(MED_ACC_RDONLY == 0 && MED_ACC_RDWR == 1 && MED_ACC_CREAT == 3, "access");
-_Static_assert(MED_CELL == 0 && MED_NODE == 3, "entity types");
+_Static_assert(MED_CELL == 0 && MED_NODE == 3 && MED_NODE_ELEMENT == 4, "entity types");
 _Static_assert(MED_COORDINATE == 0 && MED_CONNECTIVITY == 1 && MED_NAME == 2
                && MED_FAMILY_NUMBER == 4, "data types");
 _Static_assert(MED_NODAL == 0 && MED_DESCENDING == 1 && MED_NO_CMODE == -1, "cmode");
@@ -22,6 +22,8 @@ _Static_assert(MED_NAME_SIZE == 64 && MED_SNAME_SIZE == 16 && MED_LNAME_SIZE == 
                && MED_COMMENT_SIZE == 200, "string sizes");
 _Static_assert(MED_POINT1 == 1 && MED_SEG2 == 102 && MED_TRIA3 == 203 && MED_QUAD4 == 204,
                "cell types");
+_Static_assert(MED_SEG3 == 103 && MED_TRIA6 == 206 && MED_QUAD8 == 208 && MED_QUAD9 == 209,
+               "quadratic cell types");
 
 /* Not called: a translation unit needs one definition. */
 int parasol_med_abi_checked(void) { return 1; }

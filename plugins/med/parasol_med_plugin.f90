@@ -25,7 +25,7 @@ module parasol_med_plugin
     private
 
     !> Version of the entry points below; parasol refuses a plug-in of another version.
-    integer(c_int), parameter :: ABI_VERSION = 1
+    integer(c_int), parameter :: ABI_VERSION = 2
     !> Returned when a caller's buffer is smaller than what the file holds.
     integer(c_int), parameter :: PLUGIN_BAD_SIZE = -900001
     !> Returned for an argument out of its documented range.
@@ -34,7 +34,7 @@ module parasol_med_plugin
     ! med.h (MED-fichier 4.1): med_access_mode, med_entity_type, med_data_type,
     ! med_connectivity_mode, med_switch_mode, med_storage_mode, med_mesh_type, ...
     integer(c_int), parameter :: MED_ACC_RDONLY = 0, MED_ACC_RDWR = 1, MED_ACC_CREAT = 3
-    integer(c_int), parameter :: MED_CELL = 0, MED_NODE = 3
+    integer(c_int), parameter :: MED_CELL = 0, MED_NODE = 3, MED_NODE_ELEMENT = 4
     integer(c_int), parameter :: MED_COORDINATE = 0, MED_CONNECTIVITY = 1, MED_NAME = 2, &
         MED_FAMILY_NUMBER = 4
     integer(c_int), parameter :: MED_NODAL = 0, MED_DESCENDING = 1, MED_NO_CMODE = -1
@@ -329,6 +329,112 @@ module parasol_med_plugin
             integer(c_int) :: rc
         end function MEDfieldValueWithProfileWr
         ! ---- C library: silencing stderr around MED calls ----
+        function MEDnLocalization(fid) result(n) bind(c, name='MEDnLocalization')
+            import :: c_int, c_int64_t
+            integer(c_int64_t), value :: fid
+            integer(c_int) :: n
+        end function MEDnLocalization
+        function MEDlocalizationInfo(fid, it, locname, geotype, spacedim, nipoint, &
+                                     geointerpname, sectionmeshname, nsectionmeshcell, &
+                                     sectiongeotype) result(rc) &
+            bind(c, name='MEDlocalizationInfo')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            integer(c_int), value :: it
+            character(kind=c_char) :: locname(*), geointerpname(*), sectionmeshname(*)
+            integer(c_int), intent(out) :: geotype, spacedim, nipoint, nsectionmeshcell, &
+                sectiongeotype
+            integer(c_int) :: rc
+        end function MEDlocalizationInfo
+        function MEDlocalizationWr(fid, locname, geotype, spacedim, elementcoordinate, &
+                                   switchmode, nipoint, ipointcoordinate, weight, &
+                                   geointerpname, ipointstructmeshname) result(rc) &
+            bind(c, name='MEDlocalizationWr')
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: locname(*), geointerpname(*), &
+                ipointstructmeshname(*)
+            integer(c_int), value :: geotype, spacedim, switchmode, nipoint
+            real(c_double), intent(in) :: elementcoordinate(*), ipointcoordinate(*), weight(*)
+            integer(c_int) :: rc
+        end function MEDlocalizationWr
+        function MEDfieldnComponentByName(fid, fieldname) result(n) &
+            bind(c, name='MEDfieldnComponentByName')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: fieldname(*)
+            integer(c_int) :: n
+        end function MEDfieldnComponentByName
+        function MEDfieldInfoByName(fid, fieldname, meshname, localmesh, fieldtype, &
+                                    componentname, componentunit, dtunit, ncstp) result(rc) &
+            bind(c, name='MEDfieldInfoByName')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: fieldname(*)
+            character(kind=c_char) :: meshname(*), componentname(*), componentunit(*), &
+                dtunit(*)
+            integer(c_int), intent(out) :: localmesh, fieldtype, ncstp
+            integer(c_int) :: rc
+        end function MEDfieldInfoByName
+        function MEDfieldComputingStepInfo(fid, fieldname, csit, numdt, numit, dt) &
+            result(rc) bind(c, name='MEDfieldComputingStepInfo')
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: fieldname(*)
+            integer(c_int), value :: csit
+            integer(c_int), intent(out) :: numdt, numit
+            real(c_double), intent(out) :: dt
+            integer(c_int) :: rc
+        end function MEDfieldComputingStepInfo
+        function MEDfieldnProfile(fid, fieldname, numdt, numit, entitype, geotype, &
+                                  defaultprofilename, defaultlocalizationname) result(n) &
+            bind(c, name='MEDfieldnProfile')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: fieldname(*)
+            integer(c_int), value :: numdt, numit, entitype, geotype
+            character(kind=c_char) :: defaultprofilename(*), defaultlocalizationname(*)
+            integer(c_int) :: n
+        end function MEDfieldnProfile
+        function MEDfieldnValueWithProfile(fid, fieldname, numdt, numit, entitype, geotype, &
+                                           profileit, storagemode, profilename, profilesize, &
+                                           localizationname, nintegrationpoint) result(n) &
+            bind(c, name='MEDfieldnValueWithProfile')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: fieldname(*)
+            integer(c_int), value :: numdt, numit, entitype, geotype, profileit, storagemode
+            character(kind=c_char) :: profilename(*), localizationname(*)
+            integer(c_int), intent(out) :: profilesize, nintegrationpoint
+            integer(c_int) :: n
+        end function MEDfieldnValueWithProfile
+        function MEDfieldValueWithProfileRd(fid, fieldname, numdt, numit, entitype, geotype, &
+                                            storagemode, profilename, switchmode, &
+                                            componentselect, values) result(rc) &
+            bind(c, name='MEDfieldValueWithProfileRd')
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: fieldname(*), profilename(*)
+            integer(c_int), value :: numdt, numit, entitype, geotype, storagemode, &
+                switchmode, componentselect
+            real(c_double) :: values(*)
+            integer(c_int) :: rc
+        end function MEDfieldValueWithProfileRd
+        function MEDprofileSizeByName(fid, profilename) result(n) &
+            bind(c, name='MEDprofileSizeByName')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: profilename(*)
+            integer(c_int) :: n
+        end function MEDprofileSizeByName
+        function MEDprofileRd(fid, profilename, profilearray) result(rc) &
+            bind(c, name='MEDprofileRd')
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: profilename(*)
+            integer(c_int) :: profilearray(*)
+            integer(c_int) :: rc
+        end function MEDprofileRd
         function c_dup(fd) result(rc) bind(c, name='dup')
             import :: c_int
             integer(c_int), value :: fd
@@ -378,7 +484,12 @@ module parasol_med_plugin
         parasol_med_write_families, parasol_med_create_family, parasol_med_field_count, &
         parasol_med_field_component_count, parasol_med_field_info, &
         parasol_med_create_field, parasol_med_profile_count, parasol_med_write_profile, &
-        parasol_med_write_field_values
+        parasol_med_write_field_values, parasol_med_localization_count, &
+        parasol_med_localization_name, parasol_med_write_localization, &
+        parasol_med_write_entity_values, parasol_med_field_step_count, &
+        parasol_med_field_step_info, parasol_med_field_profile_count, &
+        parasol_med_field_value_info, parasol_med_read_entity_values, &
+        parasol_med_read_profile
 
 contains
 
@@ -932,6 +1043,204 @@ contains
                                         MED_FULL_INTERLACE, MED_ALL_CONSTITUENT, n, values)
         call quiet_end()
     end function parasol_med_write_field_values
+
+    !> Number of Gauss-point localisations in the file (MEDnLocalization).
+    function parasol_med_localization_count(fid) result(n) &
+        bind(c, name='parasol_med_localization_count')
+        integer(c_int64_t), value :: fid
+        integer(c_int) :: n
+        call quiet_begin()
+        n = MEDnLocalization(fid)
+        call quiet_end()
+    end function parasol_med_localization_count
+
+    !> Name of localisation `it` (1-based; name: 64 + NUL) (MEDlocalizationInfo).
+    function parasol_med_localization_name(fid, it, name) result(rc) &
+        bind(c, name='parasol_med_localization_name')
+        integer(c_int64_t), value :: fid
+        integer(c_int), value :: it
+        character(kind=c_char) :: name(MED_NAME_SIZE + 1)
+        integer(c_int) :: rc, geotype, spacedim, nipoint, nsection, sectiontype
+        character(kind=c_char) :: interp(MED_NAME_SIZE + 1), section(MED_NAME_SIZE + 1)
+        name = c_null_char
+        call quiet_begin()
+        rc = MEDlocalizationInfo(fid, it, name, geotype, spacedim, nipoint, interp, &
+                                 section, nsection, sectiontype)
+        call quiet_end()
+    end function parasol_med_localization_name
+
+    !> Writes localisation `name` of `npoints` integration points on reference cells of MED
+    !> type `geotype` in dimension `dim`: the reference element's nodes refcoo(dim, nodes),
+    !> the points gscoo(dim, npoints) and their weights, interlaced, without interpolation
+    !> nor structural-element mesh (MEDlocalizationWr).
+    function parasol_med_write_localization(fid, name, geotype, dim, refcoo, npoints, &
+                                            gscoo, weights) result(rc) &
+        bind(c, name='parasol_med_write_localization')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: name(*)
+        integer(c_int), value :: geotype, dim, npoints
+        real(c_double), intent(in) :: refcoo(*), gscoo(*), weights(*)
+        integer(c_int) :: rc
+        call quiet_begin()
+        rc = MEDlocalizationWr(fid, name, geotype, dim, refcoo, MED_FULL_INTERLACE, npoints, &
+                               gscoo, weights, '' // c_null_char, '' // c_null_char)
+        call quiet_end()
+    end function parasol_med_write_localization
+
+    !> Writes the values of field `field` at step (numdt, numit), time dt, on n cells of MED
+    !> type `geotype`: entity 0 their integration points (MED_CELL; localisation
+    !> `localization`, '' for one point per cell), 4 their nodes (MED_NODE_ELEMENT);
+    !> values interlaced (components, points, n); `profile` '' = every cell of the type.
+    function parasol_med_write_entity_values(fid, field, numdt, numit, dt, entity, geotype, &
+                                             n, profile, localization, values) result(rc) &
+        bind(c, name='parasol_med_write_entity_values')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: field(*), profile(*), localization(*)
+        integer(c_int), value :: numdt, numit, entity, geotype, n
+        real(c_double), value :: dt
+        real(c_double), intent(in) :: values(*)
+        integer(c_int) :: rc, entitype
+        select case (entity)
+        case (0)
+            entitype = MED_CELL
+        case (4)
+            entitype = MED_NODE_ELEMENT
+        case default
+            rc = PLUGIN_BAD_ARGUMENT
+            return
+        end select
+        call quiet_begin()
+        rc = MEDfieldValueWithProfileWr(fid, field, numdt, numit, dt, entitype, geotype, &
+                                        MED_COMPACT_STMODE, profile, localization, &
+                                        MED_FULL_INTERLACE, MED_ALL_CONSTITUENT, n, values)
+        call quiet_end()
+    end function parasol_med_write_entity_values
+
+    !> Number of computation steps of field `field` (MEDfieldInfoByName).
+    function parasol_med_field_step_count(fid, field) result(n) &
+        bind(c, name='parasol_med_field_step_count')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: field(*)
+        integer(c_int) :: n, ncomponent, localmesh, fieldtype, rc
+        character(kind=c_char) :: mesh(MED_NAME_SIZE + 1), dtunit(MED_SNAME_SIZE + 1)
+        character(kind=c_char), allocatable :: names(:), units(:)
+        call quiet_begin()
+        ncomponent = MEDfieldnComponentByName(fid, field)
+        call quiet_end()
+        if (ncomponent < 0) then
+            n = ncomponent
+            return
+        end if
+        allocate (names(MED_SNAME_SIZE * max(ncomponent, 1_c_int) + 1), &
+                  units(MED_SNAME_SIZE * max(ncomponent, 1_c_int) + 1))
+        n = 0
+        call quiet_begin()
+        rc = MEDfieldInfoByName(fid, field, mesh, localmesh, fieldtype, names, units, dtunit, n)
+        call quiet_end()
+        if (rc < 0) n = rc
+    end function parasol_med_field_step_count
+
+    !> Step `it` (1-based) of field `field`: its numbers and time (MEDfieldComputingStepInfo).
+    function parasol_med_field_step_info(fid, field, it, numdt, numit, dt) result(rc) &
+        bind(c, name='parasol_med_field_step_info')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: field(*)
+        integer(c_int), value :: it
+        integer(c_int), intent(out) :: numdt, numit
+        real(c_double), intent(out) :: dt
+        integer(c_int) :: rc
+        numdt = 0
+        numit = 0
+        dt = 0.0_c_double
+        call quiet_begin()
+        rc = MEDfieldComputingStepInfo(fid, field, it, numdt, numit, dt)
+        call quiet_end()
+    end function parasol_med_field_step_info
+
+    !> Number of (profile, localisation) parts of field `field` at step (numdt, numit) on
+    !> cells of MED type `geotype` (entity 0: MED_CELL, 3: MED_NODE, 4: MED_NODE_ELEMENT)
+    !> (MEDfieldnProfile).
+    function parasol_med_field_profile_count(fid, field, numdt, numit, entity, geotype) &
+        result(n) bind(c, name='parasol_med_field_profile_count')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: field(*)
+        integer(c_int), value :: numdt, numit, entity, geotype
+        integer(c_int) :: n
+        character(kind=c_char) :: profile(MED_NAME_SIZE + 1), localization(MED_NAME_SIZE + 1)
+        call quiet_begin()
+        n = MEDfieldnProfile(fid, field, numdt, numit, entity, geotype, profile, localization)
+        call quiet_end()
+    end function parasol_med_field_profile_count
+
+    !> Part `profileit` (1-based) of field `field` at a step on an entity and type: its
+    !> profile name and size, localisation name and points per entity; the result is the
+    !> number of entities (MEDfieldnValueWithProfile, compact storage).
+    function parasol_med_field_value_info(fid, field, numdt, numit, entity, geotype, &
+                                          profileit, profile, profilesize, localization, &
+                                          npoints) result(n) &
+        bind(c, name='parasol_med_field_value_info')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: field(*)
+        integer(c_int), value :: numdt, numit, entity, geotype, profileit
+        character(kind=c_char) :: profile(MED_NAME_SIZE + 1), localization(MED_NAME_SIZE + 1)
+        integer(c_int), intent(out) :: profilesize, npoints
+        integer(c_int) :: n
+        profile = c_null_char
+        localization = c_null_char
+        profilesize = 0
+        npoints = 0
+        call quiet_begin()
+        n = MEDfieldnValueWithProfile(fid, field, numdt, numit, entity, geotype, profileit, &
+                                      MED_COMPACT_STMODE, profile, profilesize, &
+                                      localization, npoints)
+        call quiet_end()
+    end function parasol_med_field_value_info
+
+    !> Reads the values of field `field` at a step on an entity and type, profile `profile`
+    !> ('' none), interlaced; `capacity` values the caller's buffer holds, which must be
+    !> entities x points x components (parasol_med_field_value_info) (MEDfieldValueWith-
+    !> ProfileRd).
+    function parasol_med_read_entity_values(fid, field, numdt, numit, entity, geotype, &
+                                            profile, capacity, values) result(rc) &
+        bind(c, name='parasol_med_read_entity_values')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: field(*), profile(*)
+        integer(c_int), value :: numdt, numit, entity, geotype, capacity
+        real(c_double) :: values(*)
+        integer(c_int) :: rc
+        if (capacity < 0) then
+            rc = PLUGIN_BAD_ARGUMENT
+            return
+        end if
+        call quiet_begin()
+        rc = MEDfieldValueWithProfileRd(fid, field, numdt, numit, entity, geotype, &
+                                        MED_COMPACT_STMODE, profile, MED_FULL_INTERLACE, &
+                                        MED_ALL_CONSTITUENT, values)
+        call quiet_end()
+    end function parasol_med_read_entity_values
+
+    !> Reads profile `name` (its entity numbers) into numbers(1:capacity); the result is its
+    !> size, or PLUGIN_BAD_SIZE when it holds more than capacity (MEDprofileRd).
+    function parasol_med_read_profile(fid, name, capacity, numbers) result(n) &
+        bind(c, name='parasol_med_read_profile')
+        integer(c_int64_t), value :: fid
+        character(kind=c_char), intent(in) :: name(*)
+        integer(c_int), value :: capacity
+        integer(c_int) :: numbers(*)
+        integer(c_int) :: n, rc
+        call quiet_begin()
+        n = MEDprofileSizeByName(fid, name)
+        call quiet_end()
+        if (n < 0) return
+        if (n > capacity) then
+            n = PLUGIN_BAD_SIZE
+            return
+        end if
+        call quiet_begin()
+        rc = MEDprofileRd(fid, name, numbers)
+        call quiet_end()
+        if (rc < 0) n = rc
+    end function parasol_med_read_profile
 
     ! Sends file descriptor 2 (stderr) to /dev/null until quiet_end: MED writes its own
     ! diagnostics there unconditionally, and HDF5 its error stacks.

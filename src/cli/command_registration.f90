@@ -13,6 +13,7 @@ module command_registration
     use calc_champ_command, only: run_calc_champ
     use crea_resu_command, only: run_crea_resu
     use post_champ_command, only: run_post_champ
+    use modi_repere_command, only: run_modi_repere
     use mesh_commands, only: run_lire_maillage
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage
@@ -34,6 +35,7 @@ module command_registration
     use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
     use impr_table_command, only: run_impr_table
+    use table_methods, only: register_table_methods
     implicit none
     private
     public :: register_commands
@@ -62,6 +64,7 @@ contains
         call ctx%register('CALC_CHAMP', run_calc_champ, reuse=.true.)
         call ctx%register('CREA_RESU', run_crea_resu, reuse=.true.)
         call ctx%register('POST_CHAMP', run_post_champ)
+        call ctx%register('MODI_REPERE', run_modi_repere, reuse=.true.)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)
@@ -88,6 +91,8 @@ contains
         call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)
         call ctx%register('IMPR_TABLE', run_impr_table)
+        ! the Python side of tables: TAB['DX', 1], TAB.EXTR_TABLE(), tab.DY[0] (table_methods)
+        call register_table_methods(ctx)
     end subroutine register_commands
 
 end module command_registration

@@ -141,7 +141,54 @@ contains
         call describe_calc_champ(c)
         call describe_crea_resu(c)
         call describe_post_champ(c)
+        call describe_modi_repere(c)
     end subroutine describe_fields
+
+    !> MODI_REPERE (code_aster/Cata/Commands/modi_repere.py, U4.74.01): the type of the
+    !> RESULTAT or CHAM_GD given; REPERE UTILISATEUR and CYLINDRIQUE (the others refused by
+    !> the handler).
+    subroutine describe_modi_repere(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_ENSEMBLE
+        type(catalog_t), intent(inout) :: c
+        call c%command('MODI_REPERE', '@RESULTAT CHAM_GD', reentrant='f:RESULTAT')
+        call c%rule(RULE_UN_PARMI, 'CHAM_GD RESULTAT')
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%fact('MODI_CHAM', max=MANY)
+        call c%key('TYPE_CHAM', 'TXM', req=.true., &
+            into='VECT_2D VECT_3D TENS_2D TENS_3D COQUE_GENE 1D_GENE')
+        call c%key('NOM_CHAM', 'TXM', req=.true., into=NOM_CHAM_NAMES)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
+        call c%key('NOM_CHAM_RESU', 'TXM', into='EGRU_ELNO', noop=.true.)
+        call c%end_fact()
+        call c%key('REPERE', 'TXM', req=.true., into='UTILISATEUR CYLINDRIQUE COQUE ' // &
+            'GLOBAL_UTIL COQUE_INTR_UTIL COQUE_UTIL_INTR COQUE_UTIL_CYL')
+        call c%fact('AFFE', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA GROUP_NO')
+        call c%rule(RULE_EXCLUS, 'ANGL_NAUT VECT_X ORIGINE')
+        call c%rule(RULE_ENSEMBLE, 'VECT_X VECT_Y')
+        call c%key('ANGL_NAUT', 'R', max=3)
+        call c%key('VECT_X', 'R', min=3, max=3)
+        call c%key('VECT_Y', 'R', min=3, max=3)
+        call c%key('ORIGINE', 'R', min=2, max=3)
+        call c%key('AXE_Z', 'R', min=3, max=3)
+        call c%key('ANGL_REP', 'R', min=2, max=2, noop=.true.)
+        call c%key('VECTEUR', 'R', min=3, max=3, noop=.true.)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+    end subroutine describe_modi_repere
 
     !> POST_CHAMP (code_aster/Cata/Commands/post_champ.py, U4.81.05): the result's type.
     subroutine describe_post_champ(c)

@@ -4,7 +4,7 @@
 module catalog_results
     use kinds, only: dp
     use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
-    use catalog_common, only: OUI_NON, RESULT_COMPONENTS
+    use catalog_common, only: OUI_NON
     use catalog_fields, only: NOM_CHAM_NAMES
     implicit none
     private
@@ -79,20 +79,50 @@ contains
         call test_reference_keys(c, 'MAILLAGE')
         call c%end_fact()
 
+        ! Code_Aster's IMPR_RESU (code_aster/Cata/Commands/impr_resu.py, U4.91.01): the
+        ! keywords of the formats parasol writes (RESULTAT, MED, GMSH and parasol's VTK),
+        ! in one RESU factor; the default FORMAT stays parasol's RESULTAT
         call c%command('IMPR_RESU', '')
         call c%key('FORMAT', 'TXM', def='RESULTAT', into='RESULTAT GMSH VTK MED')
         call c%key('UNITE', 'I', def='8')
         call c%key('MODELE', 'modele', noop=.true.)
         call c%key('PROC0', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('VERSION_MED', 'TXM', into='3.3.1 4.0.0 4.1.0', noop=.true.)
+        call c%key('FICHIER_UNIQUE', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
         call c%fact('RESU', max=MANY, req=.true.)
-        call c%key('RESULTAT', 'RESU', req=.true.)
-        call c%key('NOM_CHAM', 'TXM', max=MANY, &
-                   into='DEPL FORC_NODA REAC_NODA SIEF_ELGA VARI_ELGA')
-        call c%key('INST', 'R', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'CHAM_GD RESULTAT MAILLAGE')
+        call c%rule(RULE_EXCLUS, 'CHAM_GD RESULTAT')
+        call c%rule(RULE_EXCLUS, 'TOUT_CMP NOM_CMP')
+        call c%rule(RULE_EXCLUS, 'TOUT_CHAM NOM_CHAM')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST LIST_INST')
+        call c%key('MAILLAGE', 'maillage')
+        call c%key('CARA_ELEM', 'cara_elem', noop=.true.)
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('TOUT_CHAM', 'TXM', into=OUI_NON)
+        call c%key('NOM_CHAM', 'TXM', max=MANY, into=NOM_CHAM_NAMES)
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
         call c%key('NUME_ORDRE', 'I', max=MANY)
-        call c%rule(RULE_EXCLUS, 'INST NUME_ORDRE')
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('TOUT_CMP', 'TXM', into='OUI')
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_NO', 'TXM', max=MANY)
-        call c%key('NOM_CMP', 'TXM', max=MANY, into=RESULT_COMPONENTS)
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('IMPR_COOR', 'TXM', def='NON', into=OUI_NON)
+        call c%key('VALE_MAX', 'TXM', into='OUI')
+        call c%key('VALE_MIN', 'TXM', into='OUI')
+        call c%key('BORNE_INF', 'R')
+        call c%key('BORNE_SUP', 'R')
+        call c%key('FORMAT_R', 'TXM', def='1PE21.14', noop=.true.)
+        call c%key('SOUS_TITRE', 'TXM')
+        call c%key('INFO_MAILLAGE', 'TXM', def='NON', into=OUI_NON, noop=.true.)
+        call c%key('IMPR_NOM_VARI', 'TXM', def='OUI', into=OUI_NON, noop=.true.)
+        call c%key('VISU_SP', 'TXM', into='NON', noop=.true.)
         call c%end_fact()
     end subroutine describe_outputs
 

@@ -603,7 +603,7 @@ contains
                 list%items(k) = adopt(self, list%items(k))
             end do
             w = self%new_list(list%items)
-        case (VK_TUPLE)
+        case (VK_TUPLE, VK_FACTOR)                            ! a _F: a dict's lists too
             w = v
             if (.not. allocated(v%tree)) return
             if (.not. any(v%tree%kind == VK_LIST)) return
@@ -611,7 +611,7 @@ contains
             do k = 1, size(list%items)
                 list%items(k) = adopt(self, list%items(k))
             end do
-            w = pack_values(VK_TUPLE, list)
+            w = pack_values(v%kind, list)
         case default
             w = v
             return

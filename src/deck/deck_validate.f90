@@ -80,7 +80,8 @@ contains
     !> The result type of one call. A catalog result type that depends on the call (Code_Aster's
     !> sd_prod functions) is written '@KEY': '@TYPE_CHAM' (CREA_CHAMP: NOEU_* cham_no_sdaster,
     !> CART_* carte_sdaster, EL*_* cham_elem), '@TYPE_RESU' (CREA_RESU: the lower-case
-    !> TYPE_RESU), '@RESULTAT' (CALC_CHAMP, POST_CHAMP: the type of the RESULTAT concept).
+    !> TYPE_RESU), '@RESULTAT' (CALC_CHAMP, POST_CHAMP: the type of the RESULTAT concept),
+    !> '@RESULTAT CHAM_GD' (MODI_REPERE: of the RESULTAT or CHAM_GD concept).
     function call_result_type(declared, cmd) result(type_name)
         character(len=*), intent(in) :: declared
         type(command_t), intent(in) :: cmd
@@ -108,6 +109,10 @@ contains
                     achar(iachar(type_name(i:i)) + 32)
             end do
         case ('@RESULTAT')
+            if (v%kind == VK_CONCEPT) type_name = v%s
+        case ('@RESULTAT CHAM_GD')          ! MODI_REPERE: the type of what it is given
+            v = cmd%get_value('RESULTAT')
+            if (v%kind /= VK_CONCEPT) v = cmd%get_value('CHAM_GD')
             if (v%kind == VK_CONCEPT) type_name = v%s
         end select
     end function call_result_type

@@ -16,7 +16,7 @@ module med_file
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR, STATUS_MESH_ERROR, STATUS_INTERNAL
-    use strings, only: to_text
+    use strings, only: string_t, to_text
     use system_error, only: errno_text
     use byte_message, only: message_t
     use child_process, only: child_t, start_child, send_message, receive_message, &
@@ -29,7 +29,9 @@ module med_file
         OP_FAMILY_COUNT, OP_FAMILY_GROUP_COUNT, OP_FAMILY_INFO, OP_CREATE_MESH, &
         OP_WRITE_COORDINATES, OP_WRITE_CONNECTIVITY, OP_WRITE_NAMES, OP_WRITE_FAMILIES, &
         OP_CREATE_FAMILY, OP_FIELD_COUNT, OP_FIELD_INFO, OP_CREATE_FIELD, OP_PROFILE_COUNT, &
-        OP_WRITE_PROFILE, OP_WRITE_FIELD_VALUES
+        OP_WRITE_PROFILE, OP_WRITE_FIELD_VALUES, OP_LOCALIZATION_COUNT, OP_LOCALIZATION_NAME, &
+        OP_WRITE_LOCALIZATION, OP_WRITE_ENTITY_VALUES, OP_FIELD_STEP_COUNT, OP_FIELD_STEP_INFO, &
+        OP_FIELD_PART_COUNT, OP_FIELD_PART_INFO, OP_READ_ENTITY_VALUES, OP_READ_PROFILE
     implicit none
     private
 
@@ -41,6 +43,10 @@ module med_file
         MED_COUNT_CELL_FAMILIES = 6, MED_COUNT_CELL_TYPES = 7, MED_COUNT_DESCENDING_CELLS = 8
     !> Entities of names and family numbers.
     integer, parameter, public :: MED_NODES = 1, MED_CELLS = 2
+    !> Entities a field's values are on (med.h med_entity_type): the cells' integration
+    !> points, the nodes, the cells' nodes (ELNO).
+    integer, parameter, public :: MED_ENTITY_CELL = 0, MED_ENTITY_NODE = 3, &
+        MED_ENTITY_NODE_ELEMENT = 4
     !> MED string sizes (med.h): object names, entity names, group names.
     integer, parameter, public :: MED_NAME_LEN = 64, MED_SNAME_LEN = 16, MED_LNAME_LEN = 80
     !> MED versions this build reads: major 3 and 4 (MED-fichier 4.x reads 3.x files; 2.x
@@ -73,7 +79,9 @@ module med_file
         med_family_group_count, med_family_info, med_create_mesh, med_write_coordinates, &
         med_write_connectivity, med_write_names, med_write_families, med_create_family, &
         med_field_count, med_field_info, med_create_field, med_profile_count, &
-        med_write_profile, med_write_field_values
+        med_write_profile, med_write_field_values, med_localization_names, &
+        med_write_localization, med_write_entity_values, med_field_steps, &
+        med_field_part_count, med_field_part_info, med_read_entity_values, med_read_profile
 
 contains
 
@@ -814,6 +822,225 @@ contains
         rc = exchange(file, q, r, 'write', 'field ' // field // ' at step ' // &
                       to_text(numdt), st, writing=.true.)
     end subroutine med_write_field_values
+
+    !> The names of the Gauss-point localisations in the file.
+    subroutine med_localization_names(file, names, st)
+        type(med_file_t), intent(in) :: file
+        type(string_t), allocatable, intent(out) :: names(:)
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        character(kind=c_char), allocatable :: buffer(:)
+        integer(c_int) :: n, rc
+        integer :: k
+        allocate (names(0))
+        call q%put_int(OP_LOCALIZATION_COUNT)
+        n = exchange(file, q, r, 'count', 'its localisations', st, writing=.false.)
+        if (st%failed()) return
+        deallocate (names)
+        allocate (names(max(n, 0_c_int)))
+        do k = 1, size(names)
+            call q%clear()
+            call q%put_int(OP_LOCALIZATION_NAME)
+            call q%put_int(k)
+            rc = exchange(file, q, r, 'read', 'localisation ' // to_text(int(k, i4)), st, &
+                          writing=.false.)
+            if (st%failed()) return
+            call r%get_chars(buffer)
+            names(k)%s = buffer_text(buffer, 1, MED_NAME_LEN)
+        end do
+    end subroutine med_localization_names
+
+    !> Writes Gauss-point localisation `name` on reference cells of MED type `geotype`:
+    !> refcoo(dim, nodes) the reference nodes, gscoo(dim, points) the points, their weights.
+    subroutine med_write_localization(file, name, geotype, refcoo, gscoo, weights, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: name
+        integer(i4), intent(in) :: geotype
+        real(dp), intent(in) :: refcoo(:, :), gscoo(:, :), weights(:)
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        integer(c_int) :: rc
+        if (size(gscoo, 1) /= size(refcoo, 1) .or. size(gscoo, 2) /= size(weights)) then
+            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': localisation ' &
+                // name // ': inconsistent sizes')
+            return
+        end if
+        call q%put_int(OP_WRITE_LOCALIZATION)
+        call q%put_text(name)
+        call q%put_int(int(geotype))
+        call q%put_int(size(refcoo, 1))
+        call q%put_reals(reshape(refcoo, [size(refcoo)]))
+        call q%put_int(size(weights))
+        call q%put_reals(reshape(gscoo, [size(gscoo)]))
+        call q%put_reals(weights)
+        rc = exchange(file, q, r, 'write', 'localisation ' // name, st, writing=.true.)
+    end subroutine med_write_localization
+
+    !> Writes field values on cells of MED type `geotype`: entity MED_ENTITY_CELL (points of
+    !> localisation `localization`, '' one per cell) or MED_ENTITY_NODE_ELEMENT (the cells'
+    !> nodes); values(components x points, n_cells); profile '' = every cell of the type.
+    subroutine med_write_entity_values(file, field, numdt, numit, dt, entity, geotype, values, &
+                                       profile, localization, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field, profile, localization
+        integer(i4), intent(in) :: numdt, numit, entity, geotype
+        real(dp), intent(in) :: dt
+        real(dp), intent(in) :: values(:, :)
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        integer(c_int) :: rc
+        call q%put_int(OP_WRITE_ENTITY_VALUES)
+        call q%put_text(field)
+        call q%put_int(int(numdt))
+        call q%put_int(int(numit))
+        call q%put_real(dt)
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_int(size(values, 2))
+        call q%put_text(profile)
+        call q%put_text(localization)
+        call q%put_reals(reshape(values, [size(values)]))
+        rc = exchange(file, q, r, 'write', 'field ' // field // ' at step ' // &
+                      to_text(numdt) // ' on cells of MED type ' // to_text(geotype), st, &
+                      writing=.true.)
+    end subroutine med_write_entity_values
+
+    !> The computation steps of field `field`: numbers and times.
+    subroutine med_field_steps(file, field, numdt, numit, dt, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field
+        integer(i4), allocatable, intent(out) :: numdt(:), numit(:)
+        real(dp), allocatable, intent(out) :: dt(:)
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        integer(c_int) :: n, rc
+        integer :: k
+        allocate (numdt(0), numit(0), dt(0))
+        call q%put_int(OP_FIELD_STEP_COUNT)
+        call q%put_text(field)
+        n = exchange(file, q, r, 'read', 'the steps of field ' // field, st, writing=.false.)
+        if (st%failed()) return
+        deallocate (numdt, numit, dt)
+        allocate (numdt(max(n, 0_c_int)), numit(max(n, 0_c_int)), dt(max(n, 0_c_int)))
+        do k = 1, size(numdt)
+            call q%clear()
+            call q%put_int(OP_FIELD_STEP_INFO)
+            call q%put_text(field)
+            call q%put_int(k)
+            rc = exchange(file, q, r, 'read', 'step ' // to_text(int(k, i4)) // &
+                          ' of field ' // field, st, writing=.false.)
+            if (st%failed()) return
+            numdt(k) = r%get_int()
+            numit(k) = r%get_int()
+            dt(k) = r%get_real()
+        end do
+    end subroutine med_field_steps
+
+    !> How many (profile, localisation) parts field `field` has at a step on an entity
+    !> (MED_ENTITY_*) and MED cell type (0 for nodes).
+    integer(i4) function med_field_part_count(file, field, numdt, numit, entity, geotype, st) &
+        result(n)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field
+        integer(i4), intent(in) :: numdt, numit, entity, geotype
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        call q%put_int(OP_FIELD_PART_COUNT)
+        call q%put_text(field)
+        call q%put_int(int(numdt))
+        call q%put_int(int(numit))
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        n = exchange(file, q, r, 'count', 'the parts of field ' // field, st, writing=.false.)
+    end function med_field_part_count
+
+    !> Part `it` of field `field` at a step on an entity and type: its profile ('' none) and
+    !> localisation names, points per entity and number of entities.
+    subroutine med_field_part_info(file, field, numdt, numit, entity, geotype, it, profile, &
+                                   localization, n_points, n_entities, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field
+        integer(i4), intent(in) :: numdt, numit, entity, geotype, it
+        character(len=:), allocatable, intent(out) :: profile, localization
+        integer(i4), intent(out) :: n_points, n_entities
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        character(kind=c_char), allocatable :: pbuf(:), lbuf(:)
+        integer(c_int) :: n
+        profile = ''
+        localization = ''
+        n_points = 0
+        call q%put_int(OP_FIELD_PART_INFO)
+        call q%put_text(field)
+        call q%put_int(int(numdt))
+        call q%put_int(int(numit))
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_int(int(it))
+        n = exchange(file, q, r, 'read', 'part ' // to_text(it) // ' of field ' // field, st, &
+                     writing=.false.)
+        n_entities = n
+        if (st%failed()) return
+        call r%get_chars(pbuf)
+        call r%get_chars(lbuf)
+        n_points = r%get_int()
+        profile = buffer_text(pbuf, 1, MED_NAME_LEN)
+        localization = buffer_text(lbuf, 1, MED_NAME_LEN)
+        if (profile == 'MED_NO_PROFILE_INTERNAL') profile = ''
+    end subroutine med_field_part_info
+
+    !> Reads the values of part `profile` of field `field` at a step on an entity and type
+    !> into values (entities x points x components, interlaced: the caller sizes it from
+    !> med_field_part_info).
+    subroutine med_read_entity_values(file, field, numdt, numit, entity, geotype, profile, &
+                                      values, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: field, profile
+        integer(i4), intent(in) :: numdt, numit, entity, geotype
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        real(dp), allocatable :: got(:)
+        integer(c_int) :: rc
+        values = 0.0_dp
+        call q%put_int(OP_READ_ENTITY_VALUES)
+        call q%put_text(field)
+        call q%put_int(int(numdt))
+        call q%put_int(int(numit))
+        call q%put_int(int(entity))
+        call q%put_int(int(geotype))
+        call q%put_text(profile)
+        call q%put_int(size(values))
+        rc = exchange(file, q, r, 'read', 'the values of field ' // field, st, writing=.false.)
+        if (st%failed()) return
+        call r%get_reals(got)
+        if (size(got) /= size(values)) then
+            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': field ' // &
+                field // ': ' // to_text(size(got)) // ' values read, ' // &
+                to_text(size(values)) // ' expected')
+            return
+        end if
+        values = got
+    end subroutine med_read_entity_values
+
+    !> Reads profile `name`: the entity numbers (at most `capacity`).
+    subroutine med_read_profile(file, name, capacity, numbers, st)
+        type(med_file_t), intent(in) :: file
+        character(len=*), intent(in) :: name
+        integer(i4), intent(in) :: capacity
+        integer(i4), allocatable, intent(out) :: numbers(:)
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        integer(c_int) :: n
+        allocate (numbers(0))
+        call q%put_int(OP_READ_PROFILE)
+        call q%put_text(name)
+        call q%put_int(int(capacity))
+        n = exchange(file, q, r, 'read', 'profile ' // name, st, writing=.false.)
+        if (st%failed()) return
+        deallocate (numbers)
+        call r%get_ints(numbers)
+    end subroutine med_read_profile
 
     ! The head of a request on a mesh at a computation step: the operation, the mesh's name,
     ! numdt and numit.

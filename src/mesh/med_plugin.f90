@@ -27,7 +27,7 @@ module med_plugin
 
     !> File name of the plug-in and the version of its entry points this module speaks.
     character(len=*), parameter, public :: MED_PLUGIN_NAME = 'libparasol_med.so'
-    integer(c_int), parameter :: MED_PLUGIN_ABI = 1
+    integer(c_int), parameter :: MED_PLUGIN_ABI = 2
     !> Codes returned by the plug-in itself (not MED's).
     integer(c_int), parameter, public :: PLUGIN_BAD_SIZE = -900001
 
@@ -243,6 +243,81 @@ module med_plugin
             real(c_double), intent(in) :: values(*)
             integer(c_int) :: rc
         end function write_field_values_f
+        function loc_name_f(fid, it, name) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            integer(c_int), value :: it
+            character(kind=c_char), intent(out) :: name(*)
+            integer(c_int) :: rc
+        end function loc_name_f
+        function write_loc_f(fid, name, geotype, dim, refcoo, npoints, gscoo, weights) &
+            result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: name(*)
+            integer(c_int), value :: geotype, dim, npoints
+            real(c_double), intent(in) :: refcoo(*), gscoo(*), weights(*)
+            integer(c_int) :: rc
+        end function write_loc_f
+        function write_entity_f(fid, field, numdt, numit, dt, entity, geotype, n, profile, &
+                                localization, values) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*), profile(*), localization(*)
+            integer(c_int), value :: numdt, numit, entity, geotype, n
+            real(c_double), value :: dt
+            real(c_double), intent(in) :: values(*)
+            integer(c_int) :: rc
+        end function write_entity_f
+        function field_name_count_f(fid, field) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int) :: n
+        end function field_name_count_f
+        function step_info_f(fid, field, it, numdt, numit, dt) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int), value :: it
+            integer(c_int), intent(out) :: numdt, numit
+            real(c_double), intent(out) :: dt
+            integer(c_int) :: rc
+        end function step_info_f
+        function part_count_f(fid, field, numdt, numit, entity, geotype) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int), value :: numdt, numit, entity, geotype
+            integer(c_int) :: n
+        end function part_count_f
+        function part_info_f(fid, field, numdt, numit, entity, geotype, it, profile, &
+                             profilesize, localization, npoints) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*)
+            integer(c_int), value :: numdt, numit, entity, geotype, it
+            character(kind=c_char), intent(out) :: profile(*), localization(*)
+            integer(c_int), intent(out) :: profilesize, npoints
+            integer(c_int) :: n
+        end function part_info_f
+        function read_entity_f(fid, field, numdt, numit, entity, geotype, profile, capacity, &
+                               values) result(rc) bind(c)
+            import :: c_int, c_int64_t, c_char, c_double
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: field(*), profile(*)
+            integer(c_int), value :: numdt, numit, entity, geotype, capacity
+            real(c_double), intent(out) :: values(*)
+            integer(c_int) :: rc
+        end function read_entity_f
+        function read_profile_f(fid, name, capacity, numbers) result(n) bind(c)
+            import :: c_int, c_int64_t, c_char
+            integer(c_int64_t), value :: fid
+            character(kind=c_char), intent(in) :: name(*)
+            integer(c_int), value :: capacity
+            integer(c_int), intent(out) :: numbers(*)
+            integer(c_int) :: n
+        end function read_profile_f
     end interface
 
     !> The plug-in's entry points, set once by med_load.
@@ -278,6 +353,16 @@ module med_plugin
         procedure(fid_f), pointer, nopass :: profile_count => null()
         procedure(write_profile_f), pointer, nopass :: write_profile => null()
         procedure(write_field_values_f), pointer, nopass :: write_field_values => null()
+        procedure(fid_f), pointer, nopass :: localization_count => null()
+        procedure(loc_name_f), pointer, nopass :: localization_name => null()
+        procedure(write_loc_f), pointer, nopass :: write_localization => null()
+        procedure(write_entity_f), pointer, nopass :: write_entity_values => null()
+        procedure(field_name_count_f), pointer, nopass :: field_step_count => null()
+        procedure(step_info_f), pointer, nopass :: field_step_info => null()
+        procedure(part_count_f), pointer, nopass :: field_profile_count => null()
+        procedure(part_info_f), pointer, nopass :: field_value_info => null()
+        procedure(read_entity_f), pointer, nopass :: read_entity_values => null()
+        procedure(read_profile_f), pointer, nopass :: read_profile => null()
     end type plugin_t
 
     !> The plug-in's entry points, set once by med_load.
@@ -438,6 +523,36 @@ contains
         call find_symbol(plugin%library, 'parasol_med_write_field_values', a, st)
         if (st%failed()) return
         call c_f_procpointer(a, plugin%write_field_values)
+        call find_symbol(plugin%library, 'parasol_med_localization_count', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%localization_count)
+        call find_symbol(plugin%library, 'parasol_med_localization_name', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%localization_name)
+        call find_symbol(plugin%library, 'parasol_med_write_localization', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%write_localization)
+        call find_symbol(plugin%library, 'parasol_med_write_entity_values', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%write_entity_values)
+        call find_symbol(plugin%library, 'parasol_med_field_step_count', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_step_count)
+        call find_symbol(plugin%library, 'parasol_med_field_step_info', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_step_info)
+        call find_symbol(plugin%library, 'parasol_med_field_profile_count', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_profile_count)
+        call find_symbol(plugin%library, 'parasol_med_field_value_info', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%field_value_info)
+        call find_symbol(plugin%library, 'parasol_med_read_entity_values', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%read_entity_values)
+        call find_symbol(plugin%library, 'parasol_med_read_profile', a, st)
+        if (st%failed()) return
+        call c_f_procpointer(a, plugin%read_profile)
     end subroutine bind_all
 
     !> True once the plug-in is loaded (a deck without MED never loads it).

@@ -29,7 +29,10 @@ module med_server
         OP_WRITE_COORDINATES = 18, OP_WRITE_CONNECTIVITY = 19, OP_WRITE_NAMES = 20, &
         OP_WRITE_FAMILIES = 21, OP_CREATE_FAMILY = 22, OP_FIELD_COUNT = 23, &
         OP_FIELD_INFO = 24, OP_CREATE_FIELD = 25, OP_PROFILE_COUNT = 26, &
-        OP_WRITE_PROFILE = 27, OP_WRITE_FIELD_VALUES = 28
+        OP_WRITE_PROFILE = 27, OP_WRITE_FIELD_VALUES = 28, OP_LOCALIZATION_COUNT = 29, &
+        OP_LOCALIZATION_NAME = 30, OP_WRITE_LOCALIZATION = 31, OP_WRITE_ENTITY_VALUES = 32, &
+        OP_FIELD_STEP_COUNT = 33, OP_FIELD_STEP_INFO = 34, OP_FIELD_PART_COUNT = 35, &
+        OP_FIELD_PART_INFO = 36, OP_READ_ENTITY_VALUES = 37, OP_READ_PROFILE = 38
     !> Returned for a request the server does not know (a bug: client and server disagree).
     integer(c_int), parameter, public :: SERVER_BAD_REQUEST = -900100
 
@@ -74,9 +77,9 @@ contains
         character(kind=c_char), allocatable :: chars(:), more(:), names(:)
         character(kind=c_char) :: name(NAME_BYTES), other(NAME_BYTES)
         integer(i4), allocatable :: ints(:)
-        real(dp), allocatable :: reals(:)
+        real(dp), allocatable :: reals(:), more_reals(:), weights(:)
         real(dp) :: x
-        integer(c_int) :: rc, i1, i2, i3, i4_, i5, n
+        integer(c_int) :: rc, i1, i2, i3, i4_, i5, i6, n
         integer :: err, ios
         done = .false.
         call clear_errno()
@@ -261,6 +264,79 @@ contains
             call head(r, plugin%write_field_values(fid, a // c_null_char, i1, i2, &
                                                    real(x, c_double), i3, c // c_null_char, &
                                                    reals))
+        case (OP_LOCALIZATION_COUNT)
+            call head(r, plugin%localization_count(fid))
+        case (OP_LOCALIZATION_NAME)                   ! it
+            i1 = q%get_int()
+            name = c_null_char
+            rc = plugin%localization_name(fid, i1, name)
+            call head(r, rc)
+            call r%put_chars(name)
+        case (OP_WRITE_LOCALIZATION)     ! name, geotype, dim, refcoo, npoints, gscoo, weights
+            a = q%get_text()
+            i1 = q%get_int(); i2 = q%get_int()
+            call q%get_reals(reals)
+            i3 = q%get_int()
+            call q%get_reals(more_reals)
+            call q%get_reals(weights)
+            call head(r, plugin%write_localization(fid, a // c_null_char, i1, i2, reals, i3, &
+                                                   more_reals, weights))
+        case (OP_WRITE_ENTITY_VALUES)   ! field, numdt, numit, dt, entity, geotype, n,
+            a = q%get_text()            ! profile, localisation, values
+            i1 = q%get_int(); i2 = q%get_int()
+            x = q%get_real()
+            i3 = q%get_int(); i4_ = q%get_int(); i5 = q%get_int()
+            b = q%get_text()
+            c = q%get_text()
+            call q%get_reals(reals)
+            call head(r, plugin%write_entity_values(fid, a // c_null_char, i1, i2, &
+                real(x, c_double), i3, i4_, i5, b // c_null_char, c // c_null_char, reals))
+        case (OP_FIELD_STEP_COUNT)                    ! field
+            a = q%get_text()
+            call head(r, plugin%field_step_count(fid, a // c_null_char))
+        case (OP_FIELD_STEP_INFO)                     ! field, it
+            a = q%get_text()
+            i1 = q%get_int()
+            rc = plugin%field_step_info(fid, a // c_null_char, i1, i2, i3, x)
+            call head(r, rc)
+            call r%put_int(int(i2))
+            call r%put_int(int(i3))
+            call r%put_real(real(x, dp))
+        case (OP_FIELD_PART_COUNT)             ! field, numdt, numit, entity, geotype
+            a = q%get_text()
+            i1 = q%get_int(); i2 = q%get_int(); i3 = q%get_int(); i4_ = q%get_int()
+            call head(r, plugin%field_profile_count(fid, a // c_null_char, i1, i2, i3, i4_))
+        case (OP_FIELD_PART_INFO)          ! field, numdt, numit, entity, geotype, it
+            a = q%get_text()
+            i1 = q%get_int(); i2 = q%get_int(); i3 = q%get_int(); i4_ = q%get_int()
+            i5 = q%get_int()
+            name = c_null_char
+            other = c_null_char
+            rc = plugin%field_value_info(fid, a // c_null_char, i1, i2, i3, i4_, i5, name, n, &
+                                         other, i6)
+            call head(r, rc)
+            call r%put_chars(name)
+            call r%put_chars(other)
+            call r%put_int(int(i6))
+        case (OP_READ_ENTITY_VALUES)   ! field, numdt, numit, entity, geotype, profile, size
+            a = q%get_text()
+            i1 = q%get_int(); i2 = q%get_int(); i3 = q%get_int(); i4_ = q%get_int()
+            b = q%get_text()
+            n = q%get_int()
+            allocate (reals(max(n, 0)), stat=ios)
+            rc = PLUGIN_BAD_SIZE
+            if (ios == 0) rc = plugin%read_entity_values(fid, a // c_null_char, i1, i2, i3, &
+                                                         i4_, b // c_null_char, n, reals)
+            call head(r, rc)
+            if (rc >= 0) call r%put_reals(reals)
+        case (OP_READ_PROFILE)                        ! name, capacity
+            a = q%get_text()
+            n = q%get_int()
+            allocate (ints(max(n, 1)), stat=ios)
+            rc = PLUGIN_BAD_SIZE
+            if (ios == 0) rc = plugin%read_profile(fid, a // c_null_char, n, ints)
+            call head(r, rc)
+            if (rc >= 0) call r%put_ints(ints(1:rc))
         case default
             call head(r, SERVER_BAD_REQUEST)
         end select

@@ -1,93 +1,62 @@
-!> IMPR_RESU: prints the fields of results (evol_elas, evol_noli) (listings.md, "IMPR_RESU").
-!>  FORMAT='RESULTAT' (default): tables in the `.resu`, one per field and stored instant
-!>                    (result_table), restricted to GROUP_NO nodes and NOM_CMP components;
-!>  FORMAT='VTK'      : per RESU occurrence `<stem>_<RESULT>.pvd` and one
-!>                    `<stem>_<RESULT>_NNNN.vtu` per instant in the output folder;
-!>  FORMAT='GMSH'     : per RESU occurrence `<stem>_<RESULT>.msh` in the output folder;
+!> IMPR_RESU: prints meshes and fields (doc/listings.md, "IMPR_RESU"). Each RESU occurrence
+!> names what it prints (impr_resu_select: RESULTAT with NOM_CHAM at its instants, CHAM_GD,
+!> MAILLAGE; NOM_CMP, GROUP_NO, GROUP_MA), and the fields are those TEST_RESU reads
+!> (result_access), at the nodes or the cells' points:
+!>  FORMAT='RESULTAT' (parasol's default): tables in the `.resu`, one per field and instant
+!>                    (field_listing); MAILLAGE alone: the mesh in Code_Aster's ASTER format;
+!>  FORMAT='VTK'      : per RESU occurrence `<stem>_<NAME>.pvd` and one
+!>                    `<stem>_<NAME>_NNNN.vtu` per instant in the output folder;
+!>  FORMAT='GMSH'     : per RESU occurrence `<stem>_<NAME>.msh` in the output folder;
 !>  FORMAT='MED'      : the mesh and the fields (result_med, laid out as Code_Aster writes
 !>                    them) in the file bound to UNITE (default 80, as Code_Aster) with
 !>                    `--unit 80=PATH`, every RESU occurrence in that one file; unbound, one
-!>                    `<stem>_<RESULT>.rmed` per occurrence in the output folder. Without
-!>                    NOM_CHAM every stored field (DEPL, FORC_NODA, REAC_NODA) is written. A
-!>                    file written earlier in the run is added to (Code_Aster adds to the
-!>                    file of a unit), not replaced; the mesh goes in once.
+!>                    `<stem>_<NAME>.rmed` per occurrence in the output folder. A file
+!>                    written earlier in the run is added to (Code_Aster adds to the file
+!>                    of a unit), not replaced; the mesh goes in once.
 !> For VTK and GMSH, a UNITE given in the deck and bound with `--unit N=PATH` replaces the
 !> default name: PATH itself for GMSH; for VTK the .pvd is PATH (`.pvd` added when PATH lacks
 !> it) and the .vtu files are named after it. Files are named in the .mess.
 !>
-!> Node fields are built from the equation vectors of the result and its DOF numbering: a
-!> node carries a component when it has an equation for it (node_fields_from_result). A
-!> non-finite value is never written: the command stops with an error naming node and
-!> component instead. The element fields of the DIS_CHOC springs (SIEF_ELGA, VARI_ELGA) are
-!> tables per cell and point in the .resu, and cell data for viewers (result_cell_arrays:
-!> one array per component, SPRING_STATUS); VTK and Gmsh files also carry GROUP_<name> for
-!> every cell group. Without NOM_CHAM, viewers get DEPL and, when the result has DIS_CHOC
-!> springs, SIEF_ELGA and VARI_ELGA; the .resu gets DEPL.
+!> Viewers get node fields as point data and cell fields as cell data (field_viewer_data:
+!> the mean of each cell's points, per component and sub-point), every cell group as
+!> GROUP_<name> and, with the element fields of a result with DIS_CHOC springs,
+!> SPRING_STATUS. A value that is not a finite number is never written: the command stops
+!> with an error naming the field, and the node or cell.
 module impr_resu_command
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_INTERNAL
-    use strings, only: string_t, to_text, to_upper, ends_with
+    use strings, only: string_t, to_text, ends_with, real_e13
     use deck_concept, only: concept_t
+    use deck_value, only: append_string
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node_group, nodes_of_group, node_name, CELL_TYPE_NAMES
-    use model_dof_numbering, only: component_index, COMPONENT_NAMES, N_COMPONENTS
-    use analysis_result, only: result_concept_t, result_find, is_cell_field
-    use element_spring_fields, only: SPRING_POINTS
-    use result_data, only: node_field_t, cell_type_from_name
-    use result_table, only: resultat_table_lines, cell_table_lines
-    use result_cell_arrays, only: spring_cell_arrays, group_cell_arrays, split_components, &
-        field_components
-    use result_data, only: cell_array_t
-    use mesh_types, only: cell_name
+    use mesh_types, only: mesh_t, node_name, cell_name, CELL_TYPE_NAMES
+    use field_types, only: field_t, FIELD_NOEU, field_type_cham
+    use analysis_result, only: result_concept_t
+    use result_data, only: node_field_t, cell_array_t, cell_type_from_name
+    use result_cell_arrays, only: group_cell_arrays, spring_status_array
     use result_vtk, only: write_vtk_series
     use result_gmsh, only: write_gmsh_file
     use result_med, only: med_output_t, med_output_open, med_output_commit, &
         med_output_discard, med_output_mesh, write_med_mesh, write_med_node_field, &
-        med_field_name
-    use test_resu_command, only: result_of_keyword, relocate
+        med_field_name, write_med_cell_field, med_cell_step_t
+    use impr_resu_select, only: print_set_t, print_item_t, select_occurrence, locate
+    use field_listing, only: field_table_lines
+    use field_viewer_data, only: node_field_of, cell_arrays_of, field_columns
+    use mesh_listing, only: aster_mesh_lines
     implicit none
     private
 
-    !> NOM_CHAM printed when the occurrence gives none (Code_Aster prints every field; DEPL
-    !> is the one every analysis stores and the one viewers deform the mesh with).
-    character(len=*), parameter :: DEFAULT_FIELD = 'DEPL'
-    !> FORMAT='MED' without NOM_CHAM: every field a result stores (Code_Aster writes every
-    !> field of the result).
-    character(len=9), parameter :: MED_DEFAULT_FIELDS(3) = ['DEPL     ', 'FORC_NODA', &
-                                                            'REAC_NODA']
     !> Code_Aster's default UNITE of IMPR_RESU for FORMAT='MED' (U4.91.01).
     integer(i4), parameter :: MED_DEFAULT_UNIT = 80
 
-    public :: run_impr_resu, node_fields_from_result, result_mesh_arrays, &
-        impr_resu_instants, impr_resu_group_nodes, impr_resu_components
+    public :: run_impr_resu, result_mesh_arrays
 
 contains
 
-    !> The result of RESULTAT as an analysis result (the writers read its state and mesh).
-    !>  st : located at RESULTAT for any other concept
-    subroutine analysis_result_of(occ, res, st)
-        use result_fields, only: result_fields_t
-        type(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), pointer, intent(out) :: res
-        type(status_t), intent(out) :: st
-        class(result_fields_t), pointer :: any
-        res => null()
-        call result_of_keyword(occ, 'RESULTAT', any, st)
-        if (st%failed()) return
-        select type (any)
-        type is (result_concept_t)
-            res => any
-        class default
-            call occ%error_at('RESULTAT', 'IMPR_RESU prints the results of MECA_STATIQUE ' // &
-                'and STAT_NON_LINE, not a ' // any%type_name(), st)
-        end select
-    end subroutine analysis_result_of
-
     !> Handler of IMPR_RESU (doc/architecture.md "Writing a command handler").
-    !>  st : located errors (RESULTAT of another type, INST/NUME_ORDRE not stored, unknown
-    !>       GROUP_NO, a component no node carries, a bound UNITE with several RESU, a
+    !>  st : located errors (impr_resu_select's, a bound UNITE with several RESU, a
     !>       non-finite value), STATUS_IO_ERROR when a file cannot be written
     subroutine run_impr_resu(ctx, cmd, result, st)
         type(run_context_t), intent(inout) :: ctx
@@ -95,6 +64,7 @@ contains
         class(concept_t), allocatable, intent(out) :: result
         type(status_t), intent(out) :: st
         character(len=:), allocatable :: format, bound_path
+        type(print_set_t) :: set
         integer :: k
         if (allocated(result)) deallocate (result)     ! IMPR_RESU has no result
         call cmd%get_text('FORMAT', format, st)
@@ -106,7 +76,15 @@ contains
         call bound_unit_path(ctx, cmd, bound_path, st)
         if (st%failed()) return
         do k = 1, cmd%count('RESU')
-            call print_occurrence(ctx, format, bound_path, cmd%occurrence('RESU', k), st)
+            call select_occurrence(cmd%occurrence('RESU', k), set, st)
+            if (st%ok()) call check_finite(cmd%occurrence('RESU', k), set, st)
+            if (st%failed()) return
+            select case (format)
+            case ('VTK', 'GMSH')
+                call write_viewer_file(ctx, format, bound_path, set, st)
+            case default
+                call write_tables(ctx, set)
+            end select
             if (st%failed()) return
         end do
     end subroutine run_impr_resu
@@ -134,238 +112,264 @@ contains
             'per IMPR_RESU (or leave the unit unbound for one file per result)', st)
     end subroutine bound_unit_path
 
-    !> One RESU occurrence in the given format.
-    subroutine print_occurrence(ctx, format, bound_path, occ, st)
-        type(run_context_t), intent(inout) :: ctx
-        character(len=*), intent(in) :: format, bound_path
+    !> Refuses a value that is not a finite number (named with its node or cell).
+    subroutine check_finite(occ, set, st)
         type(keyword_set_t), intent(in) :: occ
+        type(print_set_t), intent(in) :: set
         type(status_t), intent(out) :: st
-        type(result_concept_t), pointer :: res
-        type(string_t), allocatable :: fields(:), given(:), components(:), sief_cmps(:), &
-            vari_cmps(:)
-        integer(i4), allocatable :: indices(:)
-        call analysis_result_of(occ, res, st)
-        if (st%failed()) return
-        if (occ%has('NOM_CHAM')) then
-            call occ%get_texts('NOM_CHAM', fields, st)
-            if (st%failed()) return
-        else
-            allocate (fields(1))
-            fields(1)%s = DEFAULT_FIELD
-            ! viewers also get the springs' fields: colour by SPRING_STATUS in one click
-            if (format /= 'RESULTAT' .and. size(res%spring_cell) > 0) &
-                fields = [fields, string_t('SIEF_ELGA'), string_t('VARI_ELGA')]
-        end if
-        call occurrence_instants(occ, res, indices, st)
-        if (st%failed()) return
-        allocate (given(0))
-        if (occ%has('NOM_CMP')) call occ%get_texts('NOM_CMP', given, st)
-        if (st%failed()) return
-        call split_components(res, fields, given, components, sief_cmps, vari_cmps, st)
-        if (st%ok()) call impr_resu_components(res, components, st)
-        if (st%failed()) then
-            call relocate(occ, trim(merge('NOM_CMP ', 'NOM_CHAM', occ%has('NOM_CMP'))), st)
+        integer(i4) :: k, j, n, c
+        integer(i8) :: v
+        do k = 1, size(set%items)
+            associate (f => set%items(k)%f)
+                if (f%location == FIELD_NOEU) then
+                    do n = 1, f%n_nodes
+                        do j = 1, size(f%components, kind=i4)
+                            if (.not. f%node_has(j, n)) cycle
+                            if (ieee_is_finite(f%node_values(j, n))) cycle
+                            call occ%error_at(trim(merge('NOM_CHAM', 'CHAM_GD ', &
+                                set%from_result)), set%items(k)%name // ' at node ' // &
+                                node_name(set%mesh, n) // ', component ' // &
+                                f%components(j)%s // ' is not a finite number; not written', &
+                                st, STATUS_MODEL_ERROR)
+                            return
+                        end do
+                    end do
+                else
+                    if (all(ieee_is_finite(f%values))) cycle
+                    do c = 1, f%n_cells
+                        do v = f%offset(c) + 1, f%offset(c + 1)
+                            if (ieee_is_finite(f%values(v))) cycle
+                            call occ%error_at(trim(merge('NOM_CHAM', 'CHAM_GD ', &
+                                set%from_result)), set%items(k)%name // ' on cell ' // &
+                                cell_name(set%mesh, c) // ' has a value that is not a ' // &
+                                'finite number; not written', st, STATUS_MODEL_ERROR)
+                            return
+                        end do
+                    end do
+                end if
+            end associate
+        end do
+    end subroutine check_finite
+
+    !> FORMAT='RESULTAT': one table per field and instant in the .resu; a mesh alone in
+    !> Code_Aster's ASTER format.
+    subroutine write_tables(ctx, set)
+        type(run_context_t), intent(inout) :: ctx
+        type(print_set_t), intent(in) :: set
+        type(string_t), allocatable :: lines(:)
+        integer :: k, i
+        if (set%mesh_only) then
+            call aster_mesh_lines(set%mesh, lines)
+            do i = 1, size(lines)
+                call ctx%write_resu(lines(i)%s)
+            end do
+            call ctx%write_mess('    IMPR_RESU: the mesh (' // to_text(set%mesh%n_nodes) // &
+                ' nodes, ' // to_text(set%mesh%n_cells) // ' cells) written to the .resu')
             return
         end if
-        select case (format)
-        case ('VTK', 'GMSH')
-            call write_viewer_file(ctx, format, bound_path, res, fields, components, indices, &
-                st, sief_cmps, vari_cmps)
-        case default
-            call write_tables(ctx, occ, res, fields, components, indices, st, sief_cmps, &
-                vari_cmps)
-        end select
-    end subroutine print_occurrence
-
-    !> The stored instants asked for by INST or NUME_ORDRE (all when neither is given).
-    subroutine occurrence_instants(occ, res, indices, st)
-        type(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), intent(in) :: res
-        integer(i4), allocatable, intent(out) :: indices(:)
-        type(status_t), intent(out) :: st
-        real(dp), allocatable :: insts(:)
-        integer(i4), allocatable :: nume_ordres(:)
-        if (occ%has('INST')) then
-            call occ%get_reals('INST', insts, st)
-            if (st%ok()) call impr_resu_instants(res, indices, st, insts=insts)
-            if (st%failed()) call relocate(occ, 'INST', st)
-        else if (occ%has('NUME_ORDRE')) then
-            call occ%get_ints('NUME_ORDRE', nume_ordres, st)
-            if (st%failed()) return
-            call impr_resu_instants(res, indices, st, nume_ordres=nume_ordres)
-            if (st%failed()) call relocate(occ, 'NUME_ORDRE', st)
-        else
-            call impr_resu_instants(res, indices, st)
-        end if
-    end subroutine occurrence_instants
-
-    !> FORMAT='RESULTAT': one table per field and instant in the .resu.
-    !>  sief_cmps, vari_cmps : in, the components of the element fields (empty: all)
-    subroutine write_tables(ctx, occ, res, fields, components, indices, st, sief_cmps, &
-                            vari_cmps)
-        type(run_context_t), intent(inout) :: ctx
-        type(keyword_set_t), intent(in) :: occ
-        type(result_concept_t), intent(in) :: res
-        type(string_t), intent(in) :: fields(:), components(:)
-        integer(i4), intent(in) :: indices(:)
-        type(status_t), intent(out) :: st
-        type(string_t), intent(in) :: sief_cmps(:), vari_cmps(:)
-        type(string_t), allocatable :: groups(:), names(:), lines(:)
-        integer(i4), allocatable :: nodes(:)
-        type(node_field_t) :: field
-        integer :: f, k, i
-        allocate (names(res%mesh%n_nodes))
-        do i = 1, res%mesh%n_nodes
-            names(i)%s = node_name(res%mesh, int(i, i4))
-        end do
-        nodes = [(int(i, i4), i = 1, res%mesh%n_nodes)]
-        if (occ%has('GROUP_NO')) then
-            call occ%get_texts('GROUP_NO', groups, st)
-            if (st%ok()) call impr_resu_group_nodes(res%mesh, groups, nodes, st)
-            if (st%failed()) then
-                call relocate(occ, 'GROUP_NO', st)
-                return
-            end if
-        end if
-        do f = 1, size(fields)
-            do k = 1, size(indices)
-                if (is_cell_field(fields(f)%s)) then
-                    if (fields(f)%s == 'SIEF_ELGA') then
-                        call spring_table(res, fields(f)%s, sief_cmps, indices(k), lines)
-                    else
-                        call spring_table(res, fields(f)%s, vari_cmps, indices(k), lines)
-                    end if
-                    do i = 1, size(lines)
-                        call ctx%write_resu(lines(i)%s)
-                    end do
-                    cycle
-                end if
-                call node_fields_from_result(res, fields(f)%s, components, indices(k), field, st)
-                if (st%failed()) return
-                call resultat_table_lines(res%name, int(res%nume_ordre(indices(k))), &
-                    res%inst(indices(k)), field, names, lines, node_list=int(nodes))
-                do i = 1, size(lines)
-                    call ctx%write_resu(lines(i)%s)
-                end do
+        do k = 1, size(set%items)
+            call field_table_lines(set, set%items(k), lines)
+            do i = 1, size(lines)
+                call ctx%write_resu(lines(i)%s)
             end do
         end do
-        call ctx%write_mess('    IMPR_RESU: ' // to_text(size(fields, kind=i4) * &
-            size(indices, kind=i4)) // ' table(s) of ' // res%name // ' written to the .resu')
+        call ctx%write_mess('    IMPR_RESU: ' // to_text(size(set%items, kind=i4)) // &
+            ' table(s) of ' // set%owner // ' written to the .resu')
     end subroutine write_tables
 
-    !> A RESULTAT table of an element field at stored instant `stored`: a row per spring
-    !> and point (result_table cell_table_lines).
-    subroutine spring_table(res, field, components, stored, lines)
-        type(result_concept_t), intent(in) :: res
-        character(len=*), intent(in) :: field
-        type(string_t), intent(in) :: components(:)
-        integer(i4), intent(in) :: stored
-        type(string_t), allocatable, intent(out) :: lines(:)
-        type(cell_array_t), allocatable :: arrays(:)
-        type(string_t), allocatable :: names(:), cells(:)
-        real(dp), allocatable :: values(:, :)
-        integer(i4) :: a, k
-        call spring_cell_arrays(res, stored, field, components, arrays)
-        names = components
-        if (size(names) == 0) names = field_components(res, field)
-        allocate (cells(size(res%spring_cell)), values(size(names), size(res%spring_cell)))
-        do k = 1, size(res%spring_cell)
-            cells(k)%s = cell_name(res%mesh, res%spring_cell(k))
-            do a = 1, size(names)
-                values(a, k) = arrays(a)%values(res%spring_cell(k))
-            end do
-        end do
-        call cell_table_lines(res%name, int(res%nume_ordre(stored)), res%inst(stored), field, &
-            names, cells, SPRING_POINTS, values, lines)
-    end subroutine spring_table
-
-    !> FORMAT='VTK' or 'GMSH': the mesh of the result with every field of every instant:
-    !> node fields as point data, element fields and the cell groups as cell data.
-    !>  sief_cmps, vari_cmps : in, the components of the element fields (empty: all)
-    subroutine write_viewer_file(ctx, format, bound_path, res, fields, components, indices, &
-                                 st, sief_cmps, vari_cmps)
+    !> FORMAT='VTK' or 'GMSH': the mesh with every field of every instant: node fields as
+    !> point data, cell fields and the cell groups as cell data.
+    subroutine write_viewer_file(ctx, format, bound_path, set, st)
         type(run_context_t), intent(inout) :: ctx
         character(len=*), intent(in) :: format, bound_path
-        type(result_concept_t), intent(in) :: res
-        type(string_t), intent(in) :: fields(:), components(:)
-        integer(i4), intent(in) :: indices(:)
+        type(print_set_t), intent(in) :: set
         type(status_t), intent(out) :: st
-        type(string_t), intent(in) :: sief_cmps(:), vari_cmps(:)
         type(node_field_t), allocatable :: node_fields(:, :)
         type(cell_array_t), allocatable :: cells(:, :)
-        type(string_t), allocatable :: node_names(:)
-        integer, allocatable :: cell_types(:), cell_ptr(:), cell_nodes(:)
-        character(len=:), allocatable :: path
-        integer :: f, k
-        call result_mesh_arrays(res%mesh, cell_types, cell_ptr, cell_nodes, st)
+        integer, allocatable :: cell_types(:), cell_ptr(:), cell_nodes(:), steps(:)
+        real(dp), allocatable :: times(:)
+        character(len=:), allocatable :: path, name
+        call result_mesh_arrays(set%mesh, cell_types, cell_ptr, cell_nodes, st)
         if (st%failed()) return
-        allocate (node_names(0))
-        do f = 1, size(fields)
-            if (.not. is_cell_field(fields(f)%s)) node_names = [node_names, fields(f)]
-        end do
-        allocate (node_fields(size(node_names), size(indices)))
-        do k = 1, size(indices)
-            do f = 1, size(node_names)
-                call node_fields_from_result(res, node_names(f)%s, components, indices(k), &
-                                             node_fields(f, k), st)
-                if (st%failed()) return
-            end do
-        end do
-        call viewer_cell_arrays(res, fields, indices, sief_cmps, vari_cmps, cells)
+        call viewer_data(set, times, steps, node_fields, cells)
+        name = set%owner
+        if (len(name) == 0) name = 'MAIL'
         if (format == 'VTK') then
             path = bound_path
-            if (len(path) == 0) path = ctx%output_path('_' // res%name // '.pvd')
+            if (len(path) == 0) path = ctx%output_path('_' // name // '.pvd')
             if (.not. ends_with(path, '.pvd')) path = path // '.pvd'
-            call write_vtk_series(path(1:len(path) - 4), res%mesh%coords, cell_types, &
-                cell_ptr, cell_nodes, res%inst(indices), node_fields, st, cells)
+            call write_vtk_series(path(1:len(path) - 4), set%mesh%coords, cell_types, &
+                cell_ptr, cell_nodes, times, node_fields, st, cells)
             if (st%ok()) call ctx%write_mess('    IMPR_RESU: wrote ' // path // ' and ' // &
-                to_text(size(indices, kind=i4)) // ' .vtu file(s) next to it')
+                to_text(size(times)) // ' .vtu file(s) next to it')
         else
             path = bound_path
-            if (len(path) == 0) path = ctx%output_path('_' // res%name // '.msh')
-            call write_gmsh_file(path, res%mesh%coords, cell_types, cell_ptr, cell_nodes, &
-                res%inst(indices), int(res%nume_ordre(indices)), node_fields, st, cells)
+            if (len(path) == 0) path = ctx%output_path('_' // name // '.msh')
+            call write_gmsh_file(path, set%mesh%coords, cell_types, cell_ptr, cell_nodes, &
+                times, steps, node_fields, st, cells)
             if (st%ok()) call ctx%write_mess('    IMPR_RESU: wrote ' // path)
         end if
     end subroutine write_viewer_file
 
-    !> The cell data of each instant: the cell groups, then the element fields asked for
-    !> (SPRING_STATUS once, after them).
-    !>  cells : out, (n_arrays, size(indices))
-    subroutine viewer_cell_arrays(res, fields, indices, sief_cmps, vari_cmps, cells)
-        type(result_concept_t), intent(in) :: res
-        type(string_t), intent(in) :: fields(:), sief_cmps(:), vari_cmps(:)
-        integer(i4), intent(in) :: indices(:)
+    !> The instants of a print set (in the order first met; one at INST 0 for a CHAM_GD or a
+    !> mesh) and, per instant, its node fields and cell arrays, the same arrays at every
+    !> instant (an array an instant lacks is defined nowhere there).
+    subroutine viewer_data(set, times, steps, node_fields, cells)
+        type(print_set_t), intent(in) :: set
+        real(dp), allocatable, intent(out) :: times(:)
+        integer, allocatable, intent(out) :: steps(:)
+        type(node_field_t), allocatable, intent(out) :: node_fields(:, :)
         type(cell_array_t), allocatable, intent(out) :: cells(:, :)
-        type(cell_array_t), allocatable :: groups(:), one(:), all(:)
-        integer :: f, k
-        logical :: status_written
-        call group_cell_arrays(res%mesh, groups)
-        do k = 1, size(indices)
-            all = groups
-            status_written = .false.
-            do f = 1, size(fields)
-                if (.not. is_cell_field(fields(f)%s)) cycle
-                if (fields(f)%s == 'SIEF_ELGA') then
-                    call spring_cell_arrays(res, indices(k), fields(f)%s, sief_cmps, one)
-                else
-                    call spring_cell_arrays(res, indices(k), fields(f)%s, vari_cmps, one)
-                end if
-                ! the last array is SPRING_STATUS: keep it once
-                if (status_written) then
-                    all = [all, one(1:size(one) - 1)]
-                else
-                    all = [all, one]
-                end if
-                status_written = .true.
+        type(cell_array_t), allocatable :: groups(:), some(:), status_array(:)
+        type(string_t), allocatable :: node_names(:), cell_names(:)
+        integer, allocatable :: at(:), stored(:)
+        integer :: k, j, n, a
+        logical :: any_cell_field
+        ! the instants
+        allocate (times(0), steps(0), stored(0), at(size(set%items)))
+        do k = 1, size(set%items)
+            n = 0
+            do j = 1, size(stored)
+                if (stored(j) == set%items(k)%at) n = j
             end do
-            if (k == 1) allocate (cells(size(all), size(indices)))
-            cells(:, k) = all
+            if (n == 0) then
+                times = [times, set%items(k)%inst]
+                steps = [steps, int(set%items(k)%nume_ordre)]
+                stored = [stored, int(set%items(k)%at)]
+                n = size(steps)
+            end if
+            at(k) = n
         end do
-    end subroutine viewer_cell_arrays
+        if (size(times) == 0) then
+            times = [0.0_dp]
+            steps = [0]
+            stored = [0]
+        end if
+        ! the node fields: one row per field name
+        allocate (node_names(0), cell_names(0))
+        any_cell_field = .false.
+        do k = 1, size(set%items)
+            if (set%items(k)%f%location == FIELD_NOEU) then
+                if (.not. listed(node_names, set%items(k)%name)) &
+                    call append_string(node_names, set%items(k)%name)
+            else
+                any_cell_field = .true.
+            end if
+        end do
+        allocate (node_fields(size(node_names), size(times)))
+        do k = 1, size(set%items)
+            if (set%items(k)%f%location /= FIELD_NOEU) cycle
+            j = position(node_names, set%items(k)%name)
+            call node_field_of(set%items(k)%f, set%items(k)%name, set%components, &
+                node_fields(j, at(k)))
+        end do
+        do j = 1, size(node_names)          ! a field an instant lacks: carried nowhere
+            do k = 1, size(times)
+                if (allocated(node_fields(j, k)%values)) cycle
+                call empty_like(node_fields(j, :), node_fields(j, k))
+            end do
+        end do
+        ! the cell arrays: the groups, the element fields, SPRING_STATUS
+        call group_cell_arrays(set%mesh, groups)
+        allocate (some(0))
+        do k = 1, size(set%items)                 ! every array name, in order
+            if (set%items(k)%f%location == FIELD_NOEU) cycle
+            call cell_arrays_of(set%items(k)%f, set%items(k)%name, set%components, &
+                set%cell_taken, some)
+            do a = 1, size(some)
+                if (.not. listed(cell_names, some(a)%name)) &
+                    call append_string(cell_names, some(a)%name)
+            end do
+        end do
+        allocate (status_array(0))
+        allocate (cells(size(groups) + size(cell_names) + 1, size(times)))
+        n = size(groups) + size(cell_names)
+        do j = 1, size(times)
+            cells(1:size(groups), j) = groups
+        end do
+        do k = 1, size(set%items)
+            if (set%items(k)%f%location == FIELD_NOEU) cycle
+            call cell_arrays_of(set%items(k)%f, set%items(k)%name, set%components, &
+                set%cell_taken, some)
+            do a = 1, size(some)
+                cells(size(groups) + position(cell_names, some(a)%name), at(k)) = some(a)
+            end do
+        end do
+        do j = 1, size(times)
+            do a = size(groups) + 1, n
+                if (allocated(cells(a, j)%values)) cycle
+                cells(a, j)%name = cell_names(a - size(groups))%s
+                allocate (cells(a, j)%values(set%mesh%n_cells), source=0.0_dp)
+                allocate (cells(a, j)%defined(set%mesh%n_cells), source=.false.)
+            end do
+        end do
+        ! SPRING_STATUS with the element fields of a result with DIS_CHOC springs
+        if (any_cell_field .and. with_springs(set)) then
+            do j = 1, size(times)
+                call spring_status_array(spring_result(set), int(stored(j), i4), &
+                    cells(n + 1, j))
+            end do
+        else
+            cells = cells(1:n, :)
+        end if
+    contains
+        logical function listed(names, name)
+            type(string_t), intent(in) :: names(:)
+            character(len=*), intent(in) :: name
+            listed = position(names, name) > 0
+        end function listed
+        integer function position(names, name)
+            type(string_t), intent(in) :: names(:)
+            character(len=*), intent(in) :: name
+            integer :: i
+            position = 0
+            do i = 1, size(names)
+                if (names(i)%s == name) position = i
+            end do
+        end function position
+    end subroutine viewer_data
+
+    ! A node field carried nowhere, with the name and components of one of `row`.
+    subroutine empty_like(row, out)
+        type(node_field_t), intent(in) :: row(:)
+        type(node_field_t), intent(out) :: out
+        integer :: k
+        do k = 1, size(row)
+            if (.not. allocated(row(k)%values)) cycle
+            out%name = row(k)%name
+            out%components = row(k)%components
+            allocate (out%values(size(row(k)%values, 1), size(row(k)%values, 2)), &
+                source=0.0_dp)
+            allocate (out%mask(size(row(k)%values, 1), size(row(k)%values, 2)), &
+                source=.false.)
+            return
+        end do
+    end subroutine empty_like
+
+    ! True when the print set is of an analysis result with DIS_CHOC springs.
+    logical function with_springs(set)
+        type(print_set_t), intent(in) :: set
+        type(result_concept_t), pointer :: res
+        with_springs = .false.
+        res => spring_result(set)
+        if (.not. associated(res)) return
+        with_springs = size(res%spring_cell) > 0
+    end function with_springs
+
+    ! The analysis result a print set's fields come from, if it has springs' status.
+    function spring_result(set) result(res)
+        type(print_set_t), intent(in) :: set
+        type(result_concept_t), pointer :: res
+        res => null()
+        if (.not. associated(set%result)) return
+        select type (r => set%result)
+        type is (result_concept_t)
+            if (allocated(r%spring_cell)) res => r
+        end select
+    end function spring_result
 
     !> FORMAT='MED': every RESU occurrence into the file of UNITE (default 80) when it is
-    !> bound, else into one <stem>_<RESULT>.rmed per occurrence.
+    !> bound, else into one <stem>_<NAME>.rmed per occurrence.
     subroutine print_med(ctx, cmd, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
@@ -389,84 +393,53 @@ contains
         end do
     end subroutine print_med
 
-    !> One RESU occurrence into a MED file: the mesh (once per file) and each field.
+    !> One RESU occurrence into a MED file: the mesh (once per file) and each field, one
+    !> computation step per instant (a CHAM_GD: one step, numbers -1, time 0).
     subroutine print_med_occurrence(ctx, bound_path, occ, st)
         type(run_context_t), intent(inout) :: ctx
         character(len=*), intent(in) :: bound_path
         type(keyword_set_t), intent(in) :: occ
         type(status_t), intent(out) :: st
-        type(result_concept_t), pointer :: res
-        type(string_t), allocatable :: fields(:), components(:), groups(:)
-        integer(i4), allocatable :: indices(:), nodes(:)
-        logical, allocatable :: selected(:)
-        type(node_field_t), allocatable :: steps(:)
+        type(print_set_t) :: set
         type(med_output_t) :: out
-        character(len=:), allocatable :: path, mesh_name, written
+        character(len=:), allocatable :: path, mesh_name, written, field_name, name
         logical :: append, exists
-        integer :: f, k
-        call analysis_result_of(occ, res, st)
+        integer :: first, last
+        call select_occurrence(occ, set, st)
+        if (st%ok()) call check_finite(occ, set, st)
         if (st%failed()) return
-        if (occ%has('NOM_CHAM')) then
-            call occ%get_texts('NOM_CHAM', fields, st)
-            if (st%failed()) return
-        else
-            allocate (fields(size(MED_DEFAULT_FIELDS)))
-            do f = 1, size(fields)
-                fields(f)%s = trim(MED_DEFAULT_FIELDS(f))
-            end do
-        end if
-        do f = 1, size(fields)
-            if (.not. is_cell_field(fields(f)%s)) cycle
-            ! an ELGA field in MED needs a Gauss-point localisation the MED plug-in does not
-            ! write yet
-            call occ%error_at('NOM_CHAM', fields(f)%s // ' is not written to MED yet (the ' // &
-                'springs'' element fields go to FORMAT=''VTK'', ''GMSH'' and ''RESULTAT'')', st)
-            return
-        end do
-        call occurrence_instants(occ, res, indices, st)
-        if (st%failed()) return
-        allocate (components(0))
-        if (occ%has('NOM_CMP')) call occ%get_texts('NOM_CMP', components, st)
-        if (st%failed()) return
-        call impr_resu_components(res, components, st)
-        if (st%failed()) then
-            call relocate(occ, 'NOM_CMP', st)
-            return
-        end if
-        allocate (selected(res%mesh%n_nodes), source=.true.)
-        if (occ%has('GROUP_NO')) then
-            call occ%get_texts('GROUP_NO', groups, st)
-            if (st%ok()) call impr_resu_group_nodes(res%mesh, groups, nodes, st)
-            if (st%failed()) then
-                call relocate(occ, 'GROUP_NO', st)
-                return
-            end if
-            selected = .false.
-            selected(nodes) = .true.
-        end if
+        name = set%owner
+        if (len(name) == 0) name = mesh_stem(set%mesh%file)
         path = bound_path
-        if (len(path) == 0) path = ctx%output_path('_' // res%name // '.rmed')
+        if (len(path) == 0) path = ctx%output_path('_' // name // '.rmed')
         append = .false.
         if (allocated(ctx%result_files)) append = any_path(ctx%result_files, path)
         call med_output_open(out, path, append, st)
         if (st%failed()) return
-        call med_output_mesh(out, res%mesh, mesh_stem(res%mesh%file), mesh_name, exists, st)
-        if (st%ok() .and. .not. exists) call write_med_mesh(out, res%mesh, mesh_name, st)
+        call med_output_mesh(out, set%mesh, mesh_stem(set%mesh%file), mesh_name, exists, st)
+        if (st%ok() .and. .not. exists) call write_med_mesh(out, set%mesh, mesh_name, st)
         written = ''
-        do f = 1, size(fields)
-            if (st%failed()) exit
-            if (allocated(steps)) deallocate (steps)
-            allocate (steps(size(indices)))
-            do k = 1, size(indices)
-                call node_fields_from_result(res, fields(f)%s, components, indices(k), &
-                                             steps(k), st)
-                if (st%failed()) exit
+        first = 1
+        do while (first <= size(set%items) .and. st%ok())
+            last = first
+            do while (last < size(set%items))
+                if (set%items(last + 1)%name /= set%items(first)%name) exit
+                last = last + 1
             end do
-            if (st%failed()) exit
-            call write_med_node_field(out, mesh_name, med_field_name(res%name, fields(f)%s), &
-                steps, res%nume_ordre(indices), res%inst(indices), selected, st)
-            if (f > 1) written = written // ', '
-            written = written // med_field_name(res%name, fields(f)%s)
+            field_name = set%items(first)%name
+            if (set%from_result) field_name = med_field_name(set%owner, set%items(first)%name)
+            if (set%items(first)%f%location == FIELD_NOEU) then
+                call write_node_steps(out, set, first, last, mesh_name, field_name, st)
+            else
+                call write_cell_steps(out, set, first, last, mesh_name, field_name, st)
+            end if
+            if (st%failed()) then
+                call locate(occ, trim(merge('NOM_CHAM', 'CHAM_GD ', set%from_result)), st)
+                exit
+            end if
+            if (len(written) > 0) written = written // ', '
+            written = written // field_name
+            first = last + 1
         end do
         if (st%failed()) then
             call med_output_discard(out)
@@ -475,9 +448,58 @@ contains
         call med_output_commit(out, st)
         if (st%failed()) return
         call note_result_file(ctx, path)
+        if (len(written) == 0) written = 'none'
         call ctx%write_mess('    IMPR_RESU: wrote ' // path // ' (MED: mesh ' // mesh_name // &
-            ', fields ' // written // ', ' // to_text(size(indices, kind=i4)) // ' instant(s))')
+            ', fields ' // written // ')')
     end subroutine print_med_occurrence
+
+    ! The node field of items first..last (one per instant) into the MED file.
+    subroutine write_node_steps(out, set, first, last, mesh_name, field_name, st)
+        type(med_output_t), intent(inout) :: out
+        type(print_set_t), intent(in) :: set
+        integer, intent(in) :: first, last
+        character(len=*), intent(in) :: mesh_name, field_name
+        type(status_t), intent(out) :: st
+        type(node_field_t), allocatable :: steps(:)
+        integer(i4), allocatable :: numbers(:)
+        real(dp), allocatable :: times(:)
+        integer :: k
+        allocate (steps(last - first + 1), numbers(last - first + 1), times(last - first + 1))
+        do k = first, last
+            call node_field_of(set%items(k)%f, set%items(k)%name, set%components, &
+                steps(k - first + 1))
+            numbers(k - first + 1) = -1
+            times(k - first + 1) = 0.0_dp
+            if (set%items(k)%has_instant) then
+                numbers(k - first + 1) = set%items(k)%nume_ordre
+                times(k - first + 1) = set%items(k)%inst
+            end if
+        end do
+        call write_med_node_field(out, mesh_name, field_name, steps, numbers, times, &
+            set%node_taken, st)
+    end subroutine write_node_steps
+
+    ! The element field of items first..last (one per instant) into the MED file.
+    subroutine write_cell_steps(out, set, first, last, mesh_name, field_name, st)
+        type(med_output_t), intent(inout) :: out
+        type(print_set_t), intent(in) :: set
+        integer, intent(in) :: first, last
+        character(len=*), intent(in) :: mesh_name, field_name
+        type(status_t), intent(out) :: st
+        type(med_cell_step_t), allocatable :: steps(:)
+        integer :: k
+        allocate (steps(last - first + 1))
+        do k = first, last
+            steps(k - first + 1)%f => set%items(k)%f
+            if (set%items(k)%has_instant) then
+                steps(k - first + 1)%numdt = set%items(k)%nume_ordre
+                steps(k - first + 1)%time = set%items(k)%inst
+            end if
+        end do
+        call write_med_cell_field(out, set%mesh, set%model, mesh_name, field_name, steps, &
+            field_columns(set%items(first)%f, set%components, set%cell_taken), &
+            set%cell_taken, st)
+    end subroutine write_cell_steps
 
     !> The file name of a mesh path without folder and extension (the MED mesh name written
     !> with the results; 'MAIL' when there is none).
@@ -517,170 +539,6 @@ contains
         bigger(n + 1)%s = path
         call move_alloc(bigger, ctx%result_files)
     end subroutine note_result_file
-
-    !> A node field of a result at one stored instant.
-    !>  res        : in, the result
-    !>  field      : in, DEPL, FORC_NODA or REAC_NODA
-    !>  components : in, the component names in output order; empty = every component some
-    !>               node of the numbering carries, in the order DX DY DZ DRX DRY DRZ
-    !>  index      : in, stored instant, 1..res%n_stored
-    !>  node_field : out, values(n_components, n_nodes) and mask (node has an equation for it)
-    !>  st         : STATUS_MODEL_ERROR for an unknown field or component, an index out of
-    !>               range, or a non-finite value (naming node and component)
-    subroutine node_fields_from_result(res, field, components, index, node_field, st)
-        type(result_concept_t), intent(in) :: res
-        character(len=*), intent(in) :: field
-        type(string_t), intent(in) :: components(:)
-        integer(i4), intent(in) :: index
-        type(node_field_t), intent(out) :: node_field
-        type(status_t), intent(out) :: st
-        type(string_t), allocatable :: names(:)
-        integer(i4), allocatable :: comps(:)
-        integer(i4) :: n, c, eq
-        if (index < 1 .or. index > res%n_stored) then
-            call set_error(st, STATUS_MODEL_ERROR, 'instant ' // to_text(index) // &
-                           ' is not stored (the result holds ' // to_text(res%n_stored) // ')')
-            return
-        end if
-        names = components
-        call impr_resu_components(res, names, st)
-        if (st%failed()) return
-        allocate (comps(size(names)))
-        do c = 1, size(names)
-            comps(c) = component_index(to_upper(names(c)%s))
-        end do
-        node_field%name = to_upper(field)
-        node_field%components = names
-        allocate (node_field%values(size(names), res%mesh%n_nodes), source=0.0_dp)
-        allocate (node_field%mask(size(names), res%mesh%n_nodes), source=.false.)
-        do n = 1, min(res%mesh%n_nodes, res%dofs%n_nodes)
-            do c = 1, size(names)
-                eq = res%dofs%equation(comps(c), n)
-                if (eq == 0) cycle
-                node_field%mask(c, n) = .true.
-                call field_value(res, node_field%name, eq, index, node_field%values(c, n), st)
-                if (st%failed()) return
-                if (.not. ieee_is_finite(node_field%values(c, n))) then
-                    call set_error(st, STATUS_MODEL_ERROR, field // ' at node ' // &
-                        node_name(res%mesh, n) // ', component ' // names(c)%s // &
-                        ' is not a finite number; not written')
-                    return
-                end if
-            end do
-        end do
-    end subroutine node_fields_from_result
-
-    !> Value of equation `eq` of a field at stored instant `index`.
-    subroutine field_value(res, field, eq, index, value, st)
-        type(result_concept_t), intent(in) :: res
-        character(len=*), intent(in) :: field
-        integer(i4), intent(in) :: eq, index
-        real(dp), intent(out) :: value
-        type(status_t), intent(out) :: st
-        value = 0.0_dp
-        select case (field)
-        case ('DEPL')
-            value = res%depl(eq, index)
-        case ('FORC_NODA')
-            value = res%forc_noda(eq, index)
-        case ('REAC_NODA')
-            value = res%reac_noda(eq, index)
-        case default
-            call set_error(st, STATUS_MODEL_ERROR, 'field ' // field // &
-                           ' is not stored (DEPL, FORC_NODA, REAC_NODA)')
-        end select
-    end subroutine field_value
-
-    !> Checks NOM_CMP against the result, or fills it in when empty.
-    !>  components : inout, component names; empty on entry = every component some node
-    !>               carries (order DX DY DZ DRX DRY DRZ)
-    !>  st         : STATUS_MODEL_ERROR when a name is not a component or no node carries it
-    subroutine impr_resu_components(res, components, st)
-        type(result_concept_t), intent(in) :: res
-        type(string_t), allocatable, intent(inout) :: components(:)
-        type(status_t), intent(out) :: st
-        logical :: carried(N_COMPONENTS)
-        integer(i4) :: c, k, n
-        carried = .false.
-        if (allocated(res%dofs%equation)) carried = any(res%dofs%equation /= 0, dim=2)
-        if (size(components) == 0) then
-            deallocate (components)
-            allocate (components(count(carried)))
-            n = 0
-            do c = 1, N_COMPONENTS
-                if (.not. carried(c)) cycle
-                n = n + 1
-                components(n)%s = trim(COMPONENT_NAMES(c))
-            end do
-            return
-        end if
-        do k = 1, size(components)
-            c = component_index(to_upper(components(k)%s))
-            if (c == 0) then
-                call set_error(st, STATUS_MODEL_ERROR, components(k)%s // &
-                               ' is not a component (DX DY DZ DRX DRY DRZ)')
-                return
-            else if (.not. carried(c)) then
-                call set_error(st, STATUS_MODEL_ERROR, 'no node of the result carries ' // &
-                               'component ' // components(k)%s // ' (its elements do not use it)')
-                return
-            end if
-        end do
-    end subroutine impr_resu_components
-
-    !> Stored instants (indices 1..n_stored) asked for by INST or NUME_ORDRE, in the order
-    !> given; every stored instant when neither is present.
-    !>  st : STATUS_MODEL_ERROR from result_find (the instant and what is stored)
-    subroutine impr_resu_instants(res, indices, st, insts, nume_ordres)
-        type(result_concept_t), intent(in) :: res
-        integer(i4), allocatable, intent(out) :: indices(:)
-        type(status_t), intent(out) :: st
-        real(dp), intent(in), optional :: insts(:)
-        integer(i4), intent(in), optional :: nume_ordres(:)
-        integer(i4) :: k
-        if (present(insts)) then
-            allocate (indices(size(insts)))
-            do k = 1, size(insts)
-                call result_find(res, indices(k), st, inst=insts(k))
-                if (st%failed()) return
-            end do
-        else if (present(nume_ordres)) then
-            allocate (indices(size(nume_ordres)))
-            do k = 1, size(nume_ordres)
-                call result_find(res, indices(k), st, nume_ordre=nume_ordres(k))
-                if (st%failed()) return
-            end do
-        else
-            indices = [(k, k = 1, res%n_stored)]
-        end if
-    end subroutine impr_resu_instants
-
-    !> The nodes of the groups, in group order, each node once.
-    !>  st : STATUS_MESH_ERROR naming an unknown group (with a did-you-mean)
-    subroutine impr_resu_group_nodes(mesh, groups, nodes, st)
-        type(mesh_t), intent(in) :: mesh
-        type(string_t), intent(in) :: groups(:)
-        integer(i4), allocatable, intent(out) :: nodes(:)
-        type(status_t), intent(out) :: st
-        logical, allocatable :: taken(:)
-        integer(i4), allocatable :: members(:), found(:)
-        integer(i4) :: g, k, n, m
-        allocate (taken(mesh%n_nodes), source=.false.)
-        allocate (found(mesh%n_nodes))
-        n = 0
-        do k = 1, size(groups)
-            g = find_node_group(mesh, groups(k)%s, st)
-            if (st%failed()) return
-            members = nodes_of_group(mesh, g)
-            do m = 1, size(members)
-                if (taken(members(m))) cycle
-                taken(members(m)) = .true.
-                n = n + 1
-                found(n) = members(m)
-            end do
-        end do
-        nodes = found(1:n)
-    end subroutine impr_resu_group_nodes
 
     !> The mesh in the plain arrays of result_data (RESULT_CELL_* codes, CSR connectivity).
     !>  st : STATUS_INTERNAL when a cell type has no RESULT_CELL_* code

@@ -33,9 +33,17 @@ module result_med
         med_count, med_create_mesh, med_write_coordinates, med_write_connectivity, &
         med_write_names, med_write_families, med_create_family, med_field_count, &
         med_field_info, med_create_field, med_profile_count, med_write_profile, &
-        med_write_field_values, MED_CREATE, MED_APPEND, MED_COUNT_NODES, MED_NODES, &
-        MED_CELLS, MED_NAME_LEN, MED_SNAME_LEN, MED_LNAME_LEN
+        med_write_field_values, med_localization_names, med_write_localization, &
+        med_write_entity_values, MED_CREATE, MED_APPEND, MED_COUNT_NODES, MED_NODES, &
+        MED_CELLS, MED_NAME_LEN, MED_SNAME_LEN, MED_LNAME_LEN, MED_ENTITY_CELL, &
+        MED_ENTITY_NODE_ELEMENT
     use result_data, only: node_field_t
+    use mesh_cell_shapes, only: cell_reference_nodes, CELL_TYPE_DIM, CELL_TYPE_NAMES, &
+        MAX_CELL_NODES
+    use model_types, only: model_t
+    use field_types, only: field_t, FIELD_ELGA, FIELD_ELNO
+    use element_gauss_families, only: gauss_rule_t, gauss_scheme
+    use field_layout, only: element_points
     implicit none
     private
 
@@ -61,10 +69,19 @@ module result_med
         logical :: to_device = .false.               !< path is a device: copied at commit
         type(string_t), allocatable :: profile_names(:)
         type(int_list_t), allocatable :: profile_nodes(:)
+        type(string_t), allocatable :: localizations(:)   !< in the file (read, written)
     end type med_output_t
 
+    !> One instant of an element field to write (write_med_cell_field).
+    type, public :: med_cell_step_t
+        type(field_t), pointer :: f => null()
+        integer(i4) :: numdt = -1
+        real(dp) :: time = 0.0_dp
+    end type med_cell_step_t
+
     public :: med_output_open, med_output_commit, med_output_discard, write_med_mesh, &
-        med_output_mesh, write_med_node_field, med_field_name
+        med_output_mesh, write_med_node_field, med_field_name, write_med_cell_field, &
+        med_localization_name
 
 contains
 
@@ -461,6 +478,255 @@ contains
             end if
         end do
     end subroutine write_med_node_field
+
+    !> Code_Aster's name of a Gauss-point localisation (irmpg1): the element reference's
+    !> name (TR3, QU4, ...) on 8 characters, the family's (FPG4, NOEU, ...), blanks turned to
+    !> '_' up to the last non-blank; with sub-points (plate layers, written as points, the
+    !> sub-points of each point in turn) their count right-aligned in columns 17-24 and
+    !> ASTER_SP in 33-40, every blank of the 40 turned to '_'.
+    pure function med_localization_name(cell_type, family, n_sub) result(name)
+        integer(i4), intent(in) :: cell_type, n_sub
+        character(len=*), intent(in) :: family
+        character(len=:), allocatable :: name
+        character(len=40) :: text
+        character(len=8) :: digits
+        integer :: k, last
+        text = ''
+        text(1:8) = element_reference(cell_type)
+        text(9:16) = family
+        last = len_trim(text)
+        if (n_sub > 1) then
+            write (digits, '(i8)') n_sub
+            text(17:24) = digits
+            text(33:40) = 'ASTER_SP'
+            last = 40
+        end if
+        do k = 1, last
+            if (text(k:k) == ' ') text(k:k) = '_'
+        end do
+        name = text(1:last)
+    end function med_localization_name
+
+    ! Code_Aster's name of the reference element of a cell type.
+    pure function element_reference(cell_type) result(name)
+        integer(i4), intent(in) :: cell_type
+        character(len=3) :: name
+        select case (trim(CELL_TYPE_NAMES(cell_type)))
+        case ('POI1')
+            name = 'PO1'
+        case ('SEG2')
+            name = 'SE2'
+        case ('SEG3')
+            name = 'SE3'
+        case ('TRIA3')
+            name = 'TR3'
+        case ('TRIA6')
+            name = 'TR6'
+        case ('QUAD4')
+            name = 'QU4'
+        case ('QUAD8')
+            name = 'QU8'
+        case default
+            name = 'QU9'
+        end select
+    end function element_reference
+
+    !> Writes an element field (ELGA, ELNO, ELEM or CART) as Code_Aster does (irceme,
+    !> ircame, irmpga): ELGA on the cells' integration points, one localisation per
+    !> reference element, family and sub-point count (med_localization_name; the points of
+    !> the element family with that many points, field_layout element_points; sub-points
+    !> written as points), ELNO on the cells' nodes (MED_NODE_ELEMENT), ELEM and CART one
+    !> value set per cell; ELNO (ELEM) with sub-points on integration points at the nodes
+    !> (the centre), localisation NOEU (FPG1) with the sub-points; per cell type and layout, a profile of the cells written when
+    !> not all of that type are. A component a cell lacks is written 0.
+    !>  cols     : in, the field's components written, in that order
+    !>  taken    : in, (n_cells) the cells asked for (GROUP_MA)
+    !>  model    : in, the elements of the cells (the points of an ELGA field); may be null
+    !>             for other locations
+    !>  st       : out, STATUS_IO_ERROR: an ELGA field whose points cannot be located, no
+    !>             cell to write, write errors
+    subroutine write_med_cell_field(out, mesh, model, mesh_name, field, steps, cols, taken, st)
+        type(med_output_t), intent(inout) :: out
+        type(mesh_t), intent(in) :: mesh
+        type(model_t), pointer, intent(in) :: model
+        character(len=*), intent(in) :: mesh_name, field
+        type(med_cell_step_t), intent(in) :: steps(:)
+        integer(i4), intent(in) :: cols(:)
+        logical, intent(in) :: taken(:)
+        type(status_t), intent(out) :: st
+        character(len=MED_SNAME_LEN), allocatable :: components(:)
+        integer(i4), allocatable :: rank(:), members(:), numbers(:)
+        logical, allocatable :: done(:)
+        real(dp), allocatable :: values(:, :)
+        character(len=:), allocatable :: profile, localization
+        integer(i4) :: k, t, c, c0, j, n_cells_type, n_val, entity, ctype, m
+        integer(i4) :: counts(N_TYPES)
+        logical :: exists, wrote
+        integer(i4) :: location
+        location = steps(1)%f%location
+        allocate (components(size(cols)))
+        do j = 1, size(cols, kind=i4)
+            components(j) = steps(1)%f%components(cols(j))%s
+        end do
+        call find_field(out, mesh_name, field, components, exists, st)
+        if (st%failed()) return
+        if (.not. exists) call med_create_field(out%file, field, mesh_name, components, st)
+        if (st%failed()) return
+        ! the rank of each cell among the cells of its type (MED numbers cells by type)
+        allocate (rank(mesh%n_cells))
+        counts = 0
+        do c = 1, mesh%n_cells
+            t = findloc(WRITE_TYPES, mesh%cell_type(c), dim=1)
+            counts(t) = counts(t) + 1
+            rank(c) = counts(t)
+        end do
+        wrote = .false.
+        do k = 1, size(steps, kind=i4)
+            associate (f => steps(k)%f)
+                allocate (done(mesh%n_cells))
+                done = .not. (f%n_points(1:mesh%n_cells) > 0 .and. taken(1:mesh%n_cells))
+                do c0 = 1, mesh%n_cells
+                    if (done(c0)) cycle
+                    ! the cells laid out as c0: same type, points and sub-points
+                    ctype = mesh%cell_type(c0)
+                    t = findloc(WRITE_TYPES, ctype, dim=1)
+                    members = pack([(c, c = c0, mesh%n_cells)], .not. done(c0:mesh%n_cells) &
+                        .and. mesh%cell_type(c0:mesh%n_cells) == ctype .and. &
+                        f%n_points(c0:mesh%n_cells) == f%n_points(c0) .and. &
+                        f%n_subpoints(c0:mesh%n_cells) == f%n_subpoints(c0))
+                    done(members) = .true.
+                    localization = ''
+                    entity = MED_ENTITY_CELL
+                    if (location == FIELD_ELNO) entity = MED_ENTITY_NODE_ELEMENT
+                    if (CELL_TYPE_DIM(ctype) > 0) then
+                        if (location == FIELD_ELGA) then
+                            call ensure_localization(out, model, mesh, c0, f%n_points(c0), &
+                                f%n_subpoints(c0), '', localization, st)
+                        else if (f%n_subpoints(c0) > 1) then
+                            ! sub-points at the nodes (or the centre): integration points
+                            ! at those places
+                            entity = MED_ENTITY_CELL
+                            call ensure_localization(out, model, mesh, c0, f%n_points(c0), &
+                                f%n_subpoints(c0), trim(merge('NOEU', 'FPG1', &
+                                location == FIELD_ELNO)), localization, st)
+                        end if
+                        if (st%failed()) return
+                    end if
+                    n_val = size(cols, kind=i4) * f%n_points(c0) * f%n_subpoints(c0)
+                    allocate (values(n_val, size(members)))
+                    do m = 1, size(members, kind=i4)
+                        call cell_values(f, members(m), cols, values(:, m))
+                    end do
+                    n_cells_type = counts(t)
+                    profile = ''
+                    if (size(members) < n_cells_type) then
+                        numbers = rank(members)
+                        call node_profile(out, numbers, profile, st)
+                        if (st%failed()) return
+                    end if
+                    call med_write_entity_values(out%file, field, steps(k)%numdt, &
+                        steps(k)%numdt, steps(k)%time, entity, MED_CODES(t), values, profile, &
+                        localization, st)
+                    deallocate (values)
+                    if (st%failed()) then
+                        if (exists) st%message = st%message // ' (the file may already ' // &
+                            'hold this step of ' // field // ': each instant is written ' // &
+                            'once per file)'
+                        return
+                    end if
+                    wrote = .true.
+                end do
+                deallocate (done)
+            end associate
+        end do
+        if (.not. wrote) call set_error(st, STATUS_IO_ERROR, 'MED field ' // field // &
+            ': no cell asked for carries it; nothing to write')
+    end subroutine write_med_cell_field
+
+    ! The values of cell c, point by point, sub-point by sub-point, the components `cols`
+    ! (0 for one the cell lacks).
+    subroutine cell_values(f, c, cols, v)
+        type(field_t), intent(in) :: f
+        integer(i4), intent(in) :: c, cols(:)
+        real(dp), intent(out) :: v(:)
+        integer(i4) :: p, s, j, q, nc, slot
+        integer(i8) :: base
+        v = 0.0_dp
+        nc = size(f%sets(f%cell_set(c))%cmp, kind=i4)
+        do j = 1, size(cols, kind=i4)
+            slot = 0
+            do q = 1, nc
+                if (f%sets(f%cell_set(c))%cmp(q) == cols(j)) slot = q
+            end do
+            if (slot == 0) cycle
+            do p = 1, f%n_points(c)
+                do s = 1, f%n_subpoints(c)
+                    base = f%offset(c) + (int(p - 1, i8) * f%n_subpoints(c) + (s - 1)) * nc
+                    v(((p - 1) * f%n_subpoints(c) + (s - 1)) * size(cols) + j) = &
+                        f%values(base + slot)
+                end do
+            end do
+        end do
+    end subroutine cell_values
+
+    ! The localisation of the integration points of cell c (n_points points, n_sub
+    ! sub-points each), written to the file unless it holds it already.
+    subroutine ensure_localization(out, model, mesh, c, n_points, n_sub, scheme, name, st)
+        type(med_output_t), intent(inout) :: out
+        type(model_t), pointer, intent(in) :: model
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: c, n_points, n_sub
+        character(len=*), intent(in) :: scheme
+        character(len=:), allocatable, intent(out) :: name
+        type(status_t), intent(out) :: st
+        type(gauss_rule_t) :: rule
+        real(dp) :: nodes(2, MAX_CELL_NODES)
+        real(dp), allocatable :: gscoo(:, :), weights(:), refcoo(:, :)
+        type(string_t), allocatable :: more(:)
+        integer(i4) :: ctype, dim, nn, p, s, k
+        name = ''
+        ctype = mesh%cell_type(c)
+        if (len(scheme) > 0) then
+            call gauss_scheme(ctype, scheme, rule, st)
+        else if (.not. associated(model)) then
+            call set_error(st, STATUS_IO_ERROR, 'an ELGA field whose model is not known: ' // &
+                'its Gauss points cannot be located in MED')
+            return
+        else
+            call element_points(model%element(c), ctype, n_points, rule, st)
+        end if
+        if (st%failed()) then
+            st%code = STATUS_IO_ERROR
+            st%message = 'cell ' // cell_name(mesh, c) // ': ' // st%message
+            return
+        end if
+        name = med_localization_name(ctype, rule%scheme, n_sub)
+        if (.not. allocated(out%localizations)) then
+            call med_localization_names(out%file, out%localizations, st)
+            if (st%failed()) return
+        end if
+        do k = 1, size(out%localizations)
+            if (out%localizations(k)%s == name) return
+        end do
+        dim = CELL_TYPE_DIM(ctype)
+        nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+        call cell_reference_nodes(ctype, nodes)
+        allocate (gscoo(dim, n_points * n_sub), weights(n_points * n_sub))
+        do p = 1, n_points
+            do s = 1, n_sub
+                gscoo(:, (p - 1) * n_sub + s) = rule%xi(1:dim, p)
+                weights((p - 1) * n_sub + s) = rule%w(p)
+            end do
+        end do
+        refcoo = nodes(1:dim, 1:nn)         ! contiguous, as MED reads it
+        call med_write_localization(out%file, name, MED_CODES(findloc(WRITE_TYPES, ctype, &
+            dim=1)), refcoo, gscoo, weights, st)
+        if (st%failed()) return
+        allocate (more(size(out%localizations) + 1))
+        more(1:size(out%localizations)) = out%localizations
+        more(size(more))%s = name
+        call move_alloc(more, out%localizations)
+    end subroutine ensure_localization
 
     ! Whether the file has field `field` (from an earlier IMPR_RESU of this run); it must
     ! then be on the same mesh with the same components.

@@ -81,6 +81,11 @@ contains
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:), spring_of(:)
         integer(i4) :: c, kind
         logical :: want
+        if (.not. res%has_structure) then
+            call set_error(st, STATUS_MODEL_ERROR, 'SIEF_ELGA: the result does not know ' // &
+                'the model it was computed on')
+            return
+        end if
         call split_words(PLATE_STRESS_CMPS // ' N VY VZ', cmps)
         call field_init_cells(f, FIELD_ELGA, 'SIEF_R', cmps, res%mesh%n_cells, st)
         if (st%failed()) return

@@ -25,7 +25,7 @@ module post_champ_command
     implicit none
     private
 
-    public :: run_post_champ, extract_subpoint
+    public :: run_post_champ, extract_subpoint, empty_like
 
 contains
 

@@ -32,9 +32,56 @@ module result_access
     character(len=*), parameter, public :: STATE_FIELDS = 'DEPL FORC_NODA REAC_NODA ' // &
         'SIEF_ELGA VARI_ELGA'
 
-    public :: result_field_at, result_nodal_from_state, result_mesh, option_family
+    public :: result_field_at, result_nodal_from_state, result_mesh, option_family, &
+        result_field_names
 
 contains
+
+    !> Every field a result has at stored instant `at`: for an analysis, DEPL, the nodal
+    !> forces FORC_NODA and REAC_NODA (Code_Aster's need CALC_CHAMP FORCE; parasol's
+    !> analyses have them anyway) and SIEF_ELGA (STAT_NON_LINE with DIS_CHOC springs also
+    !> VARI_ELGA), then the fields stored there (CALC_CHAMP, POST_CHAMP, CREA_RESU), each
+    !> once.
+    function result_field_names(res, at) result(names)
+        class(result_fields_t), intent(in) :: res
+        integer(i4), intent(in) :: at
+        type(string_t), allocatable :: names(:)
+        type(string_t), allocatable :: stored(:)
+        character(len=:), allocatable :: listed
+        integer :: k
+        allocate (names(0))
+        listed = ' '
+        select type (res)
+        type is (result_concept_t)
+            if (res%has_state) then
+                call add('DEPL')
+                call add('FORC_NODA')
+                call add('REAC_NODA')
+                if (res%has_structure) call add('SIEF_ELGA')
+                if (res%type_name() == 'evol_noli' .and. allocated(res%spring_cell)) then
+                    if (size(res%spring_cell) > 0) call add('VARI_ELGA')
+                end if
+            end if
+        end select
+        if (at < 1 .or. at > res%n_stored) return
+        stored = result_stored_names(res, at)
+        do k = 1, size(stored)
+            call add(stored(k)%s)
+        end do
+    contains
+        subroutine add(name)
+            character(len=*), intent(in) :: name
+            type(string_t), allocatable :: bigger(:)
+            integer :: n
+            if (index(listed, ' ' // name // ' ') > 0) return
+            listed = listed // name // ' '
+            n = size(names)
+            allocate (bigger(n + 1))
+            bigger(1:n) = names
+            bigger(n + 1)%s = name
+            call move_alloc(bigger, names)
+        end subroutine add
+    end function result_field_names
 
     !> Field `name` of `res` at stored instant `at` (1..n_stored): the stored one, else
     !> one made from the analysis's state (STATE_FIELDS) and stored.

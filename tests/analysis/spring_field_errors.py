@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """TEST_RESU on the springs' element fields (SIEF_ELGA, VARI_ELGA) that cannot be answered,
-and IMPR_RESU of them to MED (not written yet), stop with a located message at the keyword
+and IMPR_RESU of a field not computed, stop with a located message at the keyword
 at fault (exit 1, no crash). Each case appends
 one TEST_RESU to decks/ssnl130b.comm (model B: 2D_DIS_T springs M49..M65, group RESSORTS).
 
@@ -36,8 +36,8 @@ CASES = [
      "SIEF_ELGA is an element field: give GROUP_MA"),
     ("point_of_depl", "NOM_CHAM='DEPL', NOM_CMP='DY', NOEUD='N1', POINT=1", "POINT",
      "POINT goes with the element fields; DEPL is read at a node"),
-    ("impr_resu_med", "IMPR_RESU(FORMAT='MED', RESU=_F(RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'))",
-     "NOM_CHAM", "SIEF_ELGA is not written to MED yet"),
+    ("impr_resu_med", "IMPR_RESU(FORMAT='MED', RESU=_F(RESULTAT=RESU, NOM_CHAM='SIGM_ELNO'))",
+     "NOM_CHAM", "field SIGM_ELNO is not computed in the result"),
 ]
 problems = []
 for name, occurrence, key, phrase in CASES:

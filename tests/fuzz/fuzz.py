@@ -219,6 +219,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_resu", {"case.comm": os.path.join(fields, "crea_resu.comm"),
                                       "case.mail": os.path.join(verif, "patch_dkq.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.4))
+    seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
+                                       "case.mail": os.path.join(verif, "patch_plan.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH).
+    seeds.append(Seed("fields_output", {"case.comm": os.path.join(SOURCE, "tests", "output",
+                                                                  "field_output.comm"),
+                                        "case.mail": os.path.join(verif, "patch_dkq.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.6))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
@@ -271,6 +279,9 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
                        "case.mail": meshes[("a", "aster")]}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
+    seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
+                      [], comm_targets, 0.8))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))

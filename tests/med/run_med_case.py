@@ -90,11 +90,105 @@ def resu_tables(path):
             words = line.split()
             if not words:
                 current = None
+            elif words[0] == "MAILLE":       # an element field's table (cell_tables)
+                del tables[[k for k, t in tables.items() if t is current][0]]
+                current = None
             elif words[0] == "NOEUD":
                 current["cmp"] = words[1:]
             else:   # '-': the node lacks the component
                 current["rows"][words[0]] = [None if w == "-" else float(w) for w in words[1:]]
     return tables
+
+
+def cell_tables(path):
+    """{(field, nume_ordre): {'cmp': [...], 'rows': {(cell, point, sub): [values]}}} from the
+    IMPR_RESU tables of element fields (MAILLE POINT [SOUS_POINT] components)."""
+    tables, current = {}, None
+    head = re.compile(r" ---- RESULTAT (\S+)\s+NOM_CHAM (\S+)\s+NUME_ORDRE (\d+)\s+INST (\S+)")
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            m = head.match(line)
+            if m:
+                current = {"rows": {}, "sub": False}
+                tables[(m.group(2), int(m.group(3)))] = current
+                continue
+            if current is None:
+                continue
+            words = line.split()
+            if not words:
+                current = None
+            elif words[0] == "NOEUD":
+                current = None        # a node table
+            elif words[0] == "MAILLE":
+                current["sub"] = words[2] == "SOUS_POINT"
+                current["cmp"] = words[3 if current["sub"] else 2:]
+            else:
+                n = 3 if current["sub"] else 2
+                key = (words[0], int(words[1]), int(words[2]) if current["sub"] else 1)
+                current["rows"][key] = [None if w == "-" else float(w) for w in words[n:]]
+    return {k: t for k, t in tables.items() if "cmp" in t}
+
+
+def check_cell_fields(f, mesh_name, mesh_step, tables):
+    """The element fields of the MED file (SIEF_ELGA, VARI_ELGA) against the .resu tables
+    of the same run: each step, each cell type's part (its localisation: Code_Aster's name,
+    points x sub-points), each value to 1e-12."""
+    import numpy as np
+    problems = []
+    for fname in ("RESU____SIEF_ELGA", "RESU____VARI_ELGA"):
+        if fname not in f["CHA"]:
+            continue
+        field = f["CHA"][fname]
+        symbol = fname[8:]
+        ncmp = int(field.attrs["NCO"])
+        cmps = field.attrs["NOM"].decode()
+        cmps = [cmps[16 * k:16 * k + 16].strip() for k in range(ncmp)]
+        orders = sorted(k for (s, k) in tables if s == symbol)
+        if not orders or len(field.keys()) != len(orders):
+            problems.append("%s: %d steps, %d tables" % (fname, len(field.keys()), len(orders)))
+        for k in orders:
+            table = tables[(symbol, k)]
+            grp = step_group(field, k)
+            if grp is None:
+                problems.append("%s: no step %d" % (fname, k))
+                continue
+            checked = 0
+            for part in grp.keys():
+                if not part.startswith("MAI."):
+                    problems.append("%s: values on %s, not on cells" % (fname, part))
+                    continue
+                cells = [bytes(n).decode().strip() for n in mesh_step["MAI"][part[4:]]["NOM"][:]]
+                entity = grp[part]
+                profile = entity.attrs["PFL"].decode().strip()
+                data = entity[profile]
+                n_gauss = int(data.attrs["NGA"])
+                loc = data.attrs["GAU"].decode().strip()
+                if loc and loc not in f["GAUSS"]:
+                    problems.append("%s %s: localisation %s not in the file" % (fname, part, loc))
+                if profile == "MED_NO_PROFILE_INTERNAL":
+                    on = list(range(len(cells)))
+                else:
+                    on = [int(i) - 1 for i in f["PROFILS"][profile]["PFL"][:]]
+                values = np.asarray(data["CO"][:]).reshape(ncmp, len(on), n_gauss)
+                for j, i in enumerate(on):
+                    # points x sub-points, the sub-points of each point in turn
+                    n_sub = max([s for (c, _, s) in table["rows"] if c == cells[i]] or [1])
+                    for g in range(n_gauss):
+                        key = (cells[i], g // n_sub + 1, g % n_sub + 1)
+                        row = table["rows"].get(key)
+                        if row is None:
+                            continue
+                        for c, name in enumerate(cmps):
+                            if name not in table["cmp"]:
+                                continue
+                            want = row[table["cmp"].index(name)]
+                            if want is not None and not close(values[c, j, g], want):
+                                problems.append("%s step %d %s %s: MED %r, .resu %r" % (
+                                    fname, k, key, name, values[c, j, g], want))
+                        checked += 1
+            if checked == 0:
+                problems.append("%s step %d: no value checked against the .resu" % (fname, k))
+    return problems
 
 
 def close(a, b, rtol=1e-12, atol=1e-15):
@@ -120,7 +214,8 @@ def case_fields(argv):
              "IMPR_RESU(FORMAT='MED', UNITE=82, RESU=_F(RESULTAT=RESU, NOM_CHAM='REAC_NODA'))\n"
              "IMPR_RESU(FORMAT='MED', UNITE=83, RESU=_F(RESULTAT=RESU, NOM_CMP='DY'))\n"
              "IMPR_RESU(FORMAT='RESULTAT',\n"
-             "          RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'FORC_NODA', 'REAC_NODA')))\n"
+             "          RESU=_F(RESULTAT=RESU, NOM_CHAM=('DEPL', 'FORC_NODA', 'REAC_NODA',\n"
+             "                                           'SIEF_ELGA', 'VARI_ELGA')))\n"
              "FIN()")
     assert text.count("FIN()") == 1 and "RESU = " in text, "deck must define RESU and end in FIN()"
     out_deck = os.path.join(workdir, "med_out.comm")
@@ -147,9 +242,12 @@ def case_fields(argv):
         n_nodes = int(step["NOE"]["COO"].attrs["NBR"])
         names = [bytes(n).decode().strip() for n in step["NOE"]["NOM"][:]]
         fields = sorted(f["CHA"].keys())
-        if fields != ["RESU____DEPL", "RESU____FORC_NODA", "RESU____REAC_NODA"]:
+        if fields != ["RESU____DEPL", "RESU____FORC_NODA", "RESU____REAC_NODA",
+                      "RESU____SIEF_ELGA", "RESU____VARI_ELGA"]:
             problems.append("fields %s" % fields)
-        for fname in fields:
+        problems += check_cell_fields(f, mesh_name, step, cell_tables(
+            os.path.join(workdir, "med_out.resu")))
+        for fname in [n for n in fields if not n.endswith("_ELGA")]:
             field = f["CHA"][fname]
             symbol = fname[8:]
             ncmp = int(field.attrs["NCO"])
@@ -223,7 +321,7 @@ def case_fields(argv):
             field = f["CHA"]["RESU____DEPL"] if "RESU____DEPL" in f["CHA"] else None
             if sorted(f["CHA"].keys()) != ["RESU____DEPL", "RESU____FORC_NODA",
                                            "RESU____REAC_NODA"] or \
-                    field.attrs["NOM"].decode().strip() != "DY":
+                    field.attrs["NOM"].decode().strip() != "DY":   # NOM_CMP='DY' only
                 problems.append("unbound unit 83, NOM_CMP='DY': %s" % list(f["CHA"].keys()))
     dump = subprocess.run(["mdump", all_rmed], input=b"1\n1\n0\n", capture_output=True,
                           timeout=60)
@@ -462,7 +560,7 @@ def case_missing_plugin(argv):
             ("not a library", lambda: write(plugin, "not a shared library\n"),
              "cannot load the shared library"),
             ("another version", lambda: shutil.copy(wrong_abi, plugin),
-             "is of version 99, this parasol needs version 1")]:
+             "is of version 99, this parasol needs version 2")]:
         if make:
             os.makedirs(plugin_dir, exist_ok=True)
             make()

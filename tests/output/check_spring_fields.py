@@ -3,7 +3,7 @@ ssnl130a_spring_fields.comm): parasol runs the deck (every TEST_RESU OK: SIEF_EL
 VARI_ELGA of four springs against the rigid-plate reference), then the files IMPR_RESU wrote
 are read back:
  - VTK, with meshio: each .vtu holds CellData SIEF_ELGA_N/VY/VZ, VARI_ELGA_V1..V10,
-   SPRING_STATUS and GROUP_<group>; at INST 1 and 2 the status of every spring is its row's
+   SPRING_STATUS and GROUP_<group> (and the plates' SIEF_ELGA_SI.._SP1..3); at INST 1 and 2 the status of every spring is its row's
    in the exact solution for the nodal load parasol applies (rows 0..n closed,
    tools/rigid_bed_exact.py, load="nodes"), N = k z for the closed
    ones (k by RIGI_PARASOL's area rule, z of the rigid plate) within 1e-6 of the largest
@@ -98,7 +98,10 @@ names = {"SIEF_ELGA_N", "SIEF_ELGA_VY", "SIEF_ELGA_VZ", "SPRING_STATUS", "GROUP_
 for index in (2, 4):
     path = f"{stem}_RESU_{index:04d}.vtu"
     mesh = meshio.read(path)
-    check(set(mesh.cell_data) == names, f"{path}: cell arrays {sorted(mesh.cell_data)}")
+    # besides, the plates' stresses of SIEF_ELGA at their 3 sub-points (one layer)
+    plates = {f"SIEF_ELGA_{c}_SP{s}" for c in ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ")
+              for s in (1, 2, 3)}
+    check(set(mesh.cell_data) == names | plates, f"{path}: cell arrays {sorted(mesh.cell_data)}")
     if not names <= set(mesh.cell_data):
         continue
     flat = {k: np.concatenate(v) for k, v in mesh.cell_data.items()}
