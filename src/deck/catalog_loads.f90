@@ -167,7 +167,7 @@ contains
 
     !> The LIAISON_* keywords (linear relations between components; Code_Aster U4.44.01):
     !> LIAISON_DDL, LIAISON_OBLIQUE, LIAISON_GROUP, LIAISON_UNIF, and in AFFE_CHAR_MECA
-    !> LIAISON_SOLIDE and LIAISON_RBE3.
+    !> LIAISON_SOLIDE, LIAISON_MAIL and LIAISON_RBE3.
     subroutine describe_relations(c, vtype)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: vtype
@@ -229,6 +229,35 @@ contains
         call add_node_keywords(c)
         call c%rule(RULE_UN_PARMI, 'GROUP_NO GROUP_MA')
         call c%key('DIST_MIN', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%end_fact()
+
+        ! LIAISON_MAIL (Code_Aster affe_char_meca.py): slave nodes tied to the master cells'
+        ! shape functions (relation_mail).
+        call c%fact('LIAISON_MAIL', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'GROUP_MA_ESCL GROUP_NO_ESCL')
+        call c%key('GROUP_MA_MAIT', 'TXM', max=MANY)
+        call c%key('GROUP_MA_ESCL', 'TXM', max=MANY)
+        call c%key('GROUP_NO_ESCL', 'TXM', max=MANY)
+        call c%key('DISTANCE_MAX', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('DISTANCE_ALARME', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('TYPE_RACCORD', 'TXM', def='MASSIF', &
+                   into='MASSIF COQUE COQUE_MASSIF MASSIF_COQUE')
+        call c%bloc(key='TYPE_RACCORD', equals='COQUE')
+        call c%key('TRANSF_GEOM_MAIT', 'FUNC', min=3, max=3)
+        call c%key('TRANSF_GEOM_ESCL', 'FUNC', min=3, max=3)
+        call c%key('DDL', 'TXM', max=6, into=DOFS)
+        call c%end_bloc()
+        call c%bloc(key='TYPE_RACCORD', equals='MASSIF')
+        call c%key('TRAN', 'R', max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('ANGL_NAUT', 'R', max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('CENTRE', 'R', max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('DDL', 'TXM', max=MANY, into=DOFS // ' DNOR')
+        call c%end_bloc()
+        call c%bloc(key='TYPE_RACCORD', equals='COQUE_MASSIF')
+        call c%key('EPAIS', 'R', req=.true., vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('CHAM_NORMALE', 'cham_no_sdaster', req=.true.)
+        call c%end_bloc()
+        call c%key('ELIM_MULT', 'TXM', def='OUI', into=OUI_NON)
         call c%end_fact()
 
         call c%fact('LIAISON_RBE3', max=MANY)

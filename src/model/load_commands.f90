@@ -24,6 +24,7 @@ module load_commands
     use relation_commands, only: select_nodes, face_impo_item, liaison_ddl_item, &
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
         liaison_group_item
+    use relation_mail, only: liaison_mail_item
     implicit none
     private
 
@@ -152,7 +153,7 @@ contains
                     ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
                 if (st%failed()) return
             end do
-            call relation_items(cmd, p, functions, cm%loads, st)
+            call relation_items(ctx, cmd, p, functions, cm%loads, st)
             if (st%failed()) return
             do i = 1, cmd%count('FORCE_NODALE')
                 call node_item(cmd%occurrence('FORCE_NODALE', i), p, LOAD_FORCE_NODALE, &
@@ -196,14 +197,16 @@ contains
         call move_alloc(cm, result)
     end subroutine build_char_meca
 
-    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands).
-    subroutine relation_items(cmd, mc, functions, loads, st)
+    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands, relation_mail).
+    subroutine relation_items(ctx, cmd, mc, functions, loads, st)
+        type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
         type(model_concept_t), intent(in) :: mc
         logical, intent(in) :: functions
         type(load_set_t), intent(inout) :: loads
         type(status_t), intent(out) :: st
         integer(i4) :: i
+        logical, allocatable :: elim(:)
         do i = 1, cmd%count('FACE_IMPO')
             call face_impo_item(cmd%occurrence('FACE_IMPO', i), mc, functions, .false., &
                 loads, st)
@@ -238,6 +241,12 @@ contains
         end do
         do i = 1, cmd%count('LIAISON_RBE3')
             call liaison_rbe3_item(cmd%occurrence('LIAISON_RBE3', i), mc, loads, st)
+            if (st%failed()) return
+        end do
+        ! ELIM_MULT: the slave nodes of the earlier LIAISON_MAIL occurrences.
+        allocate (elim(mc%mesh%n_nodes), source=.false.)
+        do i = 1, cmd%count('LIAISON_MAIL')
+            call liaison_mail_item(ctx, cmd%occurrence('LIAISON_MAIL', i), mc, elim, loads, st)
             if (st%failed()) return
         end do
     end subroutine relation_items

@@ -38,6 +38,13 @@ Meshes (node names N1.., cell names M1.., in the order written):
                    (20x2, 40x4, 80x8, 160x16): GROUP_MA POUTRE (QUAD4), EXTREM (the NY
                    SEG2 of the tip edge x = L); GROUP_NO ENCAST (x = 0), PTIP (L, h/2),
                    PTIP_B (L, 0).
+  glued_plan.mail  2D blocks meeting on x = 1 with non-matching nodes (LIAISON_MAIL):
+                   GAUCHE [0,1]^2 in 2 x 2 QUAD4 (inside node at (9/20, 11/20)), DROITE
+                   [1,2] x [0,1] in 3 x 4 rectangles cut into TRIA3; SEG2 BORD_D (x = 2),
+                   INTERF (DROITE's side on x = 1); GROUP_NO X0 (x = 0), A (0,0), B (2,0),
+                   ESCL (DROITE's nodes on x = 1), ESCL_BAS (its lower two), S1 S2 S3
+                   (1, 1/4 .. 3/4), M1 (the inside node), M2 (1, 1/2), C (2,1), D (4/3, 1/2).
+  glued_plate.mail the same in 3D (z = 0) for plates.
 
 usage: make_meshes.py [--outdir DIR] [--check]
 """
@@ -214,6 +221,52 @@ def loaded_block():
     return mesh
 
 
+def glued_blocks(dim):
+    """Two blocks glued by LIAISON_MAIL across x = 1 with non-matching nodes: GAUCHE
+    [0,1]^2 in 2 x 2 QUAD4 (its inside node moved off the grid so the quadrangles are
+    general), DROITE [1,2] x [0,1] in 3 x 4 rectangles cut into TRIA3. ESCL: DROITE's
+    nodes on x = 1 (y = 0, 1/4, 1/2, 3/4, 1: two of them inside GAUCHE's edges, three
+    beside its nodes: GAUCHE's nodes on the side are slave nodes' places, so that the
+    tie transmits a uniform stress exactly), INTERF its SEG2 there, BORD_D the SEG2 of
+    x = 2."""
+    title = ("Blocks [0,1]^2 (QUAD4) and [1,2] x [0,1] (TRIA3) meeting on x = 1 with "
+             "non-matching nodes (LIAISON_MAIL)")
+    mesh = Mesh(dim, title)
+
+    def node(x, y):
+        return mesh.node(x, y, 0) if dim == 3 else mesh.node(x, y)
+    left = {}
+    for j in range(3):
+        for i in range(3):
+            xy = (Fraction(i, 2), Fraction(j, 2))
+            if (i, j) == (1, 1):
+                xy = (Fraction(9, 20), Fraction(11, 20))
+            left[i, j] = node(*xy)
+    for j in range(2):
+        for i in range(2):
+            mesh.cell("QUAD4", (left[i, j], left[i + 1, j], left[i + 1, j + 1],
+                                left[i, j + 1]), "GAUCHE")
+    right = {(i, j): node(1 + Fraction(i, 3), Fraction(j, 4))
+             for j in range(5) for i in range(4)}
+    for j in range(4):
+        for i in range(3):
+            n1, n2 = right[i, j], right[i + 1, j]
+            n3, n4 = right[i + 1, j + 1], right[i, j + 1]
+            mesh.cell("TRIA3", (n1, n2, n3), "DROITE")
+            mesh.cell("TRIA3", (n1, n3, n4), "DROITE")
+    for j in range(4):
+        mesh.cell("SEG2", (right[3, j], right[3, j + 1]), "BORD_D")
+    for j in range(4, 0, -1):
+        mesh.cell("SEG2", (right[0, j], right[0, j - 1]), "INTERF")
+    mesh.node_groups = {"X0": [left[0, j] for j in range(3)], "A": [left[0, 0]],
+                        "B": [right[3, 0]], "ESCL": [right[0, j] for j in range(5)],
+                        "ESCL_BAS": [right[0, 0], right[0, 1]],
+                        "S1": [right[0, 1]], "S2": [right[0, 2]], "S3": [right[0, 3]],
+                        "M1": [left[1, 1]], "M2": [left[2, 1]], "C": [right[3, 4]],
+                        "D": [right[1, 2]]}
+    return mesh
+
+
 def number(x):
     return repr(float(x))
 
@@ -260,6 +313,8 @@ def all_meshes():
     meshes["list_inst_cutting.mail"] = pulled_node()
     meshes["loaded_plate.mail"] = loaded_plate()
     meshes["loaded_block.mail"] = loaded_block()
+    meshes["glued_plan.mail"] = glued_blocks(2)
+    meshes["glued_plate.mail"] = glued_blocks(3)
     return {name: to_aster(mesh) for name, mesh in meshes.items()}
 
 
