@@ -416,21 +416,9 @@ contains
                 call line_search(s, map, state, b, r, log, alpha, full(iter), st)
             if (st%failed()) return
             call progress_update(options%progress, 'internal forces')
-            ! the correction r is in the solver's hat coordinates (two_level_solver): the
-            ! displacements move by all of it, the plates and plane solids see only the
-            ! part that deforms them (their forces on the rigid modes are zero)
-            call from_hat(state%solver, r, x)
-            call scatter_free(map, alpha * x, state%du)
-            state%u = state%u + state%du
-            call hat_body_part(state%solver, r, x)
-            call scatter_free(map, alpha * x, du_body)
             history(:, iter) = state%closed
-            seconds = wall_seconds()
-            call internal_forces_incremental(s, map, state%u, state%du, state%flin, &
-                state%fint, state%closed, state%fn, st, state%linear, history=state%history, &
-                du_body=du_body)
+            call apply_correction(s, map, state, r, alpha, x, du_body, st)
             if (st%failed()) return
-            call count_forces(state, seconds)
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
@@ -510,6 +498,31 @@ contains
         summary%resi_rela(step) = resi_rela
         summary%resi_maxi(step) = resi_maxi
     end subroutine newton_step
+
+    !> u <- u + alpha r and the internal forces there (internal_forces_incremental). The
+    !> correction r is in the solver's hat coordinates (two_level_solver): the displacements
+    !> move by all of it, the plates and plane solids see only the part that deforms them
+    !> (their forces on the rigid modes are zero), so f_lin takes no round-off of the rigid
+    !> motion.
+    !>  x, du_body : work arrays (n_free, n_equations)
+    subroutine apply_correction(s, map, state, r, alpha, x, du_body, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        real(dp), intent(in) :: r(:), alpha
+        real(dp), intent(inout) :: x(:), du_body(:)
+        type(status_t), intent(out) :: st
+        real(dp) :: t0
+        call from_hat(state%solver, r, x)
+        call scatter_free(map, alpha * x, state%du)
+        state%u = state%u + state%du
+        call hat_body_part(state%solver, r, x)
+        call scatter_free(map, alpha * x, du_body)
+        t0 = wall_seconds()
+        call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
+            state%closed, state%fn, st, state%linear, history=state%history, du_body=du_body)
+        if (st%ok()) call count_forces(state, t0)
+    end subroutine apply_correction
 
     !> One more evaluation of the internal forces, started at wall time t0 (the step's count
     !> and time, for the .mess: doc/performance.md measures them).

@@ -12,12 +12,13 @@ module newton_factor
     use direct_solver, only: solver_options_t, check_disabled
     use assembly_system, only: structure_t, assembly_map_t, assemble_stiffness
     use analysis_solver, only: pivot_diagnosis_t, factor_and_classify, report_pivots, &
-        solve_held, accumulate_pivots, modes_support, rigid_modes_of, PIVOT_REGULAR, &
+        solve_held, accumulate_pivots, modes_support, PIVOT_REGULAR, &
         PIVOT_FREE, PIVOT_ILL_CONDITIONED, PIVOT_UNKNOWN
     use analysis_log, only: analysis_log_t, log_add
     use newton_state, only: newton_state_t, step_pivots_t, MATRIX_NONE, MATRIX_ELASTIC, &
         MATRIX_TANGENT
     use contact_status, only: status_of, factor_holds, status_difference
+    use two_level_solver, only: add_block_product
     use progress, only: progress_update
     implicit none
     private
@@ -103,9 +104,8 @@ contains
         type(status_t), intent(out) :: st
         type(analysis_log_t), intent(inout), optional :: log
         integer(i4), allocatable :: active(:), signs(:)
-        real(dp), allocatable :: ksr(:, :), r(:, :)
-        integer(i4), allocatable :: anchors(:)
-        integer(i4) :: k, b, m, i, j
+        real(dp), allocatable :: ksr(:, :)
+        integer(i4) :: k, b, m
         state%fac_valid = .false.
         call progress_update(state%solver%progress, 'assembly of the ' // &
             trim(merge('elastic', 'tangent', elastic)) // ' matrix')
@@ -116,24 +116,16 @@ contains
         if (st%failed()) return
         if (.not. elastic .and. state%by_status) then
             call status_difference(closed, state%closed, active, signs)
-            if (size(ksr) > 0) call rigid_modes_of(state%solver, r, anchors)
             do k = 1, size(active)
                 b = active(k)
                 m = state%blocks%sizes(b)
                 call sym_add_element(state%matrix, state%blocks%eqs(1:m, b), &
                     real(signs(k), dp) * state%blocks%k(1:m, 1:m, b), st)
                 if (st%failed()) return
-                if (size(ksr) == 0) cycle
                 ! the same change in K_s R
-                do i = 1, m
-                    if (state%blocks%eqs(i, b) == 0) cycle
-                    do j = 1, m
-                        if (state%blocks%eqs(j, b) == 0) cycle
-                        ksr(state%blocks%eqs(i, b), :) = ksr(state%blocks%eqs(i, b), :) + &
-                            real(signs(k), dp) * state%blocks%k(i, j, b) * &
-                            r(state%blocks%eqs(j, b), :)
-                    end do
-                end do
+                if (size(ksr) > 0) call add_block_product(state%solver, &
+                    state%blocks%eqs(1:m, b), real(signs(k), dp) * &
+                    state%blocks%k(1:m, 1:m, b), ksr)
             end do
         end if
         call factor_and_classify(s, map, state%matrix, state%solver, ksr, diag, st, &

@@ -13,8 +13,8 @@
 !>    stretches its membrane: doc/analysis.md "Round-off").
 !> The body's imposed equations (DDL_IMPO, AFFE_CHAR_CINE: map%imposed) hold the modes that
 !> move them: the modes left are the combinations that are zero on every imposed equation
-!> and satisfy every linear relation on the body (the null space of those rows). A body is held by springs only (or by nothing) when
-!> modes are left; they are kept apart by the two-level solver (two_level_solver), with one
+!> and satisfy every linear relation on the body (the null space of those rows). A body is
+!> held by springs only (or by nothing) when modes are left; they are kept apart by the two-level solver (two_level_solver), with one
 !> anchor equation per mode: translations (DX, DY, DZ) of the body's free equations chosen
 !> by pivoted Gram-Schmidt on the rows of the modes (the most independent rows: far-apart
 !> nodes, e.g. three corners for a plate's bending modes), and the modes recombined so that
@@ -28,6 +28,7 @@ module rigid_bodies
     use model_dof_numbering, only: describe_equation, N_COMPONENTS, DOF_DZ
     use assembly_system, only: structure_t, assembly_map_t, is_body_cell
     use analysis_log, only: analysis_log_t, log_add
+    use huge_pages, only: advise_huge_pages
     implicit none
     private
 
@@ -113,7 +114,9 @@ contains
             m = m + size(found(b)%anchors, kind=i4)
         end do
         modes%n_modes = m
-        allocate (modes%r(map%n_free, m), source=0.0_dp)
+        allocate (modes%r(map%n_free, m))
+        call advise_huge_pages(modes%r)
+        modes%r = 0.0_dp
         allocate (modes%anchors(m), modes%body_of_mode(m))
         col = 0
         do b = 1, modes%n_bodies
@@ -226,7 +229,7 @@ contains
         type(status_t), intent(out) :: st
         type(motion_t) :: motions(MAX_BODY_MODES)
         real(dp) :: xc(3), size_body, held(MAX_BODY_MODES, MAX_BODY_MODES), v(MAX_BODY_MODES)
-        real(dp), allocatable :: free_dirs(:, :), rows(:, :)
+        real(dp), allocatable :: free_dirs(:, :), rows(:, :), free_rows(:, :)
         integer(i4) :: n0, k, i, e, m
         xc = sum(s%mesh%coords(:, nodes), dim=2) / real(size(nodes), dp)
         size_body = 0.0_dp
@@ -241,6 +244,7 @@ contains
         ! the body's equations, and what each candidate motion (unit size) does there
         found%eqs = body_equations(s, nodes)
         allocate (rows(size(found%eqs), n0))
+        call advise_huge_pages(rows)
         do i = 1, size(found%eqs)
             e = found%eqs(i)
             do k = 1, n0
@@ -261,7 +265,11 @@ contains
         call null_directions(held(1:n0, 1:n0), free_dirs)
         m = size(free_dirs, 2, kind=i4)
         if (m == 0) return
-        rows = matmul(rows, free_dirs)
+        allocate (free_rows(size(found%eqs), m))
+        call advise_huge_pages(free_rows)
+        free_rows = matmul(rows, free_dirs)
+        deallocate (rows)
+        call move_alloc(free_rows, rows)
         call choose_anchors(s, map, found%eqs, rows, found%anchors, st)
         if (st%failed()) return
         call modes_on_anchors(found%eqs, rows, found%anchors, found%values, st)
@@ -513,27 +521,39 @@ contains
         real(dp), intent(in) :: rows(:, :)
         integer(i4), allocatable, intent(out) :: anchors(:)
         type(status_t), intent(out) :: st
-        real(dp), allocatable :: rest(:, :), norms(:)
-        logical, allocatable :: eligible(:)
-        real(dp) :: q(size(rows, 2)), top
+        real(dp), allocatable :: rest(:, :)
+        integer(i4), allocatable :: candidates(:)
+        real(dp) :: q(size(rows, 2)), top, norm2_best, norm2_i
         integer(i4) :: m, k, i, best, pass
         m = size(rows, 2, kind=i4)
         allocate (anchors(m))
+        top = maxval(abs(rows))
         do pass = 1, 2
-            eligible = map%free_eq(eqs) > 0
-            if (pass == 1) eligible = eligible .and. s%dofs%equation_component(eqs) <= DOF_DZ
-            rest = rows
-            top = maxval(abs(rows))
+            ! the rows that may be anchors (free; translations first), copied once
+            if (pass == 1) then
+                candidates = pack([(i, i = 1, size(eqs, kind=i4))], map%free_eq(eqs) > 0 &
+                    .and. s%dofs%equation_component(eqs) <= DOF_DZ)
+            else
+                candidates = pack([(i, i = 1, size(eqs, kind=i4))], map%free_eq(eqs) > 0)
+            end if
+            rest = rows(candidates, :)
             do k = 1, m
-                norms = merge(sum(rest**2, dim=2), -1.0_dp, eligible)
-                best = int(maxloc(norms, dim=1), i4)
-                if (.not. norms(best) > (1.0e3_dp * epsilon(1.0_dp) * top)**2) exit
-                anchors(k) = best
-                eligible(best) = .false.
-                q = rest(best, :) / sqrt(norms(best))
-                do i = 1, size(rest, 1)
+                best = 0
+                norm2_best = (1.0e3_dp * epsilon(1.0_dp) * top)**2
+                do i = 1, size(rest, 1, kind=i4)
+                    norm2_i = sum(rest(i, :)**2)
+                    if (norm2_i > norm2_best) then
+                        best = i
+                        norm2_best = norm2_i
+                    end if
+                end do
+                if (best == 0) exit
+                anchors(k) = candidates(best)
+                q = rest(best, :) / sqrt(norm2_best)
+                do i = 1, size(rest, 1, kind=i4)
                     rest(i, :) = rest(i, :) - dot_product(rest(i, :), q) * q
                 end do
+                rest(best, :) = 0.0_dp
             end do
             if (k > m) then
                 anchors = eqs(anchors)
@@ -560,6 +580,8 @@ contains
         end do
         call invert(ra, inv, st)
         if (st%failed()) return
+        allocate (values(size(rows, 1), m))
+        call advise_huge_pages(values)
         values = matmul(rows, inv)
         do k = 1, m
             i = findloc(eqs, anchors(k), dim=1)

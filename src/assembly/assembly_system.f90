@@ -18,9 +18,12 @@ module assembly_system
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
         ORIENT_ANGL_NAUT, cara_is_diagonal, cara_is_rotational
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
-    use element_plate, only: plate_stiffness, plate_internal_forces, plate_local_frame, &
+    use element_plate, only: plate_local_frame, plate_local_stiffness, &
+        plate_section_stiffness, plate_forces_from_local, &
         rotate_to_global, plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
-        expand_plate_blocks
+        expand_plate_blocks, plate_section_blocks
+    use model_plate_section, only: plate_section_t, plate_section, plate_section_material
+    use assembly_plate_section, only: plate_cell_section
     use element_plane, only: plane_elasticity_matrix, plane_stiffness
     use element_discrete, only: dis_t_seg2_stiffness, dis_2d_t_seg2_stiffness, &
         dis_t_poi1_stiffness, dis_2d_t_poi1_stiffness, discrete_local_matrix, &
@@ -119,7 +122,7 @@ module assembly_system
 contains
 
     !> Checks that every modelled cell has what its element needs: ELAS (plates, plane
-    !> solids), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC and DIS_CONTACT
+    !> solids; plates also ELAS_FO, ELAS_COQUE, laminates), COQUE (plates), DISCRET (springs), DIS_CONTACT (DIS_CHOC and DIS_CONTACT
     !> springs; SEG2 only).
     !>  st : out, STATUS_MODEL_ERROR naming the cell (and its group when given), or
     !>       STATUS_NOT_IMPLEMENTED for a contact law on a POI1 or with COULOMB
@@ -137,9 +140,19 @@ contains
             if (is_plate(kind) .or. is_plane_solid(kind)) then
                 if (m == 0) then
                     what = 'no material (AFFE_MATERIAU)'
+                else if (is_plate(kind) .and. &
+                         plate_section_material(s%materials%materials(m))) then
+                    what = ''                  ! ELAS_COQUE, laminates (model_plate_section)
                 else if (.not. s%materials%materials(m)%has_elas) then
                     what = 'no ELAS in its material'
                     law = elastic_behaviour(s%materials%materials(m))
+                    if (is_plate(kind) .and. law == 'ELAS_ORTH') then
+                        call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c, &
+                            group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
+                            'material gives ELAS_ORTH to a DKT plate: Code_Aster refuses ' // &
+                            'it (ELEMENTS_91); give the layers through DEFI_COMPOSITE')
+                        return
+                    end if
                     if (len(law) > 0) then
                         call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c, &
                             group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
@@ -440,6 +453,7 @@ contains
         type(contact_history_t), intent(in), optional :: history
         integer(i4) :: kind, m, nn, p0
         real(dp) :: x(3, MAX_CELL_NODES), x2(2, MAX_CELL_NODES), d3(3, 3), ud(MAX_ELEMENT_DOFS)
+        real(dp) :: rot(3, 3), xy(2, 4), k18(18, 18), k24(24, 24)
         kind = s%model%element(c)
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
@@ -449,17 +463,22 @@ contains
         fn = 0.0_dp
         ke = 0.0_dp
         fe = 0.0_dp
-        if (is_plate(kind)) then
-            associate (e => s%materials%materials(m)%elas)
-                if (want_matrix) then
-                    call plate_stiffness(x(:, 1:nn), nn, e%e, e%nu, s%cara%thickness(c), &
-                        s%cara%coef_rigi_drz(c), ke, st)
-                else
-                    call plate_internal_forces(x(:, 1:nn), nn, e%e, e%nu, &
-                        s%cara%thickness(c), s%cara%coef_rigi_drz(c), &
-                        plate_deformation(x(:, 1:nn), nn, ue), fe, st)
-                end if
-            end associate
+        if (is_plate(kind) .and. nn == 3) then
+            call plate_cell_local(s, c, x(:, 1:nn), nn, rot, xy, k18, st)
+            if (st%ok() .and. want_matrix) then
+                call rotate_to_global(rot, 6_i4, k18, ke)
+            else if (st%ok()) then
+                call plate_forces_from_local(rot, xy(:, 1:nn), nn, k18, &
+                    plate_deformation(x(:, 1:nn), nn, ue), fe)
+            end if
+        else if (is_plate(kind)) then
+            call plate_cell_local(s, c, x(:, 1:nn), nn, rot, xy, k24, st)
+            if (st%ok() .and. want_matrix) then
+                call rotate_to_global(rot, 8_i4, k24, ke)
+            else if (st%ok()) then
+                call plate_forces_from_local(rot, xy(:, 1:nn), nn, k24, &
+                    plate_deformation(x(:, 1:nn), nn, ue), fe)
+            end if
         else if (is_plane_solid(kind)) then
             associate (e => s%materials%materials(m)%elas)
                 x2(:, 1:nn) = x(1:2, 1:nn)
@@ -481,6 +500,50 @@ contains
         if (st%failed()) call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // &
             st%message)
     end subroutine cell_response
+
+    !> The local frame and local stiffness of plate cell c (element_plate) from its section
+    !> (assembly_plate_section): isotropic and centred sections through plate_local_stiffness
+    !> (E, NU, EPAIS), the others (ELAS_COQUE, laminates, EXCENTREMENT) through
+    !> plate_section_stiffness.
+    subroutine plate_cell_local(s, c, x, nn, rot, xy, kl, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c, nn
+        real(dp), intent(in) :: x(3, nn)
+        real(dp), intent(out) :: rot(3, 3), xy(2, 4), kl(6 * nn, 6 * nn)
+        type(status_t), intent(out) :: st
+        type(plate_section_t) :: sec
+        kl = 0.0_dp
+        xy = 0.0_dp
+        if (nn /= 3 .and. nn /= 4) then
+            call set_error(st, STATUS_MODEL_ERROR, 'DKT plates need TRIA3 or QUAD4 cells')
+            return
+        end if
+        call plate_local_frame(x, nn, rot, xy(:, 1:nn), st)
+        if (st%ok()) call plate_cell_section(s%mesh, s%materials, s%cara, c, rot, sec, st)
+        if (st%failed()) return
+        if (sec%isotropic .and. .not. sec%coupled) then
+            call plate_local_stiffness(xy(:, 1:nn), nn, sec%young, sec%nu, sec%thickness, &
+                s%cara%coef_rigi_drz(c), kl, st)
+        else
+            call plate_section_stiffness(xy(:, 1:nn), nn, sec%dm, sec%dmf, sec%df, &
+                s%cara%coef_rigi_drz(c), kl, st)
+        end if
+    end subroutine plate_cell_local
+
+    ! True when the section of plate cell c couples membrane and bending (its blocks then
+    ! hold the coupling block; a section that cannot be built says no: the matrix reports).
+    logical function plate_cell_coupled(s, c)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        type(plate_section_t) :: sec
+        type(status_t) :: st
+        integer(i4) :: m
+        plate_cell_coupled = .false.
+        m = material_of_cell(s%materials, c)
+        if (m == 0) return
+        call plate_section(s%materials%materials(m), s%cara, c, sec, st)
+        plate_cell_coupled = st%ok() .and. sec%coupled
+    end function plate_cell_coupled
 
     !> True when cell c follows COMPORTEMENT RELATION = 'DIS_CONTACT'.
     pure logical function is_dis_contact(s, c)
@@ -1363,7 +1426,8 @@ contains
             cache%nn(i) = nn
             cache%x(:, 1:nn, i) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
             if (cache%plate(i)) then
-                cache%k_ptr(i + 1) = cache%k_ptr(i) + plate_block_size(nn)
+                cache%k_ptr(i + 1) = cache%k_ptr(i) + plate_block_size(nn, &
+                    plate_cell_coupled(s, c))
             else
                 cache%k_ptr(i + 1) = cache%k_ptr(i) + int(cache%n(i), i8)**2
             end if
@@ -1397,6 +1461,7 @@ contains
         integer(i4) :: m, nn
         integer(i8) :: p, q
         real(dp) :: x2(2, MAX_CELL_NODES), d3(3, 3), kp(2 * MAX_CELL_NODES, 2 * MAX_CELL_NODES)
+        type(plate_section_t) :: sec
         m = material_of_cell(s%materials, c)
         nn = cache%nn(i)
         p = cache%k_ptr(i)
@@ -1405,9 +1470,16 @@ contains
             if (cache%plate(i)) then
                 call plate_local_frame(cache%x(:, 1:nn, i), nn, cache%rot(:, :, i), &
                     cache%xy(:, 1:nn, i), st)
+                if (st%ok()) call plate_cell_section(s%mesh, s%materials, s%cara, c, &
+                    cache%rot(:, :, i), sec, st)
                 if (st%failed()) return
-                call plate_local_blocks(cache%xy(:, 1:nn, i), nn, e%e, e%nu, &
-                    s%cara%thickness(c), s%cara%coef_rigi_drz(c), cache%k(p:q), st)
+                if (sec%isotropic .and. .not. sec%coupled) then
+                    call plate_local_blocks(cache%xy(:, 1:nn, i), nn, sec%young, sec%nu, &
+                        sec%thickness, s%cara%coef_rigi_drz(c), cache%k(p:q), st)
+                else
+                    call plate_section_blocks(cache%xy(:, 1:nn, i), nn, sec%dm, sec%dmf, &
+                        sec%df, s%cara%coef_rigi_drz(c), cache%k(p:q), st)
+                end if
             else
                 x2(:, 1:nn) = cache%x(1:2, 1:nn, i)    ! contiguous copy: no array temporary
                 call plane_elasticity_matrix(e%e, e%nu, is_plane_strain(s%model%element(c)), &

@@ -14,7 +14,7 @@
 !> Cells whose material has no ALPHA get nothing, with or without a temperature.
 module assembly_varc
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text
     use mesh_types, only: mesh_t, cell_label, CELL_TYPE_NODES, MAX_CELL_NODES, CELL_TRIA3, &
         CELL_QUAD4
@@ -31,6 +31,7 @@ module assembly_varc
     use element_plate_initial_strains, only: plate_rigi_rule, plate_layer_points, &
         plate_initial_strain_forces
     use assembly_system, only: structure_t, element_equations, MAX_ELEMENT_DOFS
+    use model_plate_section, only: plate_section_t, plate_section
     implicit none
     private
 
@@ -212,6 +213,7 @@ contains
         type(gauss_rule_t) :: rule
         real(dp), allocatable :: eps(:, :), z(:), w(:), n0(:, :), m0(:, :)
         real(dp) :: dm(3, 3), x(3, 4), unit(3)
+        type(plate_section_t) :: sec
         integer(i4) :: nn, m, g, layers, p0
         logical :: has
         fe = 0.0_dp
@@ -226,14 +228,19 @@ contains
         if (st%failed() .or. .not. has) return
         call plate_layer_points(s%cara%thickness(c), layers, z, w)
         m = material_of_cell(s%materials, c)
-        associate (e => s%materials%materials(m)%elas)
-            dm = 0.0_dp
-            dm(1, 1:2) = [1.0_dp, e%nu]
-            dm(2, 1:2) = [e%nu, 1.0_dp]
-            dm(3, 3) = 0.5_dp * (1.0_dp - e%nu)
-            dm = dm * e%e / (1.0_dp - e%nu**2)
-        end associate
+        call plate_section(s%materials%materials(m), s%cara, c, sec, st)
+        if (st%failed()) then
+            call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // st%message)
+            return
+        end if
+        if (.not. sec%isotropic) then
+            call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c) // ': the ' // &
+                'thermal strains of a plate are built for ELAS and ELAS_FO sections')
+            return
+        end if
+        dm = sec%dm / sec%thickness                      ! the plane-stress matrix
         unit = matmul(dm, [1.0_dp, 1.0_dp, 0.0_dp])      ! the stress of a unit expansion
+        z = z + sec%offset                               ! about the reference surface
         allocate (n0(3, rule%n), m0(3, rule%n))
         do g = 1, rule%n
             n0(:, g) = unit * sum(w * eps(:, g))

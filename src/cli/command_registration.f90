@@ -20,6 +20,7 @@ module command_registration
     use mesh_create_commands, only: run_crea_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
+    use composite_command, only: run_defi_composite
     use cara_elem_commands, only: run_affe_cara_elem
     use load_commands, only: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, &
         run_affe_char_cine_f
@@ -71,6 +72,7 @@ contains
         call ctx%register('CREA_MAILLAGE', run_crea_maillage)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
+        call ctx%register('DEFI_COMPOSITE', run_defi_composite, at_check=.true.)
         call ctx%register('AFFE_MATERIAU', run_affe_materiau)
         call ctx%register('AFFE_CARA_ELEM', run_affe_cara_elem)
         call ctx%register('AFFE_CHAR_MECA', run_affe_char_meca)

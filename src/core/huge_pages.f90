@@ -31,7 +31,7 @@ module huge_pages
     !> Advises an allocated, contiguous array for huge pages (no-op below
     !> HUGE_PAGE_MIN_BYTES or where madvise fails).
     interface advise_huge_pages
-        module procedure advise_real, advise_int4
+        module procedure advise_real, advise_real2, advise_int4
     end interface advise_huge_pages
 
     public :: advise_huge_pages
@@ -43,6 +43,12 @@ contains
         if (size(x, kind=i8) * 8_i8 < HUGE_PAGE_MIN_BYTES) return
         call advise_range(c_loc(x), size(x, kind=i8) * 8_i8)
     end subroutine advise_real
+
+    subroutine advise_real2(x)
+        real(dp), intent(in), contiguous, target :: x(:, :)
+        if (size(x, kind=i8) * 8_i8 < HUGE_PAGE_MIN_BYTES) return
+        call advise_range(c_loc(x), size(x, kind=i8) * 8_i8)
+    end subroutine advise_real2
 
     subroutine advise_int4(x)
         integer(i4), intent(in), contiguous, target :: x(:)

@@ -3,7 +3,8 @@
 !> cardinality, defaults mirroring Code_Aster's, allowed values and rules, as data.
 module catalog_cara_elem
     use kinds, only: dp
-    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, &
+        RULE_PRESENT_PRESENT
     use number_limits, only: MAX_LENGTH, MIN_LENGTH, MAX_MODULUS, MIN_MODULUS
     use catalog_common, only: OUI_NON, ANGLE_MAX, RATIO_MAX, WEIGHT_MAX
     implicit none
@@ -27,10 +28,11 @@ contains
                    vmin=-RATIO_MAX, vmax=RATIO_MAX)
         call c%key('ANGL_REP', 'R', min=2, max=2, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
         call c%key('VECTEUR', 'R', min=3, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
-        call c%key('EXCENTREMENT', 'R', noop=.true.)
-        call c%key('INER_ROTA', 'TXM', into=OUI_NON, noop=.true.)
+        call c%key('EXCENTREMENT', 'R', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('INER_ROTA', 'TXM', into=OUI_NON, noop=.true.)   ! masses only
         call c%key('MODI_METRIQUE', 'TXM', into=OUI_NON, noop=.true.)
         call c%rule(RULE_EXCLUS, 'ANGL_REP VECTEUR')
+        call c%rule(RULE_PRESENT_PRESENT, 'EXCENTREMENT INER_ROTA')
         call c%end_fact()
         call c%fact('DISCRET', max=MANY)
         call describe_discrete(c, .false.)

@@ -27,7 +27,22 @@ contains
         call describe_elas(c)
         call describe_dis_contact(c)
         call decode_table(c)
+        call describe_composite(c)
     end subroutine describe_materials
+
+    !> DEFI_COMPOSITE (U4.42.03): the layers of a laminate, from the bottom face up.
+    subroutine describe_composite(c)
+        type(catalog_t), intent(inout) :: c
+        call c%command('DEFI_COMPOSITE', 'mater')
+        call c%fact('COUCHE', max=MANY, req=.true.)
+        call c%key('EPAIS', 'R', req=.true., vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('MATER', 'mater', req=.true.)
+        call c%key('ORIENTATION', 'R', def='0.0', vmin=-90.0_dp, vmax=90.0_dp)
+        call c%end_fact()
+        call c%fact('IMPRESSION')
+        call c%key('UNITE', 'I', def='8')
+        call c%end_fact()
+    end subroutine describe_composite
 
     !> ELAS (Code_Aster's keywords and rules): E and NU, or K and MU, or CELE_P and CELE_S
     !> with RHO; the others are data. Values the elements form products from are bounded.

@@ -17,19 +17,24 @@
 module element_plate
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use element_plane, only: plane_elasticity_matrix, plane_stiffness
-    use mesh_cell_shapes, only: CELL_QUAD4
-    use element_kirchhoff_bending, only: kirchhoff_bending_stiffness
+    use element_plane, only: plane_elasticity_matrix, plane_stiffness, plane_derivatives
+    use element_kirchhoff_bending, only: kirchhoff_bending_stiffness, kirchhoff_bending_b
+    use element_quadrature, only: gauss_quad, hammer_tria3
+    use mesh_cell_shapes, only: CELL_TRIA3, CELL_QUAD4
     implicit none
     private
+
+    !> No membrane-bending coupling.
+    real(dp), parameter :: ZERO_COUPLING(3, 3) = 0.0_dp
 
     !> Code_Aster's default COEF_RIGI_DRZ (AFFE_CARA_ELEM/COQUE).
     real(dp), parameter, public :: PLATE_COEF_RIGI_DRZ = 1.0e-5_dp
 
-    public :: plate_local_frame, plate_local_stiffness, plate_stiffness
+    public :: plate_local_frame, plate_local_stiffness, plate_stiffness, &
+        plate_section_stiffness, plate_membrane_b
     public :: plate_internal_forces, plate_forces_from_local, rotate_to_global
     public :: plate_block_size, plate_local_blocks, plate_forces_from_blocks, &
-        expand_plate_blocks
+        expand_plate_blocks, plate_section_blocks
     public :: dkq_stiffness, dkt_stiffness
 
 contains
@@ -78,7 +83,8 @@ contains
         end do
     end subroutine plate_local_frame
 
-    !> Stiffness in the local frame, DOF order (u, v, w, thx, thy, thz) per node.
+    !> Stiffness in the local frame, DOF order (u, v, w, thx, thy, thz) per node, of an
+    !> isotropic plate (E, NU, EPAIS): plate_section_stiffness with Dm = h Q, Df = h^3/12 Q.
     !>  xy : in, local coordinates; nn : in, 3 or 4; young, nu, thickness : in, material
     !>  coef_drz : in, COEF_RIGI_DRZ (PLATE_COEF_RIGI_DRZ by default)
     !>  kl : out, kl(6nn, 6nn); st : out, material, thickness or geometry error
@@ -87,8 +93,7 @@ contains
         real(dp), intent(in) :: xy(2, nn), young, nu, thickness, coef_drz
         real(dp), intent(out) :: kl(6 * nn, 6 * nn)
         type(status_t), intent(out) :: st
-        real(dp) :: dmat(3, 3), km(2 * nn, 2 * nn), kb(3 * nn, 3 * nn), kdrz
-        integer(i4) :: im(2 * nn), ib(3 * nn), i
+        real(dp) :: dmat(3, 3)
         kl = 0.0_dp
         if (.not. thickness > 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, 'COQUE/EPAIS must be > 0')
@@ -96,20 +101,42 @@ contains
         end if
         call plane_elasticity_matrix(young, nu, .false., dmat, st)
         if (st%failed()) return
+        call plate_section_stiffness(xy, nn, thickness * dmat, ZERO_COUPLING, &
+            (thickness**3 / 12.0_dp) * dmat, coef_drz, kl, st)
+    end subroutine plate_local_stiffness
+
+    !> Stiffness in the local frame, DOF order (u, v, w, thx, thy, thz) per node, of a plate
+    !> section given by its rigidities in the element's axes (model_plate_section): the
+    !> membrane (Dm; QUAD4 2x2 Gauss, TRIA3 constant strain), the discrete Kirchhoff bending
+    !> (Df), their coupling int Bm^t Dmf Bb over the same points as the bending (when Dmf is
+    !> not zero), and the drilling term COEF_RIGI_DRZ times the smallest bending-rotation
+    !> diagonal term.
+    !>  kl : out, kl(6nn, 6nn); st : out, a degenerate cell
+    subroutine plate_section_stiffness(xy, nn, dm, dmf, df, coef_drz, kl, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn), dm(3, 3), dmf(3, 3), df(3, 3), coef_drz
+        real(dp), intent(out) :: kl(6 * nn, 6 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: km(2 * nn, 2 * nn), kb(3 * nn, 3 * nn), kmb(2 * nn, 3 * nn), kdrz
+        integer(i4) :: im(2 * nn), ib(3 * nn), i
+        kl = 0.0_dp
         if (nn == 4) then
-            call plane_stiffness(CELL_QUAD4, xy, thickness * dmat, km, st)
+            call plane_stiffness(CELL_QUAD4, xy, dm, km, st)
         else
-            call membrane_tria3_stiffness(xy, thickness * dmat, km, st)
+            call membrane_tria3_stiffness(xy, dm, km, st)
         end if
         if (st%failed()) return
-        call kirchhoff_bending_stiffness(xy, nn, (thickness**3 / 12.0_dp) * dmat, kb, st)
+        call kirchhoff_bending_stiffness(xy, nn, df, kb, st)
         if (st%failed()) return
-        do i = 1, nn
-            im(2 * i - 1:2 * i) = [6 * i - 5, 6 * i - 4]
-            ib(3 * i - 2:3 * i) = [6 * i - 3, 6 * i - 2, 6 * i - 1]
-        end do
+        call block_indices(nn, im, ib)
         kl(im, im) = km
         kl(ib, ib) = kb
+        if (any(abs(dmf) > 0.0_dp)) then
+            call plate_coupling_stiffness(xy, nn, dmf, kmb, st)
+            if (st%failed()) return
+            kl(im, ib) = kmb
+            kl(ib, im) = transpose(kmb)
+        end if
         kdrz = huge(1.0_dp)
         do i = 1, nn
             kdrz = min(kdrz, kb(3 * i - 1, 3 * i - 1), kb(3 * i, 3 * i))
@@ -117,7 +144,57 @@ contains
         do i = 1, nn
             kl(6 * i, 6 * i) = coef_drz * kdrz
         end do
-    end subroutine plate_local_stiffness
+    end subroutine plate_section_stiffness
+
+    !> The membrane-bending coupling block int Bm^t Dmf Bb dA (u, v rows; w, thx, thy
+    !> columns) at the bending's points (Hammer 3 points / 2x2 Gauss).
+    subroutine plate_coupling_stiffness(xy, nn, dmf, kmb, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn), dmf(3, 3)
+        real(dp), intent(out) :: kmb(2 * nn, 3 * nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: xg(2, 4), wg(4), bb(3, 3 * nn), bm(3, 2 * nn), det, detb
+        integer(i4) :: g, ng
+        kmb = 0.0_dp
+        if (nn == 3) then
+            call hammer_tria3(xg, wg)
+            ng = 3
+        else
+            call gauss_quad(2_i4, xg, wg)
+            ng = 4
+        end if
+        do g = 1, ng
+            call kirchhoff_bending_b(xy, nn, xg(:, g), bb, detb)
+            call plate_membrane_b(xy, nn, xg(:, g), bm, det)
+            if (.not. det > 0.0_dp .or. .not. detb > 0.0_dp) then
+                call set_error(st, STATUS_MODEL_ERROR, 'plate cell has a non-positive ' // &
+                    'Jacobian (degenerate or non-convex cell)')
+                return
+            end if
+            kmb = kmb + matmul(transpose(bm), matmul(dmf, bb)) * (det * wg(g))
+        end do
+    end subroutine plate_coupling_stiffness
+
+    !> The membrane strain-displacement matrix (u, v per node; xx, yy, xy engineering) of a
+    !> TRIA3 (linear) or QUAD4 (bilinear) plate cell at reference point xi ((L2, L3) on the
+    !> triangle, [-1, 1]^2 on the quadrilateral).
+    !>  det : out, the Jacobian determinant (bm = 0 when it is 0)
+    pure subroutine plate_membrane_b(xy, nn, xi, bm, det)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn), xi(2)
+        real(dp), intent(out) :: bm(3, 2 * nn), det
+        real(dp) :: n(4), dxy(2, 4)
+        integer(i4) :: a
+        call plane_derivatives(merge(CELL_TRIA3, CELL_QUAD4, nn == 3), xy, xi(1), xi(2), &
+            n, dxy, det)
+        bm = 0.0_dp
+        do a = 1, nn
+            bm(1, 2 * a - 1) = dxy(1, a)
+            bm(2, 2 * a) = dxy(2, a)
+            bm(3, 2 * a - 1) = dxy(2, a)
+            bm(3, 2 * a) = dxy(1, a)
+        end do
+    end subroutine plate_membrane_b
 
     !> Global stiffness of a DKT (nn = 3) or DKQ (nn = 4) element.
     !>  coords : in, coords(1:3, nn) global coordinates; nn : in, 3 or 4
@@ -248,10 +325,15 @@ contains
 
     !> Terms of the local stiffness stored by blocks (plate_local_blocks): the membrane
     !> block (u, v of every node, (2nn)^2), the bending block (w, thx, thy, (3nn)^2) and the
-    !> nn drilling terms: 212 for a DKQ instead of 24^2 = 576 (the other terms are zero).
-    pure integer(i4) function plate_block_size(nn)
+    !> nn drilling terms: 212 for a DKQ instead of 24^2 = 576 (the other terms are zero);
+    !> with `coupled`, the membrane-bending block (2nn x 3nn) after them.
+    pure integer(i4) function plate_block_size(nn, coupled)
         integer(i4), intent(in) :: nn
+        logical, intent(in), optional :: coupled
         plate_block_size = 13 * nn * nn + nn
+        if (present(coupled)) then
+            if (coupled) plate_block_size = plate_block_size + 6 * nn * nn
+        end if
     end function plate_block_size
 
     !> The local stiffness of plate_local_stiffness, by blocks (plate_block_size): the
@@ -264,10 +346,32 @@ contains
         real(dp), intent(out) :: kblk(:)
         type(status_t), intent(out) :: st
         real(dp) :: kl(6 * nn, 6 * nn)
-        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, k
         kblk = 0.0_dp
         call plate_local_stiffness(xy, nn, young, nu, thickness, coef_drz, kl, st)
         if (st%failed()) return
+        call local_to_blocks(nn, kl, kblk)
+    end subroutine plate_local_blocks
+
+    !> plate_section_stiffness by blocks: size(kblk) = plate_block_size(nn, coupled), the
+    !> coupling block kept when coupled.
+    subroutine plate_section_blocks(xy, nn, dm, dmf, df, coef_drz, kblk, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: xy(2, nn), dm(3, 3), dmf(3, 3), df(3, 3), coef_drz
+        real(dp), intent(out) :: kblk(:)
+        type(status_t), intent(out) :: st
+        real(dp) :: kl(6 * nn, 6 * nn)
+        kblk = 0.0_dp
+        call plate_section_stiffness(xy, nn, dm, dmf, df, coef_drz, kl, st)
+        if (st%failed()) return
+        call local_to_blocks(nn, kl, kblk)
+    end subroutine plate_section_blocks
+
+    ! The blocks of a full local matrix (the coupling block when kblk has room for it).
+    pure subroutine local_to_blocks(nn, kl, kblk)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: kl(6 * nn, 6 * nn)
+        real(dp), intent(out) :: kblk(:)
+        integer(i4) :: im(2 * nn), ib(3 * nn), i, j, k
         call block_indices(nn, im, ib)
         k = 0
         do j = 1, 2 * nn
@@ -285,9 +389,18 @@ contains
         do i = 1, nn
             kblk(k + i) = kl(6 * i, 6 * i)
         end do
-    end subroutine plate_local_blocks
+        k = k + nn
+        if (size(kblk) < k + 6 * nn * nn) return
+        do j = 1, 3 * nn
+            do i = 1, 2 * nn
+                k = k + 1
+                kblk(k) = kl(im(i), ib(j))
+            end do
+        end do
+    end subroutine local_to_blocks
 
-    !> The full local stiffness (6nn x 6nn) of its blocks (plate_local_blocks).
+    !> The full local stiffness (6nn x 6nn) of its blocks (plate_local_blocks,
+    !> plate_section_blocks).
     pure subroutine expand_plate_blocks(nn, kblk, kl)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: kblk(:)
@@ -310,6 +423,15 @@ contains
         end do
         do i = 1, nn
             kl(6 * i, 6 * i) = kblk(k + i)
+        end do
+        k = k + nn
+        if (size(kblk) < k + 6 * nn * nn) return
+        do j = 1, 3 * nn
+            do i = 1, 2 * nn
+                k = k + 1
+                kl(im(i), ib(j)) = kblk(k)
+                kl(ib(j), im(i)) = kblk(k)
+            end do
         end do
     end subroutine expand_plate_blocks
 
@@ -343,6 +465,16 @@ contains
         do i = 1, nn
             fl(6 * i) = fl(6 * i) + kblk(k + i) * ul(6 * i)
         end do
+        k = k + nn
+        if (size(kblk) >= k + 6 * nn * nn) then        ! the membrane-bending coupling
+            do j = 1, 3 * nn
+                do i = 1, 2 * nn
+                    k = k + 1
+                    fl(im(i)) = fl(im(i)) + kblk(k) * ul(ib(j))
+                    fl(ib(j)) = fl(ib(j)) + kblk(k) * ul(im(i))
+                end do
+            end do
+        end if
         call vectors_to_global(rot, nn, fl, fe)
     end subroutine plate_forces_from_blocks
 

@@ -114,10 +114,12 @@ contains
 
     !> Shear forces T = (Qx, Qy) at reference point xi (module header).
     !>  df : in, the bending rigidity;  other arguments as plate_point_strains
-    pure subroutine plate_point_shear(xy, nn, ul, df, xi, t)
+    pure subroutine plate_point_shear(xy, nn, ul, df, xi, t, dk_out)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: xy(2, nn), ul(6 * nn), df(3, 3), xi(2)
         real(dp), intent(out) :: t(2)
+        !> the curvatures' gradient (d/dx, d/dy of k1 k2 k3), laminates' shear stresses (elem)
+        real(dp), intent(out), optional :: dk_out(3, 2)
         real(dp) :: bx(3 * nn, 2 * nn), by(3 * nn, 2 * nn), ub(3 * nn)
         real(dp) :: d2(3, 8), dg(2, 4), jac(2, 2), inv(2, 2), det
         real(dp) :: bxv(8), byv(8), hx(3), hy(3), w(3, 3), dk(3, 2)
@@ -125,6 +127,7 @@ contains
         real(dp), parameter :: yc(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]
         integer(i4) :: i, nr
         t = 0.0_dp
+        if (present(dk_out)) dk_out = 0.0_dp
         nr = 2 * nn
         do i = 1, nn
             ub(3 * i - 2:3 * i) = ul(6 * i - 3:6 * i - 1)
@@ -162,6 +165,7 @@ contains
         dk(:, 2) = [hx(3), hy(2), hx(2) + hy(3)]
         t(1) = dot_product(df(1, :), dk(:, 1)) + dot_product(df(3, :), dk(:, 2))
         t(2) = dot_product(df(3, :), dk(:, 1)) + dot_product(df(2, :), dk(:, 2))
+        if (present(dk_out)) dk_out = dk
     end subroutine plate_point_shear
 
     !> Second derivatives (xi xi, eta eta, xi eta) of the quadratic rotation shape functions

@@ -16,9 +16,8 @@ module element_plate_initial_strains
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use mesh_cell_shapes, only: CELL_TRIA3, CELL_QUAD4
     use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLATE
-    use element_plane, only: plane_derivatives
     use element_kirchhoff_bending, only: kirchhoff_bending_b
-    use element_plate, only: plate_local_frame
+    use element_plate, only: plate_local_frame, plate_membrane_b
     implicit none
     private
 
@@ -66,7 +65,7 @@ contains
         type(status_t), intent(out) :: st
         type(gauss_rule_t) :: rule
         real(dp) :: rot(3, 3), xy(2, nn), bb(3, 3 * nn), bm(3, 2 * nn), fl(6 * nn)
-        real(dp) :: n(4), dxy(2, 4), det, detb, wd
+        real(dp) :: det, detb, wd
         integer(i4) :: g, i
         fe = 0.0_dp
         call plate_local_frame(coords, nn, rot, xy, st)
@@ -74,20 +73,12 @@ contains
         if (st%failed()) return
         fl = 0.0_dp
         do g = 1, rule%n
-            call plane_derivatives(merge(CELL_TRIA3, CELL_QUAD4, nn == 3), xy, &
-                rule%xi(1, g), rule%xi(2, g), n, dxy, det)
+            call plate_membrane_b(xy, nn, rule%xi(:, g), bm, det)
             call kirchhoff_bending_b(xy, nn, rule%xi(:, g), bb, detb)
             if (.not. abs(det) > 0.0_dp .or. .not. detb > 0.0_dp) then
                 call set_error(st, STATUS_MODEL_ERROR, 'plate cell is degenerate')
                 return
             end if
-            bm = 0.0_dp
-            do i = 1, nn
-                bm(1, 2 * i - 1) = dxy(1, i)
-                bm(2, 2 * i) = dxy(2, i)
-                bm(3, 2 * i - 1) = dxy(2, i)
-                bm(3, 2 * i) = dxy(1, i)
-            end do
             wd = abs(det) * rule%w(g)
             do i = 1, nn
                 fl(6 * i - 5:6 * i - 4) = fl(6 * i - 5:6 * i - 4) + &

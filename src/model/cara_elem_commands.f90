@@ -11,6 +11,7 @@ module cara_elem_commands
     use mesh_types, only: mesh_t, cells_of_group
     use mesh_command_support, only: relocate_error, read_groups, group_cells
     use model_concept, only: model_concept_t
+    use model_types, only: is_plate
     use model_cara_elem, only: cara_elem_init, assign_coque, assign_discrete, &
         assign_orientation, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N
     use model_rigi_parasol, only: rigi_parasol_table_t, compute_rigi_parasol, &
@@ -49,13 +50,14 @@ contains
         type is (model_concept_t)
             call cmd%get_int('INFO', info, st)
             if (st%failed()) return
-            ! VERIF='MAILLE': a cell of a DISCRET group without a discrete element is an
-            ! error (Code_Aster's vafcar); without it such cells are passed over
+            ! VERIF='MAILLE': a cell of a COQUE or DISCRET group without a plate or a
+            ! discrete element is an error (Code_Aster's vafcar); without it such cells are
+            ! passed over
             verify = cmd%given('VERIF')
             allocate (cc)
             call cara_elem_init(cc%cara, p%mesh)
             do i = 1, cmd%count('COQUE')
-                call coque_occurrence(cmd%occurrence('COQUE', i), p, cc, st)
+                call coque_occurrence(ctx, cmd%occurrence('COQUE', i), p, cc, verify, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('DISCRET')
@@ -87,15 +89,21 @@ contains
         call move_alloc(cc, result)
     end subroutine run_affe_cara_elem
 
-    ! COQUE: EPAIS (> 0) and COEF_RIGI_DRZ on the plate cells of each group.
-    subroutine coque_occurrence(occ, mc, cc, st)
+    ! COQUE: EPAIS (> 0), COEF_RIGI_DRZ, the user frame (ANGL_REP, VECTEUR), COQUE_NCOU and
+    ! EXCENTREMENT on the plate cells of each group. Cells without a plate element are
+    ! passed over unless VERIF (a note in the .mess says how many).
+    subroutine coque_occurrence(ctx, occ, mc, cc, verify, st)
+        type(run_context_t), intent(inout) :: ctx
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
         type(cara_elem_concept_t), intent(inout) :: cc
+        logical, intent(in) :: verify
         type(status_t), intent(out) :: st
+        integer(i4), allocatable :: cells(:)
+        integer(i4) :: skipped
         type(string_t), allocatable :: names(:)
         integer(i4), allocatable :: groups(:)
-        real(dp) :: epais, drz, direction(3)
+        real(dp) :: epais, drz, direction(3), offset
         real(dp), allocatable :: values(:)
         integer(i4) :: g, layers
         call occ%get_real('EPAIS', epais, st)
@@ -130,15 +138,27 @@ contains
         layers = 1
         if (occ%has('COQUE_NCOU')) call occ%get_int('COQUE_NCOU', layers, st)
         if (st%failed()) return
+        offset = 0.0_dp
+        if (occ%has('EXCENTREMENT')) call occ%get_real('EXCENTREMENT', offset, st)
+        if (st%failed()) return
         call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
         if (st%failed()) return
+        skipped = 0
         do g = 1, size(groups)
-            call assign_coque(cc%cara, mc%model, mc%mesh, cells_of_group(mc%mesh, groups(g)), &
+            cells = cells_of_group(mc%mesh, groups(g))
+            if (.not. verify) then
+                skipped = skipped + count(.not. is_plate(mc%model%element(cells)))
+                cells = pack(cells, is_plate(mc%model%element(cells)))
+            end if
+            call assign_coque(cc%cara, mc%model, mc%mesh, cells, &
                               epais, st, coef_rigi_drz=drz, group=names(g)%s, &
-                              direction=direction, layers=layers)
+                              direction=direction, layers=layers, offset=offset)
             call relocate_error(occ, 'GROUP_MA', st)
             if (st%failed()) return
         end do
+        if (skipped > 0) call ctx%write_mess('    COQUE: ' // to_text(skipped) // &
+            ' cell(s) of its groups carry no plate element: passed over (VERIF=''MAILLE'' ' &
+            // 'makes that an error)')
     end subroutine coque_occurrence
 
     ! DISCRET / DISCRET_2D: CARA, VALE (count checked at VALE), REPERE, SYME on each

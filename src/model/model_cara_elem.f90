@@ -42,6 +42,7 @@ module model_cara_elem
         !> x axis of its user frame (results are given in it); global X by default
         real(dp), allocatable :: coque_direction(:, :) !< (3, n_cells)
         integer(i4), allocatable :: coque_layers(:)    !< COQUE/COQUE_NCOU (default 1)
+        real(dp), allocatable :: coque_offset(:)       !< COQUE/EXCENTREMENT (default 0)
         integer(i4), allocatable :: discrete_cara(:)   !< CARA_* per cell
         integer(i4), allocatable :: discrete_repere(:) !< REPERE_GLOBAL / REPERE_LOCAL
         real(dp), allocatable :: discrete_values(:, :) !< (6, n_cells); first n used
@@ -73,6 +74,7 @@ contains
         allocate (cara%coque_direction(3, n), source=0.0_dp)
         cara%coque_direction(1, :) = 1.0_dp
         allocate (cara%coque_layers(n), source=1_i4)
+        allocate (cara%coque_offset(n), source=0.0_dp)
         allocate (cara%discrete_cara(n), source=CARA_NONE)
         allocate (cara%discrete_repere(n), source=REPERE_GLOBAL)
         allocate (cara%discrete_values(6, n), source=0.0_dp)
@@ -90,8 +92,9 @@ contains
     !>  st    : out, STATUS_MODEL_ERROR for EPAIS <= 0 or a cell that is not a plate
     !>  direction : in, optional, ANGL_REP / VECTEUR as a direction (default global X)
     !>  layers : in, optional, COQUE_NCOU (default 1)
+    !>  offset : in, optional, EXCENTREMENT (default 0)
     subroutine assign_coque(cara, model, mesh, cells_in, epais, st, coef_rigi_drz, group, &
-                            direction, layers)
+                            direction, layers, offset)
         type(cara_elem_t), intent(inout) :: cara
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
@@ -102,6 +105,7 @@ contains
         character(len=*), intent(in), optional :: group
         real(dp), intent(in), optional :: direction(3)
         integer(i4), intent(in), optional :: layers
+        real(dp), intent(in), optional :: offset
         integer(i4) :: i
         integer(i4), allocatable :: cells(:)
         if (epais <= 0.0_dp) then
@@ -123,6 +127,8 @@ contains
         cara%has_coque(cells) = .true.
         cara%thickness(cells) = epais
         cara%coef_rigi_drz(cells) = DEFAULT_COEF_RIGI_DRZ
+        cara%coque_offset(cells) = 0.0_dp
+        if (present(offset)) cara%coque_offset(cells) = offset
         if (present(coef_rigi_drz)) cara%coef_rigi_drz(cells) = coef_rigi_drz
         do i = 1, size(cells)
             cara%coque_direction(:, cells(i)) = [1.0_dp, 0.0_dp, 0.0_dp]

@@ -130,8 +130,10 @@ contains
     end function material_of_cell
 
     !> Checks every modelled cell has the data its element needs: plates and plane solids
-    !> need ELAS with E > 0 and -1 < NU < 0.5; discretes and load edges need nothing (ELAS
-    !> on springs is accepted and unused, as in Code_Aster).
+    !> need ELAS with E > 0 and -1 < NU < 0.5 (plates also take ELAS_FO, ELAS_COQUE,
+    !> ELAS_COQUE_FO and DEFI_COMPOSITE laminates, model_plate_section; ELAS_ORTH straight
+    !> on a plate is refused); discretes and load edges need nothing (ELAS on springs is
+    !> accepted and unused, as in Code_Aster).
     !>  st : out, STATUS_MODEL_ERROR naming the first cell (and its group) that lacks data;
     !>       STATUS_NOT_IMPLEMENTED when its material gives another elastic behaviour
     !>       (ELAS_ORTH, ELAS_COQUE, ...) that parasol's element does not build, naming it
@@ -152,6 +154,14 @@ contains
                 return
             end if
             associate (mat => field%materials(m))
+                if (is_plate(model%element(c)) .and. plate_elasticity(mat)) cycle
+                if (is_plate(model%element(c)) .and. has_behaviour(mat, 'ELAS_ORTH')) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'material ' // label(mat) // &
+                        ' on ' // cell_label(mesh, c) // ' gives ELAS_ORTH to a DKT plate:' &
+                        // ' Code_Aster refuses it (ELEMENTS_91); give the layers through ' &
+                        // 'DEFI_COMPOSITE')
+                    return
+                end if
                 if (.not. mat%has_elas) then
                     other = elastic_behaviour(mat)
                     if (len(other) > 0) then
@@ -176,6 +186,16 @@ contains
             end associate
         end do
     end subroutine check_materials
+
+    !> True when the material gives a plate's elasticity other than ELAS, which
+    !> model_plate_section decodes: ELAS_FO, ELAS_COQUE, ELAS_COQUE_FO, a DEFI_COMPOSITE
+    !> laminate (ELAS_COQMU).
+    pure logical function plate_elasticity(mat)
+        type(material_t), intent(in) :: mat
+        plate_elasticity = has_behaviour(mat, 'ELAS_FO') .or. &
+            has_behaviour(mat, 'ELAS_COQUE') .or. has_behaviour(mat, 'ELAS_COQUE_FO') .or. &
+            has_behaviour(mat, 'ELAS_COQMU')
+    end function plate_elasticity
 
     !> The elastic behaviour of a material other than ELAS (ELAS_ORTH, ELAS_FO, ...), ''
     !> when it has none.
@@ -251,7 +271,9 @@ contains
         k = value_index(mat%behaviours(b), key)
         if (k == 0) return
         associate (v => mat%behaviours(b)%values(k))
-            if (v%kind /= VALUE_NUMBERS .or. size(v%numbers) == 0) return
+            if (v%kind /= VALUE_NUMBERS) return      ! (no short-circuit: two tests)
+            if (.not. allocated(v%numbers)) return
+            if (size(v%numbers) == 0) return
             x = v%numbers(1)
             found = .true.
         end associate

@@ -22,6 +22,8 @@ module plate_options
     use element_plate, only: plate_local_frame
     use element_plate_fields, only: plate_point_strains, plate_point_shear, plate_user_turn, &
         turn_plate_tensor, turn_plate_vector, plate_rigidities
+    use model_plate_section, only: plate_section_t
+    use assembly_plate_section, only: plate_cell_section
     implicit none
     private
 
@@ -41,6 +43,11 @@ module plate_options
         real(dp) :: thickness = 0.0_dp, dm(3, 3) = 0.0_dp, df(3, 3) = 0.0_dp, dc = 0.0_dp
         integer(i4) :: layers = 1
         real(dp) :: ul(24) = 0.0_dp               !< local displacements
+        !> the section in the element's axes (model_plate_section, elem's): a centred
+        !> isotropic section (`homogeneous`) takes dm, df, dc above as before; the others
+        !> (ELAS_COQUE, laminates, EXCENTREMENT) its coupling, shear rigidity and layers
+        logical :: homogeneous = .true.
+        type(plate_section_t) :: section
         !> thermal strains (3 layers, points) at the sub-points of the points asked for
         !> (assembly_varc, elem's), when the cell has some: the stresses and forces leave
         !> them out (sigma = D (e + z k - eps_th), N = Dm e - int D eps_th, ...)
@@ -75,7 +82,7 @@ contains
         real(dp), intent(in) :: u(:)
         type(plate_cell_t), intent(out) :: pc
         type(status_t), intent(out) :: st
-        real(dp) :: coords(3, 4), ue(24), young, nu
+        real(dp) :: coords(3, 4), ue(24)
         integer(i4) :: i, k, node, m, eq
         pc%nn = mesh%cell_ptr(cell + 1) - mesh%cell_ptr(cell)
         if (mesh%cell_type(cell) /= CELL_TRIA3 .and. mesh%cell_type(cell) /= CELL_QUAD4) then
@@ -108,21 +115,24 @@ contains
                 'material: CALC_CHAMP needs its ELAS (give CHAM_MATER)')
             return
         end if
-        if (.not. materials%materials(m)%has_elas) then
-            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, cell) // ': its ' // &
-                'material has no ELAS (E, NU)')
-            return
-        end if
-        young = materials%materials(m)%elas%e
-        nu = materials%materials(m)%elas%nu
         pc%thickness = cara%thickness(cell)
         if (.not. pc%thickness > 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, cell) // ' has no ' // &
                 'thickness: CALC_CHAMP needs its COQUE (give CARA_ELEM)')
             return
         end if
-        pc%layers = max(1_i4, cara%coque_layers(cell))
-        call plate_rigidities(young, nu, pc%thickness, pc%dm, pc%df, pc%dc)
+        call plate_cell_section(mesh, materials, cara, cell, pc%rot, pc%section, st)
+        if (st%failed()) return
+        pc%layers = pc%section%layers
+        pc%homogeneous = pc%section%isotropic .and. .not. pc%section%coupled
+        if (pc%homogeneous) then
+            call plate_rigidities(pc%section%young, pc%section%nu, pc%thickness, pc%dm, &
+                pc%df, pc%dc)
+        else
+            pc%dm = pc%section%dm
+            pc%df = pc%section%df
+            pc%dc = pc%section%dc(1, 1)
+        end if
     end subroutine plate_prepare
 
     !> The values of `kind` at the np points xi(:, 1:np) of a prepared cell, point by point
@@ -135,6 +145,10 @@ contains
         real(dp), intent(out) :: values(:)
         real(dp) :: e(3), k(3), t(2), det, h, z, shape, a(3), v(2), layer_h, n0(3), m0(3)
         integer(i4) :: p, lay, level, base, nv
+        if (.not. pc%homogeneous) then
+            call section_values(pc, kind, xi, np, values)
+            return
+        end if
         nv = plate_value_count(kind, pc%layers)
         h = pc%thickness
         layer_h = h / real(pc%layers, dp)
@@ -203,5 +217,136 @@ contains
             end do
         end subroutine thermal_resultants
     end subroutine plate_values
+
+    !> plate_values of a cell whose section is not a centred isotropic one (ELAS_COQUE,
+    !> laminates, EXCENTREMENT; model_plate_section):
+    !>  N = Dm e + Dmf k, M = Dmf e + Df k (less the thermal resultants);
+    !>  in-plane stresses Q_layer (e + z k - eps_th), z from the reference surface at the
+    !>  layer's INF, MOY, SUP (ELAS_COQUE: Dm / h through the thickness, as Code_Aster's
+    !>  dkqsie);
+    !>  transverse shear stresses: 6/h^3 (h^2/4 - zeta^2) T for one material (zeta from the
+    !>  middle of the section, T from Df), a laminate's from equilibrium with its bending
+    !>  stresses, s_xz(z) = -int_bottom^z zeta (Q(1,:) dk/dx + Q(3,:) dk/dy) dzeta;
+    !>  shear strains Dc^-1 T / 2.
+    subroutine section_values(pc, kind, xi, np, values)
+        type(plate_cell_t), intent(in) :: pc
+        integer(i4), intent(in) :: kind, np
+        real(dp), intent(in) :: xi(2, np)
+        real(dp), intent(out) :: values(:)
+        real(dp) :: e(3), k(3), t(2), det, z, a(3), v(2), n0(3), m0(3), dk(3, 2), g(2)
+        real(dp) :: dci(2, 2), q(3, 3), zb, zt, mid, ddet, acc(2), zs
+        integer(i4) :: p, lay, level, base, nv
+        nv = plate_value_count(kind, pc%layers)
+        associate (sec => pc%section)
+            ddet = sec%dc(1, 1) * sec%dc(2, 2) - sec%dc(1, 2) * sec%dc(2, 1)
+            dci = 0.0_dp
+            if (abs(ddet) > 0.0_dp) then
+                dci(1, :) = [sec%dc(2, 2), -sec%dc(1, 2)] / ddet
+                dci(2, :) = [-sec%dc(2, 1), sec%dc(1, 1)] / ddet
+            end if
+            mid = sec%offset
+            do p = 1, np
+                call plate_point_strains(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), &
+                    xi(:, p), e, k, det)
+                call plate_point_shear(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), sec%df, &
+                    xi(:, p), t, dk)
+                g = matmul(dci, t)
+                base = (p - 1) * nv
+                select case (kind)
+                case (PLATE_FORCES)
+                    call section_thermal(pc, p, n0, m0)
+                    values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, &
+                        matmul(sec%dm, e) + matmul(sec%dmf, k) - n0)
+                    values(base + 4:base + 6) = turn_plate_tensor(pc%c, pc%s, &
+                        matmul(sec%dmf, e) + matmul(sec%df, k) - m0)
+                    values(base + 7:base + 8) = turn_plate_vector(pc%c, pc%s, t)
+                case (PLATE_GENERAL)
+                    values(base + 1:base + 3) = turn_plate_tensor(pc%c, pc%s, &
+                        [e(1), e(2), e(3) / 2.0_dp])
+                    values(base + 4:base + 6) = turn_plate_tensor(pc%c, pc%s, &
+                        [k(1), k(2), k(3) / 2.0_dp])
+                    values(base + 7:base + 8) = turn_plate_vector(pc%c, pc%s, g / 2.0_dp)
+                case (PLATE_STRESS, PLATE_STRAIN)
+                    acc = 0.0_dp                 ! the shear flow from the bottom face
+                    do lay = 1, pc%layers
+                        call layer_of(pc, lay, zb, zt, q)
+                        do level = 1, 3              ! INF, MOY, SUP
+                            z = zb + real(level - 1, dp) * (zt - zb) / 2.0_dp
+                            a = e + z * k
+                            if (kind == PLATE_STRESS) then
+                                if (allocated(pc%eps_th)) a(1:2) = a(1:2) - &
+                                    pc%eps_th(3 * lay - 3 + level, p)
+                                a = matmul(q, a)
+                                zs = z - mid
+                                v = acc - shear_flow(q, dk, zb - mid, zs)
+                                if (.not. sec%laminate) v = 6.0_dp / pc%thickness**3 * &
+                                    (pc%thickness**2 / 4.0_dp - zs * zs) * t
+                            else
+                                a(3) = a(3) / 2.0_dp
+                                v = g / 2.0_dp
+                            end if
+                            a = turn_plate_tensor(pc%c, pc%s, a)
+                            v = turn_plate_vector(pc%c, pc%s, v)
+                            values(base + 1:base + 6) = [a(1), a(2), 0.0_dp, a(3), v(1), v(2)]
+                            base = base + 6
+                        end do
+                        acc = acc - shear_flow(q, dk, zb - mid, zt - mid)
+                    end do
+                end select
+            end do
+        end associate
+    end subroutine section_values
+
+    ! The bottom and top faces (from the reference surface) and the stiffness of layer lay:
+    ! a laminate's own, else even layers of the thickness around the middle (offset) with
+    ! Dm / h.
+    pure subroutine layer_of(pc, lay, zb, zt, q)
+        type(plate_cell_t), intent(in) :: pc
+        integer(i4), intent(in) :: lay
+        real(dp), intent(out) :: zb, zt, q(3, 3)
+        real(dp) :: h
+        if (allocated(pc%section%z) .and. allocated(pc%section%q)) then
+            zb = pc%section%z(lay)
+            zt = pc%section%z(lay + 1)
+            q = pc%section%q(:, :, lay)
+            return
+        end if
+        h = pc%thickness
+        zb = pc%section%offset - h / 2.0_dp + real(lay - 1, dp) * h / real(pc%layers, dp)
+        zt = zb + h / real(pc%layers, dp)
+        q = pc%section%dm / h
+    end subroutine layer_of
+
+    ! int_za^zb zeta (Q(1,:) dk(:,1) + Q(3,:) dk(:,2), Q(3,:) dk(:,1) + Q(2,:) dk(:,2)) dzeta
+    pure function shear_flow(q, dk, za, zb) result(f)
+        real(dp), intent(in) :: q(3, 3), dk(3, 2), za, zb
+        real(dp) :: f(2), w
+        w = (zb * zb - za * za) / 2.0_dp
+        f(1) = w * (dot_product(q(1, :), dk(:, 1)) + dot_product(q(3, :), dk(:, 2)))
+        f(2) = w * (dot_product(q(3, :), dk(:, 1)) + dot_product(q(2, :), dk(:, 2)))
+    end function shear_flow
+
+    ! The thermal resultants N0, M0 of a non-homogeneous section at point q (about the
+    ! reference surface; Simpson per layer with the layer's stiffness).
+    subroutine section_thermal(pc, q, n0, m0)
+        type(plate_cell_t), intent(in) :: pc
+        integer(i4), intent(in) :: q
+        real(dp), intent(out) :: n0(3), m0(3)
+        real(dp) :: zb, zt, qq(3, 3), zl, wl, unit(3)
+        integer(i4) :: l, j
+        n0 = 0.0_dp
+        m0 = 0.0_dp
+        if (.not. allocated(pc%eps_th)) return
+        do l = 1, pc%layers
+            call layer_of(pc, l, zb, zt, qq)
+            unit = matmul(qq, [1.0_dp, 1.0_dp, 0.0_dp])
+            do j = 1, 3
+                zl = zb + real(j - 1, dp) * (zt - zb) / 2.0_dp
+                wl = (zt - zb) * merge(4.0_dp, 1.0_dp, j == 2) / 6.0_dp
+                n0 = n0 + unit * wl * pc%eps_th(3 * l - 3 + j, q)
+                m0 = m0 + unit * wl * zl * pc%eps_th(3 * l - 3 + j, q)
+            end do
+        end do
+    end subroutine section_thermal
 
 end module plate_options

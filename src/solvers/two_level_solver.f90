@@ -33,6 +33,7 @@ module two_level_solver
     use status, only: status_t, set_error, STATUS_INTERNAL
     use strings, only: to_text
     use sparse_matrix, only: sym_matrix_t
+    use huge_pages, only: advise_huge_pages
     use direct_solver, only: direct_solver_t, factor_report_t, digits_lost, record_flag, &
         record_hold, effective_nprec, check_disabled, DIGITS_ALL_LOST, PIVOT_DIGITS_LOST, &
         PIVOT_ZERO
@@ -67,7 +68,7 @@ module two_level_solver
 
     public :: wrap_solver, set_modes, isolate_anchors, set_coarse, to_hat, from_hat, &
         hat_body_part, hat_anchors_from, residual_norm, hat_product, coarse_digits_max, &
-        modes_kept_apart
+        modes_kept_apart, add_block_product
 
 contains
 
@@ -86,13 +87,13 @@ contains
     end subroutine wrap_solver
 
     !> The rigid modes and their anchors (the analysis finds them: analysis rigid_bodies).
-    !>  r       : in, (n, m) the modes on the free equations; r(anchors(k), :) must be the
-    !>            k-th unit vector (checked)
+    !>  r       : inout, (n, m) the modes on the free equations, moved into the solver;
+    !>            r(anchors(k), :) must be the k-th unit vector (checked)
     !>  anchors : in, (m) distinct free equations
     !>  st      : out, STATUS_INTERNAL if r is not the identity on the anchors
     subroutine set_modes(self, r, anchors, st)
         class(two_level_solver_t), intent(inout) :: self
-        real(dp), intent(in) :: r(:, :)
+        real(dp), allocatable, intent(inout) :: r(:, :)
         integer(i4), intent(in) :: anchors(:)
         type(status_t), intent(out) :: st
         integer(i4) :: k, j
@@ -108,9 +109,12 @@ contains
                 end if
             end do
         end do
-        self%r = r
+        call move_alloc(r, self%r)
         self%anchors = anchors
-        allocate (self%y(self%n, self%m), self%g(self%n, self%m), source=0.0_dp)
+        ! n x m each (19 MB at 128 x 512): huge pages, filled when first used
+        allocate (self%y(self%n, self%m), self%g(self%n, self%m))
+        call advise_huge_pages(self%y)
+        call advise_huge_pages(self%g)
         allocate (self%c(self%m, self%m), self%l(self%m, self%m), source=0.0_dp)
         allocate (self%held(self%m), source=.false.)
         allocate (self%coarse_pivots(self%m), self%coarse_digits(self%m), source=0.0_dp)
@@ -389,6 +393,26 @@ contains
             end if
         end select
     end subroutine from_hat
+
+    !> ksr(eqs, :) <- ksr(eqs, :) + k R(eqs, :): a small block (a spring's matrix, signed)
+    !> added to K_s, in K_s R (equations 0: eliminated, skipped). Nothing without modes.
+    subroutine add_block_product(self, eqs, k, ksr)
+        class(direct_solver_t), intent(in) :: self
+        integer(i4), intent(in) :: eqs(:)
+        real(dp), intent(in) :: k(:, :)
+        real(dp), intent(inout) :: ksr(:, :)
+        integer(i4) :: i, j
+        select type (self)
+        type is (two_level_solver_t)
+            if (self%m == 0) return
+            do i = 1, size(eqs)
+                if (eqs(i) == 0) cycle
+                do j = 1, size(eqs)
+                    if (eqs(j) > 0) ksr(eqs(i), :) = ksr(eqs(i), :) + k(i, j) * self%r(eqs(j), :)
+                end do
+            end do
+        end select
+    end subroutine add_block_product
 
     !> Whether a solver keeps rigid modes apart (a two-level solver with modes).
     pure logical function modes_kept_apart(self)

@@ -158,6 +158,14 @@ def cases():
                                               "--newton", "elastique", "--resi", "1e-10",
                                               "--iter-max", "100", "--tolerance", "2e-7"],
                       why="same, ELASTIQUE (modified Newton); answer - 1e-9"))
+    # --- MECA_STATIQUE (bilateral springs): the same solver path --------------------------
+    c.append(case("a_bilateral_K1e-4", ["--model", "a", "--bilateral", "--K", "0.0001",
+                                        "--tolerance", "1e-9"],
+                  why="MECA_STATIQUE, bed 1e8 times softer than SSNL130's (3e5 m of rigid "
+                      "motion): was 'singular' (15 digits), now 1.5 digits lost"))
+    c.append(b_nprec9("b_bilateral_E2e15_K1e-4", ["--bilateral", "--K", "0.0001", "--E",
+                                                  "2e15", "--tolerance", "1e-9"],
+                      why="MECA_STATIQUE, E/K = 2e19: the rigid modes kept apart"))
     # --- NPREC judges what is factored: the slab held at its anchors ---------------------
     c.append(b_nprec9("b_nprec1", ["--nprec", "1"], 1, ILL.format(nprec=1),
                       why="the factored matrix (the slab held at its anchors) loses 1.4 "

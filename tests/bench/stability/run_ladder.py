@@ -8,7 +8,8 @@ full Newton, RESI_GLOB_RELA 1e-6, the generator's NPREC unless --nprec, TEST_RES
 exact discrete rigid-plate answer at 1e-6), runs parasol once (single-threaded BLAS and
 OpenMP, as by hand) and reports: exit status, the largest relative error of the TEST_RESU
 ANALYTIQUE lines (recomputed from the printed values), the digits the factorizations lost
-and the digits the answer holds (the .mess), factorizations and Newton iterations, wall and
+(the .mess's largest loss, or for a run that stopped the pivot its message names) and the
+digits the answer holds (the .mess), factorizations and Newton iterations, wall and
 CPU seconds and peak RSS (os.wait4), and the first error line. --before PARASOL2 runs a
 second executable on the same decks (the "before" columns). --mpi N runs METHODE MUMPS
 under `mpirun --oversubscribe -np N` with the executable of --mpi-parasol (an MPI MUMPS
@@ -40,6 +41,7 @@ import rigid_bed_exact  # noqa: E402
 GENERATOR = os.path.join(ROOT, "tools", "make_ssnl130_case.py")
 ANALYTIQUE = re.compile(r"TEST_RESU .* (OK|NOOK) ANALYTIQUE \S+ (\S+) (\S+) ")
 LARGEST = re.compile(r"largest loss ([0-9.]+) digits")
+PIVOT_LOST = re.compile(r"pivot lost ([0-9.]+) digits")
 HOLDS = re.compile(r"the answer holds ([0-9.]+) significant digits")
 TOTAL = re.compile(r"STAT_NON_LINE: (\d+) iteration\(s\), (\d+) factorization\(s\)")
 ERROR = re.compile(r"error: (.*)$", re.M)
@@ -78,7 +80,7 @@ def measure(cmd, work, stem, timeout):
     for ok, ref, val in ANALYTIQUE.findall(mess):
         ref, val = float(ref), float(val)
         errors.append(abs(val - ref) / abs(ref) if ref != 0.0 else abs(val))
-    largest = LARGEST.findall(mess)
+    largest = LARGEST.findall(mess) or PIVOT_LOST.findall(mess)
     holds = HOLDS.findall(mess)
     total = TOTAL.findall(mess)
     err_line = ERROR.findall(open(log, encoding="utf-8", errors="replace").read())
@@ -102,9 +104,12 @@ def run_ccx(ccx, mesh, K, E, work, timeout):
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     log = os.path.join(work, job + ".log")
     try:
-        rc, wall, cpu, rss = parasol_case.run_measured([ccx, "-i", job], work, env, log)
+        rc, wall, cpu, rss = parasol_case.run_measured(
+            ["timeout", str(int(timeout)), ccx, "-i", job], work, env, log)
     except subprocess.TimeoutExpired:
-        return dict(ccx="timeout")
+        return dict(ccx_error="timeout")
+    if rc == 124:
+        return dict(ccx_rc=rc, ccx_error=f"timeout ({int(timeout)} s)")
     try:
         dz = make_ccx_bed.parse_corner_dz(os.path.join(work, job + ".dat"), nx, ny)
     except (OSError, ValueError):
@@ -139,6 +144,8 @@ def main(argv=None):
     ap.add_argument("--ccx", default=None,
                     help="the CalculiX executable: also run it on model A's cases (None: no)")
     ap.add_argument("--timeout", type=float, default=3600.0, help="seconds per run")
+    ap.add_argument("--ccx-timeout", type=float, default=600.0,
+                    help="seconds per CalculiX run (ccx iterates long on the softest beds)")
     ap.add_argument("--csv", default=None, help="also write the rows to this CSV (None: no)")
     ap.add_argument("--check", action="store_true",
                     help="exit 1 unless every run exits 0 with every error within --tolerance "
@@ -150,6 +157,8 @@ def main(argv=None):
     runs = [(m, False) for m in o.methods.split(",")]
     if o.mpi:
         runs.append(("MUMPS", True))
+        if os.geteuid() == 0:     # Open MPI refuses root unless told (a container's root)
+            os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     with tempfile.TemporaryDirectory() as work:
         for mesh in o.meshes.split(","):
             for K in o.K.split(","):
@@ -171,7 +180,7 @@ def main(argv=None):
                                          base + ".comm"], work, stem, o.timeout)
                             row.update({"before_" + k: v for k, v in b.items()})
                         if o.ccx and o.model == "a" and methode == runs[0][0] and not mpi:
-                            row.update(run_ccx(o.ccx, mesh, K, E, work, o.timeout))
+                            row.update(run_ccx(o.ccx, mesh, K, E, work, o.ccx_timeout))
                         rows.append(row)
                         print(" | ".join(str(v) for v in row.values()), file=sys.stderr,
                               flush=True)
