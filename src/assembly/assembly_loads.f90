@@ -54,7 +54,10 @@ contains
                     do comp = 1, N_COMPONENTS
                         if (.not. item%values(comp)%given) cycle
                         eq = s%dofs%equation(comp, item%nodes(i))
-                        if (eq <= 0 .and. item%blocage) cycle
+                        ! BLOCAGE and AFFE_CHAR_CINE skip a component the node lacks
+                        ! (Code_Aster caddli; charci fills a field of every component, which
+                        ! the numbering then reads where it has the equation)
+                        if (eq <= 0 .and. (item%blocage .or. load%kinematic)) cycle
                         if (eq <= 0) then
                             call set_error(st, STATUS_MODEL_ERROR, 'DDL_IMPO: node ' // &
                                 node_name(s%mesh, item%nodes(i)) // ' has no component ' // &

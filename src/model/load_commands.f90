@@ -13,7 +13,7 @@ module load_commands
     use mesh_types, only: mesh_t, find_node_group, find_node, nodes_of_group, nodes_of_cells, &
         node_name
     use model_dof_numbering, only: COMPONENT_NAMES
-    use mesh_command_support, only: relocate_error, group_cells, all_cells
+    use mesh_command_support, only: relocate_error, group_cells, all_cells, warn_at
     use model_types, only: is_plate, is_plane_edge, is_plate_edge, is_plane_solid
     use model_concept, only: model_concept_t
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
@@ -124,6 +124,7 @@ contains
                 call node_item(cmd%occurrence('MECA_IMPO', i), p, LOAD_DDL_IMPO, &
                     ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
                 if (st%failed()) return
+                call unheld_components(ctx, cmd%occurrence('MECA_IMPO', i), p)
             end do
         class default
             call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
@@ -132,6 +133,30 @@ contains
         call ctx%write_mess('    ' // cm%summary())
         call move_alloc(cm, result)
     end subroutine build_char_cine
+
+    ! AFFE_CHAR_CINE/MECA_IMPO: a component the occurrence's nodes lack is dropped where a
+    ! node lacks it, as Code_Aster's charci (a field of every component, read by the
+    ! numbering where it has the equation); one no node has imposes nothing: a located
+    ! warning says so.
+    subroutine unheld_components(ctx, occ, mc)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), allocatable :: nodes(:)
+        character(len=:), allocatable :: label
+        type(status_t) :: st
+        integer(i4) :: comp
+        call select_nodes(occ, mc, nodes, label, st)
+        if (st%failed()) return
+        do comp = 1, size(COMPONENT_NAMES, kind=i4)
+            if (.not. occ%has(trim(COMPONENT_NAMES(comp)))) cycle
+            if (any(mc%dofs%equation(comp, nodes) /= 0)) cycle
+            call warn_at(ctx, occ, trim(COMPONENT_NAMES(comp)), 'none of the ' // &
+                to_text(size(nodes, kind=i4)) // ' node(s) has ' // &
+                trim(COMPONENT_NAMES(comp)) // ' in the model: it imposes nothing ' // &
+                '(Code_Aster drops it)')
+        end do
+    end subroutine unheld_components
 
     subroutine build_char_meca(ctx, cmd, functions, result, st)
         type(run_context_t), intent(inout) :: ctx
@@ -272,7 +297,7 @@ contains
             do k = 1, size(keys)
                 call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
                 if (st%failed()) return
-                if (occ%has(trim(keys(k)))) then
+                if (occ%has(trim(keys(k))) .and. .not. loads%kinematic) then
                     call check_component(occ, mc, nodes, trim(keys(k)), k, st)
                     if (st%failed()) return
                 end if

@@ -6,7 +6,7 @@ module model_cara_elem
     use strings, only: to_text, to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, &
-        is_discrete_rotational, ELEMENT_NAMES, is_plate_edge, ELEM_NONE
+        is_discrete_rotational, ELEMENT_NAMES, is_plate_edge, ELEM_NONE, is_plane_solid
     implicit none
     private
 
@@ -55,10 +55,19 @@ module model_cara_elem
         !> (n_cells) a discrete mass (M_*) that is not zero: its values are not kept (they
         !> play no part in statics), PESANTEUR on it is refused
         logical, allocatable :: has_mass(:)
+        !> MASSIF: the material frame of a plane solid cell, as given (MASSIF_* kind, 0
+        !> none): ANGL_REP or ANGL_EULER (3 angles, degrees; in 2D the first turns about Z),
+        !> or ANGL_AXE (2 angles) and ORIG_AXE (3 coordinates). Only an orthotropic
+        !> material turns with it; an isotropic one is the same in every frame.
+        integer(i4), allocatable :: massif_kind(:)
+        real(dp), allocatable :: massif_values(:, :)   !< (5, n_cells)
     end type cara_elem_t
 
+    integer(i4), parameter, public :: MASSIF_NONE = 0, MASSIF_ANGL_REP = 1, &
+        MASSIF_ANGL_EULER = 2, MASSIF_AXE = 3
+
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
-        discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
+        assign_massif, discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
         cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix
 
 contains
@@ -70,6 +79,8 @@ contains
         integer(i4) :: n
         n = mesh%n_cells
         allocate (cara%has_coque(n), source=.false.)
+        allocate (cara%massif_kind(n), source=MASSIF_NONE)
+        allocate (cara%massif_values(5, n), source=0.0_dp)
         allocate (cara%thickness(n), cara%coef_rigi_drz(n), source=0.0_dp)
         allocate (cara%coque_direction(3, n), source=0.0_dp)
         cara%coque_direction(1, :) = 1.0_dp
@@ -483,5 +494,30 @@ contains
             cara%orientation_values(1:n, cells(i)) = values
         end do
     end subroutine assign_orientation
+
+    !> MASSIF: the material frame on the plane solid cells among `cells` (the others, edges
+    !> or plates, passed over; their number returned).
+    !>  kind   : in, MASSIF_ANGL_REP, MASSIF_ANGL_EULER or MASSIF_AXE
+    !>  values : in, up to 5 values (angles, then ORIG_AXE for MASSIF_AXE)
+    subroutine assign_massif(cara, model, cells, kind, values, n_skipped)
+        type(cara_elem_t), intent(inout) :: cara
+        type(model_t), intent(in) :: model
+        integer(i4), intent(in) :: cells(:), kind
+        real(dp), intent(in) :: values(:)
+        integer(i4), intent(out) :: n_skipped
+        integer(i4) :: i, c, n
+        n = min(5, size(values))
+        n_skipped = 0
+        do i = 1, size(cells)
+            c = cells(i)
+            if (.not. is_plane_solid(model%element(c))) then
+                n_skipped = n_skipped + 1
+                cycle
+            end if
+            cara%massif_kind(c) = kind
+            cara%massif_values(:, c) = 0.0_dp
+            cara%massif_values(1:n, c) = values(1:n)
+        end do
+    end subroutine assign_massif
 
 end module model_cara_elem
