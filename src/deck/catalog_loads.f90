@@ -113,6 +113,15 @@ contains
         call c%key('DIRECTION', 'R', min=3, max=3, req=.true., vmin=-MAX_MODULUS, &
                    vmax=MAX_MODULUS)
         call c%end_fact()
+        ! FORCE_COQUE_FO: a pressure on plates given by a function of space (Code_Aster has
+        ! it in AFFE_CHAR_MECA only), as AFFE_CHAR_MECA_F's FORCE_COQUE PRES
+        call c%fact('FORCE_COQUE_FO', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
+        call c%key('PRES', 'FUNC')
+        call c%end_fact()
+        call c%rule(RULE_EXCLUS, 'FORCE_COQUE FORCE_COQUE_FO')
     end subroutine describe_load_command
 
     !> FORCE_COQUE (Code_Aster U4.44.01): PRES, or FX..MZ in the global frame, or F1, F2,

@@ -43,6 +43,8 @@ module load_commands
     !> The value keywords of FORCE_COQUE and PRES_REP by slot (model_loads; '_': none).
     character(len=4), parameter :: FORCE_COQUE_KEYS(7) = ['FX  ', 'FY  ', 'FZ  ', 'MX  ', &
         'MY  ', 'MZ  ', 'PRES']
+    character(len=4), parameter :: FORCE_COQUE_FO_KEYS(7) = ['_   ', '_   ', '_   ', &
+        '_   ', '_   ', '_   ', 'PRES']
     character(len=4), parameter :: FORCE_COQUE_LOCAL_KEYS(5) = ['F1  ', 'F2  ', 'F3  ', &
         'MF1 ', 'MF2 ']
     character(len=7), parameter :: PRES_REP_KEYS(8) = ['_      ', '_      ', '_      ', &
@@ -188,6 +190,12 @@ contains
             do i = 1, cmd%count('FORCE_COQUE')
                 call cell_item(cmd%occurrence('FORCE_COQUE', i), p, LOAD_FORCE_COQUE, &
                     FORCE_COQUE_KEYS, functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            ! FORCE_COQUE_FO (AFFE_CHAR_MECA): its PRES is a function of space
+            do i = 1, cmd%count('FORCE_COQUE_FO')
+                call cell_item(cmd%occurrence('FORCE_COQUE_FO', i), p, LOAD_FORCE_COQUE, &
+                    FORCE_COQUE_FO_KEYS, .true., cm%loads, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('PRES_REP')
