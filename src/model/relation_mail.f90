@@ -59,6 +59,7 @@ module relation_mail
     !> Newton iterations and tolerance of the inverse isoparametric map (reference units).
     integer, parameter :: NEWTON_MAX = 20
     real(dp), parameter :: NEWTON_TOL = 1.0e-12_dp
+    real(dp), parameter :: FAR_REFERENCE = 1.0e3_dp   !< |xi| past this: Newton given up
 
 contains
 
@@ -429,6 +430,9 @@ contains
         ! The cell and the node in the plane of the triangle (e1 along its first edge).
         e1 = xc(:, SPLIT(2, best_t)) - xc(:, SPLIT(1, best_t))
         e2 = cross(e1, xc(:, SPLIT(3, best_t)) - xc(:, SPLIT(1, best_t)))
+        call cell_shape(ctype, xi1(1), xi1(2), n, dn)
+        ! A flat triangle (a distorted cell's half) has no plane: the triangle's point alone.
+        if (.not. (norm2(e1) > 0.0_dp .and. norm2(e2) > 0.0_dp)) return
         e1 = e1 / norm2(e1)
         e2 = cross(e2 / norm2(e2), e1)
         do k = 1, nn
@@ -438,7 +442,6 @@ contains
         call inverse_map(ctype, nn, q, p, xi1, xi2, converged)
         outside = huge(1.0_dp)
         if (converged) outside = outside_measure(ctype, xi2)
-        call cell_shape(ctype, xi1(1), xi1(2), n, dn)
         d1 = norm2(matmul(q(:, 1:nn), n(1:nn)) - p)
         if (outside <= OUTSIDE_FRACTION) then
             call cell_shape(ctype, xi2(1), xi2(2), n, dn)
@@ -519,6 +522,8 @@ contains
             if (.not. abs(det) > 0.0_dp) return
             step = [j(2, 2) * r(1) - j(1, 2) * r(2), j(1, 1) * r(2) - j(2, 1) * r(1)] / det
             xi = xi + step
+            ! far outside the reference element: not this cell's point (and no overflow)
+            if (.not. norm2(xi) < FAR_REFERENCE) return
             if (norm2(step) < NEWTON_TOL) then
                 converged = .true.
                 return
