@@ -32,6 +32,8 @@ module command_registration
     use recu_fonction_command, only: run_recu_fonction
     use calc_fonction_command, only: run_calc_fonction
     use post_releve_command, only: run_post_releve_t
+    use macr_lign_coupe_command, only: run_macr_lign_coupe
+    use post_elem_command, only: run_post_elem
     use test_fonction_command, only: run_test_fonction
     use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
@@ -89,6 +91,8 @@ contains
         call ctx%register('RECU_FONCTION', run_recu_fonction)
         call ctx%register('CALC_FONCTION', run_calc_fonction)
         call ctx%register('POST_RELEVE_T', run_post_releve_t)
+        call ctx%register('MACR_LIGN_COUPE', run_macr_lign_coupe)
+        call ctx%register('POST_ELEM', run_post_elem)
         call ctx%register('TEST_FONCTION', run_test_fonction)
         call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)

@@ -282,6 +282,26 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
                        "case.mail": meshes[("a", "aster")]}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # CREA_TABLE on ELGA fields: the points' coordinates on plane cells and plate layers.
+    seeds.append(Seed("crea_table_elga",
+                      {"case.comm": os.path.join(tables, "crea_table_elga.comm"),
+                       "case.20": os.path.join(tables, "elga_plane.mail"),
+                       "case.21": os.path.join(tables, "elga_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    # MACR_LIGN_COUPE: cut lines across the four cell types, a patch test's SIGM_ELNO.
+    seeds.append(Seed("macr_lign_coupe",
+                      {"case.comm": os.path.join(tables, "macr_lign_coupe.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail")},
+                      ["--unit", "20=case.20"],
+                      dict(comm_targets, **{"case.20": "mail"}), 0.6))
+    # POST_ELEM MASS_INER: a plane rectangle of four cell types, a tilted plate.
+    seeds.append(Seed("post_elem",
+                      {"case.comm": os.path.join(tables, "post_elem.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail"),
+                       "case.21": os.path.join(tables, "post_elem_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
     # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
     seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
                       [], comm_targets, 0.8))
