@@ -122,6 +122,11 @@ contains
         call c%key('PRES', 'FUNC')
         call c%end_fact()
         call c%rule(RULE_EXCLUS, 'FORCE_COQUE FORCE_COQUE_FO')
+        ! CHAMNO_IMPO: the values of a nodal displacement field imposed (chamno_impo)
+        call c%fact('CHAMNO_IMPO')
+        call c%key('CHAM_NO', 'cham_no_sdaster', req=.true.)
+        call c%key('COEF_IMPO', 'R', req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS)
+        call c%end_fact()
     end subroutine describe_load_command
 
     !> FORCE_COQUE (Code_Aster U4.44.01): PRES, or FX..MZ in the global frame, or F1, F2,

@@ -25,6 +25,7 @@ module load_commands
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
         liaison_group_item
     use relation_mail, only: liaison_mail_item
+    use chamno_impo, only: chamno_impo_item
     implicit none
     private
 
@@ -182,6 +183,10 @@ contains
             end do
             call relation_items(ctx, cmd, p, functions, cm%loads, st)
             if (st%failed()) return
+            if (cmd%count('CHAMNO_IMPO') > 0) then
+                call chamno_impo_item(cmd%occurrence('CHAMNO_IMPO', 1), p, cm%loads, st)
+                if (st%failed()) return
+            end if
             do i = 1, cmd%count('FORCE_NODALE')
                 call node_item(cmd%occurrence('FORCE_NODALE', i), p, LOAD_FORCE_NODALE, &
                     ['FX', 'FY', 'FZ', 'MX', 'MY', 'MZ'], functions, cm%loads, st)
