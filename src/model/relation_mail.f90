@@ -60,6 +60,19 @@ module relation_mail
     integer, parameter :: NEWTON_MAX = 20
     real(dp), parameter :: NEWTON_TOL = 1.0e-12_dp
     real(dp), parameter :: FAR_REFERENCE = 1.0e3_dp   !< |xi| past this: Newton given up
+    !> Buckets per direction at most (the grid of the master cells).
+    integer, parameter :: MAX_BUCKETS = 1000
+
+    !> The master cells in a uniform grid of buckets over their bounding box (a cell in
+    !> every bucket its box meets), so that a slave node looks at the cells near it first:
+    !> O(slaves + cells) for a tie of matching sizes instead of O(slaves x cells).
+    type :: cell_grid_t
+        real(dp) :: lo(3) = 0.0_dp, h(3) = 1.0_dp
+        integer :: nb(3) = 1
+        integer(i4), allocatable :: ptr(:), items(:)   !< CSR: bucket -> indices in cells
+        integer(i4), allocatable :: seen(:)            !< per cell: the last query that saw it
+        integer(i4) :: query = 0
+    end type cell_grid_t
 
 contains
 
@@ -82,6 +95,7 @@ contains
         integer(i4) :: k, s, c, nn, index, dim
         integer(i4), allocatable :: nodes(:), cs(:)   ! the relation being built (tie, add)
         real(dp), allocatable :: coefs(:)
+        type(cell_grid_t) :: grid
         call occ%get_text('TYPE_RACCORD', kind, st)
         if (st%failed()) return
         if (kind == 'COQUE_MASSIF' .or. kind == 'MASSIF_COQUE') then
@@ -200,10 +214,11 @@ contains
 
         call load_add_item(loads, LOAD_RELATION, [integer(i4) ::], index, label)
         call locate(occ, loads, index)
+        call grid_build(mc%mesh, masters, grid)
         do s = 1, size(slaves)
             x = mc%mesh%coords(:, slaves(s))
             if (rotate .or. occ%has('TRAN')) x = centre + matmul(rot, x - centre) + tran
-            call project(mc%mesh, masters, x, dmax, dala, c, n, d, st)
+            call project(mc%mesh, masters, grid, x, dmax, dala, c, n, d, st)
             if (st%failed()) then
                 call relocate_error(occ, 'GROUP_MA_MAIT', st)
                 return
@@ -382,9 +397,10 @@ contains
     !>  c    : out, the cell (0: none within dmax)
     !>  n    : out, its shape functions at the point
     !>  d    : out, the distance; negative when beyond the default alarm distance
-    subroutine project(mesh, cells, x, dmax, dala, c, n, d, st)
+    subroutine project(mesh, cells, grid, x, dmax, dala, c, n, d, st)
         type(mesh_t), intent(in) :: mesh
         integer(i4), intent(in) :: cells(:)
+        type(cell_grid_t), intent(inout) :: grid
         real(dp), intent(in) :: x(3), dmax, dala
         integer(i4), intent(out) :: c
         real(dp), intent(out) :: n(MAX_CELL_NODES), d
@@ -393,8 +409,9 @@ contains
         real(dp) :: xc(3, MAX_CELL_NODES), bary(3), best_bary(3), dist, area, best_area
         real(dp) :: ref(2, MAX_CELL_NODES), xi1(2), xi2(2), e1(3), e2(3), p(2)
         real(dp) :: q(2, MAX_CELL_NODES), dn(2, MAX_CELL_NODES), d1, d2, outside
-        integer :: k, t, nt, nn, ctype, best_t, p0
+        integer :: k, nn, ctype, best_t, p0, r, i1, i2, i3, b, j, ib(3), blo(3), bhi(3)
         logical :: converged
+        real(dp) :: bound
 
         c = 0
         d = dmax
@@ -402,23 +419,37 @@ contains
         best_area = 0.0_dp
         best_bary = 0.0_dp
         n = 0.0_dp
-        do k = 1, size(cells)
-            ctype = mesh%cell_type(cells(k))
-            p0 = mesh%cell_ptr(cells(k))
-            nn = CELL_TYPE_NODES(ctype)
-            xc(:, 1:nn) = mesh%coords(:, mesh%cell_nodes(p0:p0 + nn - 1))
-            nt = merge(1, 2, ctype == CELL_TRIA3 .or. ctype == CELL_TRIA6)
-            do t = 1, nt
-                call nearest_on_triangle(x, xc(:, SPLIT(1, t)), xc(:, SPLIT(2, t)), &
-                    xc(:, SPLIT(3, t)), bary, dist, area)
-                if (dist < d) then
-                    d = dist
-                    c = cells(k)
-                    best_t = t
-                    best_bary = bary
-                    best_area = area
-                end if
+        ! Rings of buckets around the node's, nearest first, until no unseen cell can be
+        ! nearer than the best found (a cell outside the rings searched is at least `bound`
+        ! away: its box lies outside theirs).
+        grid%query = grid%query + 1
+        ! (clamped as reals first: a node far from the master cells stays a finite index)
+        ib = int(min(max((x - grid%lo) / grid%h, 0.0_dp), real(grid%nb - 1, dp)))
+        do r = 0, maxval(grid%nb)
+            blo = max(ib - r, 0)
+            bhi = min(ib + r, grid%nb - 1)
+            do i3 = blo(3), bhi(3)
+                do i2 = blo(2), bhi(2)
+                    do i1 = blo(1), bhi(1)
+                        if (max(abs(i1 - ib(1)), abs(i2 - ib(2)), abs(i3 - ib(3))) /= r) cycle
+                        b = 1 + i1 + grid%nb(1) * (i2 + grid%nb(2) * i3)
+                        do j = grid%ptr(b), grid%ptr(b + 1) - 1
+                            k = grid%items(j)
+                            if (grid%seen(k) == grid%query) cycle
+                            grid%seen(k) = grid%query
+                            call try_cell(k)
+                        end do
+                    end do
+                end do
             end do
+            bound = huge(1.0_dp)
+            do j = 1, 3
+                if (blo(j) > 0) bound = min(bound, x(j) - (grid%lo(j) + blo(j) * grid%h(j)))
+                if (bhi(j) < grid%nb(j) - 1) bound = min(bound, &
+                    grid%lo(j) + (bhi(j) + 1) * grid%h(j) - x(j))
+            end do
+            if (all(blo == 0) .and. all(bhi == grid%nb - 1)) exit
+            if (c /= 0 .and. d < bound) exit
         end do
         if (c == 0) return
         ctype = mesh%cell_type(c)
@@ -451,7 +482,85 @@ contains
         if (dala < 0.0_dp .and. best_area > 0.0_dp) then
             if (d / sqrt(best_area) > FAR_FRACTION) d = -d
         end if
+    contains
+        ! The nearest point of master cell cells(kk)'s triangles, kept when nearer.
+        subroutine try_cell(kk)
+            integer, intent(in) :: kk
+            integer :: tt, mm, pp, ct
+            ct = mesh%cell_type(cells(kk))
+            pp = mesh%cell_ptr(cells(kk))
+            mm = CELL_TYPE_NODES(ct)
+            xc(:, 1:mm) = mesh%coords(:, mesh%cell_nodes(pp:pp + mm - 1))
+            do tt = 1, merge(1, 2, ct == CELL_TRIA3 .or. ct == CELL_TRIA6)
+                call nearest_on_triangle(x, xc(:, SPLIT(1, tt)), xc(:, SPLIT(2, tt)), &
+                    xc(:, SPLIT(3, tt)), bary, dist, area)
+                if (dist < d) then
+                    d = dist
+                    c = cells(kk)
+                    best_t = tt
+                    best_bary = bary
+                    best_area = area
+                end if
+            end do
+        end subroutine try_cell
     end subroutine project
+
+    ! The buckets of the master cells (cell_grid_t): about one cell per bucket, a flat
+    ! direction (a plane mesh's z) one bucket thick.
+    subroutine grid_build(mesh, cells, grid)
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: cells(:)
+        type(cell_grid_t), intent(out) :: grid
+        real(dp) :: lo(3), hi(3), clo(3, size(cells)), chi(3, size(cells)), ext(3), side
+        integer(i4), allocatable :: fill(:)
+        integer :: k, p0, nn, a, i1, i2, i3, b, dims, glo(3), ghi(3)
+        do k = 1, size(cells)
+            p0 = mesh%cell_ptr(cells(k))
+            nn = CELL_TYPE_NODES(mesh%cell_type(cells(k)))
+            clo(:, k) = minval(mesh%coords(:, mesh%cell_nodes(p0:p0 + nn - 1)), dim=2)
+            chi(:, k) = maxval(mesh%coords(:, mesh%cell_nodes(p0:p0 + nn - 1)), dim=2)
+        end do
+        lo = minval(clo, dim=2)
+        hi = maxval(chi, dim=2)
+        ext = hi - lo
+        dims = count(ext > 0.0_dp)
+        side = 1.0_dp
+        if (dims > 0) side = (product(ext, mask=ext > 0.0_dp) / size(cells)) ** (1.0_dp / dims)
+        do a = 1, 3
+            grid%nb(a) = 1
+            if (ext(a) > 0.0_dp .and. side > 0.0_dp) &
+                grid%nb(a) = int(min(max(ext(a) / side, 1.0_dp), real(MAX_BUCKETS, dp)))
+            grid%h(a) = 1.0_dp                   ! a flat direction: one bucket, any size
+            if (ext(a) > 0.0_dp) grid%h(a) = ext(a) / grid%nb(a)
+        end do
+        grid%lo = lo
+        allocate (fill(product(grid%nb)), source=0_i4)
+        do a = 1, 2
+            if (a == 2) then
+                allocate (grid%ptr(size(fill) + 1))
+                grid%ptr(1) = 1
+                do b = 1, size(fill)
+                    grid%ptr(b + 1) = grid%ptr(b) + fill(b)
+                end do
+                allocate (grid%items(grid%ptr(size(fill) + 1) - 1))
+                fill = 0
+            end if
+            do k = 1, size(cells)
+                glo = int(min(max((clo(:, k) - lo) / grid%h, 0.0_dp), real(grid%nb - 1, dp)))
+                ghi = int(min(max((chi(:, k) - lo) / grid%h, 0.0_dp), real(grid%nb - 1, dp)))
+                do i3 = glo(3), ghi(3)
+                    do i2 = glo(2), ghi(2)
+                        do i1 = glo(1), ghi(1)
+                            b = 1 + i1 + grid%nb(1) * (i2 + grid%nb(2) * i3)
+                            fill(b) = fill(b) + 1
+                            if (a == 2) grid%items(grid%ptr(b) + fill(b) - 1) = int(k, i4)
+                        end do
+                    end do
+                end do
+            end do
+        end do
+        allocate (grid%seen(size(cells)), source=0_i4)
+    end subroutine grid_build
 
     ! The point of triangle abc nearest to x: its barycentric coordinates, the distance,
     ! and the triangle's area.
