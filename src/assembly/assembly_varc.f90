@@ -15,7 +15,7 @@
 module assembly_varc
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
-    use strings, only: to_text, real_e13
+    use strings, only: to_text
     use mesh_types, only: mesh_t, cell_label, CELL_TYPE_NODES, MAX_CELL_NODES, CELL_TRIA3, &
         CELL_QUAD4
     use mesh_cell_shapes, only: cell_shape
@@ -34,10 +34,6 @@ module assembly_varc
     use model_plate_section, only: plate_section_t, plate_section
     implicit none
     private
-
-    !> The largest thermal strain computed: with E up to MAX_MODULUS (1e100) and lengths up
-    !> to MAX_LENGTH the stresses and forces of a larger one could overflow.
-    real(dp), parameter :: MAX_THERMAL_STRAIN = 1.0e100_dp
 
     public :: add_varc_forces, plane_thermal_strains, plate_thermal_strains, has_thermal_load
 
@@ -137,8 +133,6 @@ contains
         allocate (eps(4, rule%n))
         call plane_thermal_strains(s%mesh, s%model, s%materials, c, t, rule, eps, has, st)
         if (st%failed() .or. .not. has) return
-        call check_strains(s, c, eps, st)
-        if (st%failed()) return
         m = material_of_cell(s%materials, c)
         associate (e => s%materials%materials(m)%elas)
             call plane_law_isotropic(e%e, e%nu, is_plane_strain(s%model%element(c)), law, st)
@@ -232,8 +226,6 @@ contains
         call plate_thermal_strains(s%mesh, s%materials, s%cara, c, t, rule%xi(:, 1:rule%n), &
             eps, has, st)
         if (st%failed() .or. .not. has) return
-        call check_strains(s, c, eps, st)
-        if (st%failed()) return
         call plate_layer_points(s%cara%thickness(c), layers, z, w)
         m = material_of_cell(s%materials, c)
         call plate_section(s%materials%materials(m), s%cara, c, sec, st)
@@ -259,21 +251,6 @@ contains
         if (st%failed()) call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // &
             st%message)
     end subroutine plate_cell_forces
-
-    ! A thermal strain beyond MAX_THERMAL_STRAIN (a temperature of 1e308 from a field, say)
-    ! would overflow the stresses and forces it makes (E up to MAX_MODULUS): refused,
-    ! naming the cell, instead of a floating-point trap.
-    subroutine check_strains(s, c, eps, st)
-        type(structure_t), intent(in) :: s
-        integer(i4), intent(in) :: c
-        real(dp), intent(in) :: eps(:, :)
-        type(status_t), intent(out) :: st
-        if (all(abs(eps) <= MAX_THERMAL_STRAIN)) return
-        call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': its thermal ' // &
-            'strain reaches ' // real_e13(maxval(abs(eps))) // ' (ALPHA times the ' // &
-            'temperature less TEMP_DEF_ALPHA): beyond what parasol computes (' // &
-            real_e13(MAX_THERMAL_STRAIN) // '); check the temperature field')
-    end subroutine check_strains
 
     ! The material m and temperature of cell c at instant t; has = .false. (and nothing to
     ! do) when the cell has no material, no ALPHA or no temperature.
