@@ -13,7 +13,8 @@ IMPR_RESU files, a deck checked with --check), one of its files, and one to four
 replaced by 0, +-1e308, 1e309, NaN, 2**63, huge and negative counts; keywords and names
 swapped; expressions that overflow; Gmsh header counts that lie; sections duplicated; nodes
 made coincident or lifted out of their plane; MED files edited at the byte level and, through
-h5py, at the content level: values, NBR counts, datasets removed or resized). Each case runs
+h5py, at the content level: values, NBR counts, datasets removed or resized; the mesh
+commands DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE on a test plate). Each case runs
 in its own folder with a time limit and a 4 GB address-space limit and is classified:
 
   clean      exit 0 or 2 (TEST_RESU NOOK) with nothing on stderr but located warnings, or
@@ -327,6 +328,28 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
+    # The mesh commands (DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE) on the test plate: every
+    # option of each, their groups used again by later commands.
+    mesh_commands = os.path.join(SOURCE, "tests", "mesh_commands")
+    for name in ("groups_plate", "modify_plate", "create_plate", "deform_plate"):
+        seeds.append(Seed(name, {"case.comm": os.path.join(mesh_commands, name + ".comm"),
+                                 "case.mail": os.path.join(mesh_commands, "plate4.mail")}, [],
+                          dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # GIBI meshes (LIRE_MAILLAGE FORMAT='GIBI', PRE_GIBI): the file mutated as text.
+    seeds.append(Seed("gibi_strip", {"case.comm": os.path.join(mesh_commands, "gibi_strip.comm"),
+                                     "case.mgib": os.path.join(mesh_commands, "strip.mgib")},
+                      ["--unit", "19=case.mgib"], dict(comm_targets, **{"case.mgib": "gibi"}),
+                      0.7))
+    # Gmsh's 1.0 format ($NOD, $ELM): the file mutated as text.
+    seeds.append(Seed("gmsh1_strip", {"case.comm": os.path.join(mesh_commands, "gmsh1_strip.comm"),
+                                      "case.msh": os.path.join(mesh_commands, "strip1.msh")},
+                      ["--unit", "19=case.msh"], dict(comm_targets, **{"case.msh": "gmsh1"}),
+                      0.5))
+    # I-DEAS universal files (LIRE_MAILLAGE FORMAT='IDEAS'): the file mutated as text.
+    seeds.append(Seed("ideas_strip", {"case.comm": os.path.join(mesh_commands, "ideas_strip.comm"),
+                                      "case.unv": os.path.join(mesh_commands, "strip.unv")},
+                      ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "ideas"}),
+                      0.7))
     if aster_med:
         read_deck = os.path.join(seeds_dir, "read_med.comm")
         with open(read_deck, "w", encoding="utf-8") as f:
