@@ -322,6 +322,16 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "case.21": os.path.join(tables, "post_elem_plate.mail")},
                       ["--unit", "20=case.20", "--unit", "21=case.21"],
                       dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    seeds.append(Seed("post_elem_energy",
+                      {"case.comm": os.path.join(tables, "post_elem_energy.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail"),
+                       "case.21": os.path.join(tables, "post_elem_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    seeds.append(Seed("post_elem_minmax",
+                      {"case.comm": os.path.join(tables, "post_elem_minmax.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail")},
+                      ["--unit", "20=case.20"], dict(comm_targets, **{"case.20": "mail"}), 0.6))
     # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
     seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
                       [], comm_targets, 0.8))
