@@ -297,6 +297,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                             "session_commands.comm")},
                       [], comm_targets, 0.5))
+    # User macros: MACRO, SIMP, FACT, rules and UserMacro, calls validated then run.
+    seeds.append(Seed("user_macro", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                               "user_macro.comm")},
+                      [], comm_targets, 0.5))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
                                     "case.mail": os.path.join(verif, "list_inst_cutting.mail")},
