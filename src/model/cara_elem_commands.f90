@@ -1,5 +1,5 @@
 !> Command handler of element characteristics: AFFE_CARA_ELEM (doc/deck-language.md):
-!> COQUE, DISCRET, DISCRET_2D, ORIENTATION, MASSIF, then RIGI_PARASOL (which overrides the
+!> COQUE, DISCRET, DISCRET_2D, ORIENTATION, then RIGI_PARASOL (which overrides the
 !> discrete values of its springs).
 module cara_elem_commands
     use kinds, only: dp, i4
@@ -8,13 +8,13 @@ module cara_elem_commands
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t, concept_ref_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, cells_of_group, cell_label
+    use mesh_types, only: mesh_t, cells_of_group
     use mesh_command_support, only: relocate_error, read_groups, group_cells
     use model_concept, only: model_concept_t
-    use model_types, only: is_plate, is_plane_solid, ELEM_DKQ
+    use model_types, only: is_plate
     use model_cara_elem, only: cara_elem_init, assign_coque, assign_discrete, &
         assign_orientation, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N, assign_massif, &
-        MASSIF_ANGLE, MASSIF_AXIS
+        MASSIF_ANGL_REP, MASSIF_ANGL_EULER, MASSIF_AXE
     use model_rigi_parasol, only: rigi_parasol_table_t, compute_rigi_parasol, &
         apply_rigi_parasol, rigi_parasol_lines, cell_centre_distances, raft_from_groups, &
         parasol_centre
@@ -28,7 +28,8 @@ module cara_elem_commands
 
 contains
 
-    !> AFFE_CARA_ELEM(MODELE, COQUE, DISCRET, DISCRET_2D, ORIENTATION, RIGI_PARASOL, INFO).
+    !> AFFE_CARA_ELEM(MODELE, COQUE, DISCRET, DISCRET_2D, ORIENTATION, MASSIF, RIGI_PARASOL,
+    !> INFO).
     !> INFO=2 writes the RIGI_PARASOL table to the .mess:
     !> `RIGI_PARASOL <cell> <node> <weight> <k1> <k2> [<k3>]`, then the sum of the weights.
     !>  result : out, a cara_elem_concept_t
@@ -76,7 +77,7 @@ contains
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('MASSIF')
-                call massif_occurrence(ctx, cmd%occurrence('MASSIF', i), p, cc, verify, st)
+                call massif_occurrence(ctx, cmd%occurrence('MASSIF', i), p, cc, st)
                 if (st%failed()) return
             end do
             cc%n_parasol = cmd%count('RIGI_PARASOL')
@@ -155,17 +156,6 @@ contains
                 skipped = skipped + count(.not. is_plate(mc%model%element(cells)))
                 cells = pack(cells, is_plate(mc%model%element(cells)))
             end if
-            ! a negative COEF_RIGI_DRZ makes Code_Aster's DKQ another element, with
-            ! drilling rotations tied to the membrane (dkqrig's 'dri' branch): not built,
-            ! and refused rather than read as a negative fictitious stiffness
-            if (drz < 0.0_dp .and. any(mc%model%element(cells) == ELEM_DKQ)) then
-                call occ%error_at('COEF_RIGI_DRZ', 'a negative value selects Code_Aster''s ' &
-                    // 'DKQ with drilling rotations (the membrane enriched by DRZ, dkqrig), ' &
-                    // 'which parasol does not build; group ' // names(g)%s // ' has DKQ ' // &
-                    'cells: give a positive coefficient (the fictitious DRZ stiffness)', st, &
-                    code=STATUS_NOT_IMPLEMENTED)
-                return
-            end if
             call assign_coque(cc%cara, mc%model, mc%mesh, cells, &
                               epais, st, coef_rigi_drz=drz, group=names(g)%s, &
                               direction=direction, layers=layers, offset=offset)
@@ -222,78 +212,49 @@ contains
             // 'passed over (VERIF=''MAILLE'' makes that an error)')
     end subroutine discrete_occurrence
 
-    ! MASSIF: the material frame of the plane cells of each group (model_cara_elem
-    ! MASSIF_*; Code_Aster's aceama): ANGL_REP (in 2D its first angle, about Z), ANGL_EULER
-    ! (the in-plane angle of the L axis of its rotation, as eulnau then rcangm give it) or
-    ! ORIG_AXE (the axis along Z through that point; ANGL_AXE is for 3D solids, refused in
-    ! 2D as Code_Aster's MODELISA10_3). Cells without a plane element are passed over unless
-    ! VERIF (a note in the .mess says how many).
-    subroutine massif_occurrence(ctx, occ, mc, cc, verify, st)
+    ! MASSIF: the material frame (ANGL_REP, ANGL_EULER, or ANGL_AXE with ORIG_AXE) of the
+    ! plane solid cells of GROUP_MA or of the model (TOUT), kept as data (model_cara_elem);
+    ! other cells passed over, said in the .mess. CHAM_ORIE (a field of frames) is not built.
+    subroutine massif_occurrence(ctx, occ, mc, cc, st)
         type(run_context_t), intent(inout) :: ctx
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
         type(cara_elem_concept_t), intent(inout) :: cc
-        logical, intent(in) :: verify
         type(status_t), intent(out) :: st
-        type(string_t), allocatable :: names(:)
-        integer(i4), allocatable :: groups(:), cells(:)
-        real(dp), allocatable :: values(:)
-        real(dp) :: alpha, origin(2), e(3), xl(2)
-        integer(i4) :: g, frame, skipped, k
-        real(dp), parameter :: DEGREE = acos(-1.0_dp) / 180.0_dp
-        alpha = 0.0_dp
-        origin = 0.0_dp
-        frame = MASSIF_ANGLE
-        if (occ%has('ANGL_REP')) then
-            call occ%get_reals('ANGL_REP', values, st)
-            if (st%failed()) return
-            alpha = values(1) * DEGREE
-        else if (occ%has('ANGL_EULER')) then
-            call occ%get_reals('ANGL_EULER', values, st)
-            if (st%failed()) return
-            e = 0.0_dp
-            e(1:size(values)) = values * DEGREE
-            ! the first column of the Euler rotation (psi, theta, phi) (Code_Aster eulnau)
-            xl = [cos(e(3)) * cos(e(1)) - sin(e(3)) * cos(e(2)) * sin(e(1)), &
-                  cos(e(3)) * sin(e(1)) + sin(e(3)) * cos(e(2)) * cos(e(1))]
-            if (.not. norm2(xl) > 1.0e-12_dp) then
-                call occ%error_at('ANGL_EULER', 'these angles turn the L axis along Z: ' // &
-                    'a plane element needs L in its plane', st, code=STATUS_MODEL_ERROR)
-                return
-            end if
-            alpha = atan2(xl(2), xl(1))
-        else
-            if (occ%has('ANGL_AXE')) then
-                call occ%error_at('ANGL_AXE', 'the axis of a plane model is Z: ANGL_AXE ' // &
-                    'is for 3D solids (Code_Aster MODELISA10_3); give ORIG_AXE alone', st, &
-                    code=STATUS_MODEL_ERROR)
-                return
-            end if
-            call occ%get_reals('ORIG_AXE', values, st)
-            if (st%failed()) return
-            origin = values(1:2)
-            frame = MASSIF_AXIS
+        integer(i4), allocatable :: cells(:)
+        real(dp), allocatable :: angles(:), origin(:)
+        integer(i4) :: kind, skipped, k
+        if (occ%has('CHAM_ORIE')) then
+            call occ%error_at('CHAM_ORIE', 'a field of material frames is not built in ' // &
+                'parasol: give ANGL_REP, ANGL_EULER or ORIG_AXE / ANGL_AXE', st, &
+                code=STATUS_NOT_IMPLEMENTED)
+            return
         end if
-        call read_groups(occ, 'GROUP_MA', mc%mesh, names, groups, st)
+        if (occ%has('TOUT')) then
+            cells = [(k, k = 1, mc%mesh%n_cells)]
+        else
+            call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
+            if (st%failed()) return
+        end if
+        if (occ%has('ANGL_REP')) then
+            kind = MASSIF_ANGL_REP
+            call occ%get_reals('ANGL_REP', angles, st)
+        else if (occ%has('ANGL_EULER')) then
+            kind = MASSIF_ANGL_EULER
+            call occ%get_reals('ANGL_EULER', angles, st)
+        else
+            kind = MASSIF_AXE
+            allocate (angles(2), source=0.0_dp)
+            if (occ%has('ANGL_AXE')) call occ%get_reals('ANGL_AXE', angles, st)
+            if (st%ok()) call occ%get_reals('ORIG_AXE', origin, st)
+            if (st%ok()) angles = [angles, origin]
+        end if
         if (st%failed()) return
-        skipped = 0
-        do g = 1, size(groups)
-            cells = cells_of_group(mc%mesh, groups(g))
-            do k = 1, size(cells)
-                if (verify .and. .not. is_plane_solid(mc%model%element(cells(k)))) then
-                    call occ%error_at('GROUP_MA', 'MASSIF on ' // cell_label(mc%mesh, &
-                        cells(k), names(g)%s) // ', which carries no plane (D_PLAN, ' // &
-                        'C_PLAN) element', st, code=STATUS_MODEL_ERROR)
-                    return
-                end if
-            end do
-            skipped = skipped + count(.not. is_plane_solid(mc%model%element(cells)))
-            cells = pack(cells, is_plane_solid(mc%model%element(cells)))
-            call assign_massif(cc%cara, cells, frame, alpha, origin)
-        end do
-        if (skipped > 0) call ctx%write_mess('    MASSIF: ' // to_text(skipped) // &
-            ' cell(s) of its groups carry no plane element: passed over (VERIF=''MAILLE'' ' &
-            // 'makes that an error)')
+        if (kind /= MASSIF_AXE) angles = [angles, spread(0.0_dp, 1, 3 - size(angles))]
+        call assign_massif(cc%cara, mc%model, cells, kind, angles, skipped)
+        if (skipped > 0 .and. .not. occ%has('TOUT')) call ctx%write_mess('    MASSIF: ' // &
+            to_text(skipped) // ' cell(s) of its groups carry no plane solid element: ' // &
+            'passed over')
     end subroutine massif_occurrence
 
     ! ORIENTATION: CARA and VALE (count checked at VALE) on the discrete cells of each group.

@@ -6,7 +6,7 @@ module model_cara_elem
     use strings, only: to_text, to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, &
-        is_discrete_rotational, ELEMENT_NAMES
+        is_discrete_rotational, ELEMENT_NAMES, is_plate_edge, ELEM_NONE, is_plane_solid
     implicit none
     private
 
@@ -52,23 +52,23 @@ module model_cara_elem
         integer(i4), allocatable :: discrete_matrix(:)
         type(discrete_matrix_t), allocatable :: matrices(:)   !< one per DISCRET occurrence
         integer(i4) :: n_matrices = 0
-        !> MASSIF: the material frame of plane cells (MASSIF_*): an angle, or the radial
-        !> direction from an axis through massif_origin (ORIG_AXE)
-        integer(i4), allocatable :: massif_frame(:)
-        real(dp), allocatable :: massif_alpha(:)       !< (n_cells) L from global X, radians
-        real(dp), allocatable :: massif_origin(:, :)   !< (2, n_cells) ORIG_AXE
+        !> (n_cells) a discrete mass (M_*) that is not zero: its values are not kept (they
+        !> play no part in statics), PESANTEUR on it is refused
+        logical, allocatable :: has_mass(:)
+        !> MASSIF: the material frame of a plane solid cell, as given (MASSIF_* kind, 0
+        !> none): ANGL_REP or ANGL_EULER (3 angles, degrees; in 2D the first turns about Z),
+        !> or ANGL_AXE (2 angles) and ORIG_AXE (3 coordinates). Only an orthotropic
+        !> material turns with it; an isotropic one is the same in every frame.
+        integer(i4), allocatable :: massif_kind(:)
+        real(dp), allocatable :: massif_values(:, :)   !< (5, n_cells)
     end type cara_elem_t
 
-    !> The material frame of a plane cell (AFFE_CARA_ELEM MASSIF, Code_Aster's aceama and
-    !> rcangm in 2D): none (the global frame), L turned by an angle about Z (ANGL_REP, or
-    !> the L axis of ANGL_EULER), or L along the radius from an axis along Z through a point
-    !> (ORIG_AXE) to the cell's centre (the mean of its nodes).
-    integer(i4), parameter, public :: MASSIF_NONE = 0, MASSIF_ANGLE = 1, MASSIF_AXIS = 2
+    integer(i4), parameter, public :: MASSIF_NONE = 0, MASSIF_ANGL_REP = 1, &
+        MASSIF_ANGL_EULER = 2, MASSIF_AXE = 3
 
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
-        discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
-        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix, &
-        assign_massif, material_axis_angle
+        material_axis_angle, assign_massif, discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
+        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix
 
 contains
 
@@ -79,6 +79,8 @@ contains
         integer(i4) :: n
         n = mesh%n_cells
         allocate (cara%has_coque(n), source=.false.)
+        allocate (cara%massif_kind(n), source=MASSIF_NONE)
+        allocate (cara%massif_values(5, n), source=0.0_dp)
         allocate (cara%thickness(n), cara%coef_rigi_drz(n), source=0.0_dp)
         allocate (cara%coque_direction(3, n), source=0.0_dp)
         cara%coque_direction(1, :) = 1.0_dp
@@ -91,77 +93,23 @@ contains
         allocate (cara%orientation_values(3, n), source=0.0_dp)
         allocate (cara%discrete_matrix(n), source=0_i4)
         allocate (cara%matrices(4))
-        allocate (cara%massif_frame(n), source=MASSIF_NONE)
-        allocate (cara%massif_alpha(n), source=0.0_dp)
-        allocate (cara%massif_origin(2, n), source=0.0_dp)
+        allocate (cara%has_mass(n), source=.false.)
     end subroutine cara_elem_init
 
-    !> MASSIF: the material frame of plane cells (module constants MASSIF_*).
-    !>  frame  : in, MASSIF_ANGLE or MASSIF_AXIS
-    !>  alpha  : in, the angle of L from global X (radians; MASSIF_ANGLE)
-    !>  origin : in, a point of the axis (MASSIF_AXIS)
-    subroutine assign_massif(cara, cells, frame, alpha, origin)
-        type(cara_elem_t), intent(inout) :: cara
-        integer(i4), intent(in) :: cells(:), frame
-        real(dp), intent(in) :: alpha, origin(2)
-        integer(i4) :: i
-        cara%massif_frame(cells) = frame
-        cara%massif_alpha(cells) = alpha
-        do i = 1, size(cells)
-            cara%massif_origin(:, cells(i)) = origin
-        end do
-    end subroutine assign_massif
-
-    !> The angle (radians) of the material axis L of plane cell c from global X: 0 without
-    !> MASSIF, its ANGL_REP / ANGL_EULER angle, or the direction from the ORIG_AXE axis to
-    !> the mean of the cell's nodes (Code_Aster's getElemOrientation, rcangm).
-    !>  st : out, STATUS_MODEL_ERROR when the cell's centre is on the ORIG_AXE axis (no
-    !>       radial direction); the caller names the cell
-    subroutine material_axis_angle(mesh, cara, c, alpha, st)
-        type(mesh_t), intent(in) :: mesh
-        type(cara_elem_t), intent(in) :: cara
-        integer(i4), intent(in) :: c
-        real(dp), intent(out) :: alpha
-        type(status_t), intent(out) :: st
-        real(dp) :: centre(2), r(2), size2
-        integer(i4) :: p
-        alpha = 0.0_dp
-        select case (cara%massif_frame(c))
-        case (MASSIF_ANGLE)
-            alpha = cara%massif_alpha(c)
-        case (MASSIF_AXIS)
-            centre = 0.0_dp
-            size2 = 0.0_dp
-            do p = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
-                centre = centre + mesh%coords(1:2, mesh%cell_nodes(p))
-            end do
-            centre = centre / real(mesh%cell_ptr(c + 1) - mesh%cell_ptr(c), dp)
-            do p = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
-                size2 = max(size2, sum((mesh%coords(1:2, mesh%cell_nodes(p)) - centre)**2))
-            end do
-            r = centre - cara%massif_origin(:, c)
-            if (.not. sum(r**2) > 1.0e-24_dp * size2) then
-                call set_error(st, STATUS_MODEL_ERROR, 'MASSIF ORIG_AXE: the axis goes ' // &
-                    'through the centre of the cell, which then has no radial direction')
-                return
-            end if
-            alpha = atan2(r(2), r(1))
-        end select
-    end subroutine material_axis_angle
-
     !> COQUE: thickness (and drilling coefficient) of plate cells.
-    !>  cells : in, cells of the occurrence; each must carry a DKT/DKQ element
+    !>  cells_in : in, cells of the occurrence; each must carry a DKT/DKQ element (or a
+    !>             plate edge, or none: then passed over)
     !>  epais : in, thickness > 0;  coef_rigi_drz : in, optional (default 1e-5)
     !>  st    : out, STATUS_MODEL_ERROR for EPAIS <= 0 or a cell that is not a plate
     !>  direction : in, optional, ANGL_REP / VECTEUR as a direction (default global X)
     !>  layers : in, optional, COQUE_NCOU (default 1)
     !>  offset : in, optional, EXCENTREMENT (default 0)
-    subroutine assign_coque(cara, model, mesh, cells, epais, st, coef_rigi_drz, group, &
+    subroutine assign_coque(cara, model, mesh, cells_in, epais, st, coef_rigi_drz, group, &
                             direction, layers, offset)
         type(cara_elem_t), intent(inout) :: cara
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
-        integer(i4), intent(in) :: cells(:)
+        integer(i4), intent(in) :: cells_in(:)
         real(dp), intent(in) :: epais
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: coef_rigi_drz
@@ -170,12 +118,17 @@ contains
         integer(i4), intent(in), optional :: layers
         real(dp), intent(in), optional :: offset
         integer(i4) :: i
+        integer(i4), allocatable :: cells(:)
         if (epais <= 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, 'EPAIS must be > 0, got ' // to_text(epais))
             return
         end if
+        ! a cell without an element is passed over (Code_Aster's map covers the mesh); the
+        ! plates' edges (SEG2 of a DKT model) take it too, as Code_Aster's MEBODKT
+        cells = pack(cells_in, model%element(cells_in) /= ELEM_NONE)
         do i = 1, size(cells)
-            if (.not. is_plate(model%element(cells(i)))) then
+            if (.not. (is_plate(model%element(cells(i))) .or. &
+                       is_plate_edge(model%element(cells(i))))) then
                 call set_error(st, STATUS_MODEL_ERROR, 'COQUE on ' // &
                     cell_label(mesh, cells(i), group) // ', which is ' // &
                     trim(ELEMENT_NAMES(model%element(cells(i)))) // ' (COQUE needs DKT)')
@@ -473,6 +426,7 @@ contains
                 call set_error(st, STATUS_MODEL_ERROR, reason)
                 return
             end if
+            if (what == 'M') cara%has_mass(c) = any(abs(values) > 0.0_dp)
             if (what /= 'K') cycle
             if (.not. diagonal .and. matrix == 0) call store_matrix(k, matrix)
             cara%discrete_cara(c) = code
@@ -540,5 +494,80 @@ contains
             cara%orientation_values(1:n, cells(i)) = values
         end do
     end subroutine assign_orientation
+
+    !> MASSIF: the material frame on the plane solid cells among `cells` (the others, edges
+    !> or plates, passed over; their number returned).
+    !>  kind   : in, MASSIF_ANGL_REP, MASSIF_ANGL_EULER or MASSIF_AXE
+    !>  values : in, up to 5 values (angles, then ORIG_AXE for MASSIF_AXE)
+    subroutine assign_massif(cara, model, cells, kind, values, n_skipped)
+        type(cara_elem_t), intent(inout) :: cara
+        type(model_t), intent(in) :: model
+        integer(i4), intent(in) :: cells(:), kind
+        real(dp), intent(in) :: values(:)
+        integer(i4), intent(out) :: n_skipped
+        integer(i4) :: i, c, n
+        n = min(5, size(values))
+        n_skipped = 0
+        do i = 1, size(cells)
+            c = cells(i)
+            if (.not. is_plane_solid(model%element(c))) then
+                n_skipped = n_skipped + 1
+                cycle
+            end if
+            cara%massif_kind(c) = kind
+            cara%massif_values(:, c) = 0.0_dp
+            cara%massif_values(1:n, c) = values(1:n)
+        end do
+    end subroutine assign_massif
+
+    !> The angle (radians) of the material axis L of plane cell c from global X (Code_Aster's
+    !> rcangm in 2D): 0 without MASSIF; ANGL_REP's first angle (about Z); the in-plane angle
+    !> of the L axis of ANGL_EULER's rotation (the first column of the Euler matrix, eulnau);
+    !> ORIG_AXE: the direction from the axis (along Z through ORIG_AXE) to the mean of the
+    !> cell's nodes (getElemOrientation).
+    !>  st : out, STATUS_MODEL_ERROR when that centre is on the axis, or the Euler angles
+    !>       turn L along Z (no in-plane direction); the caller names the cell
+    subroutine material_axis_angle(mesh, cara, c, alpha, st)
+        type(mesh_t), intent(in) :: mesh
+        type(cara_elem_t), intent(in) :: cara
+        integer(i4), intent(in) :: c
+        real(dp), intent(out) :: alpha
+        type(status_t), intent(out) :: st
+        real(dp), parameter :: DEGREE = acos(-1.0_dp) / 180.0_dp
+        real(dp) :: centre(2), r(2), size2, e(3), xl(2)
+        integer(i4) :: p
+        alpha = 0.0_dp
+        select case (cara%massif_kind(c))
+        case (MASSIF_ANGL_REP)
+            alpha = cara%massif_values(1, c) * DEGREE
+        case (MASSIF_ANGL_EULER)
+            e = cara%massif_values(1:3, c) * DEGREE
+            xl = [cos(e(3)) * cos(e(1)) - sin(e(3)) * cos(e(2)) * sin(e(1)), &
+                  cos(e(3)) * sin(e(1)) + sin(e(3)) * cos(e(2)) * cos(e(1))]
+            if (.not. norm2(xl) > 1.0e-12_dp) then
+                call set_error(st, STATUS_MODEL_ERROR, 'MASSIF ANGL_EULER turns the L ' // &
+                    'axis along Z: a plane element needs L in its plane')
+                return
+            end if
+            alpha = atan2(xl(2), xl(1))
+        case (MASSIF_AXE)
+            centre = 0.0_dp
+            size2 = 0.0_dp
+            do p = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
+                centre = centre + mesh%coords(1:2, mesh%cell_nodes(p))
+            end do
+            centre = centre / real(mesh%cell_ptr(c + 1) - mesh%cell_ptr(c), dp)
+            do p = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
+                size2 = max(size2, sum((mesh%coords(1:2, mesh%cell_nodes(p)) - centre)**2))
+            end do
+            r = centre - cara%massif_values(3:4, c)
+            if (.not. sum(r**2) > 1.0e-24_dp * size2) then
+                call set_error(st, STATUS_MODEL_ERROR, 'MASSIF ORIG_AXE: the axis goes ' // &
+                    'through the centre of the cell, which then has no radial direction')
+                return
+            end if
+            alpha = atan2(r(2), r(1))
+        end select
+    end subroutine material_axis_angle
 
 end module model_cara_elem
