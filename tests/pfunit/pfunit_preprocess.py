@@ -100,6 +100,11 @@ def translate(path):
             raise PfError(f"{path}:{lineno}: @{name} is not in the supported pFUnit subset "
                           f"({', '.join('@' + a for a in ASSERTS)}, @test, @before, @after)")
         args, tail = split_call(rest.strip(), path, lineno)
+        if tail.strip():
+            # pFUnit 4's parser takes an assertion's line whole: anything after the closing
+            # parenthesis (even a comment) leaves the line untranslated and breaks the build.
+            raise PfError(f"{path}:{lineno}: nothing may follow @{name}(...) on its line, "
+                          "not even a comment (real pFUnit rejects it); put the comment above")
         call = (f"{indent}call {ASSERTS[name]}({args}, file='{base}', line={lineno})"
                 f"; if (funit_failed()) return{tail}")
         out.append(call)
