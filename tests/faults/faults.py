@@ -17,7 +17,9 @@ usage:
       Each output of KIND in turn is a symbolic link to /dev/full (ENOSPC on the first
       write): exit 1, one line "cannot write PATH: No space left on device", the link left
       in place (not replaced by a file). KIND: listings (.mess, .resu), vtk (.pvd, .vtu),
-      gmsh (.msh), med (.rmed), unit (a Gmsh file bound with --unit N=PATH).
+      gmsh (.msh), med (.rmed), unit (a Gmsh file bound with --unit N=PATH), table
+      (IMPR_TABLE to a unit), fonction (IMPR_FONCTION TABLEAU and AGRAF, its two units),
+      fields (IMPR_RESU of Gauss-point fields and a CHAM_GD in MED, the CHAM_GD in VTK).
   faults.py sweep PARASOL SOURCE_DIR WORKDIR KIND FIRST_KB LAST_KB STEP_KB
       The output folder is a tmpfs of FIRST_KB, FIRST_KB + STEP_KB, ... LAST_KB kilobytes
       (mount(8): needs root; skipped with exit 77 and a message otherwise), so that each
@@ -74,6 +76,23 @@ def make_deck(source_dir, workdir, kind):
         "unit": "IMPR_RESU(FORMAT='GMSH', UNITE=81, RESU=_F(RESULTAT=RESU))\n",
         "all": "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU))\n"
                "IMPR_RESU(FORMAT='VTK', RESU=_F(RESULTAT=RESU))\n",
+        # IMPR_TABLE to an unbound unit (its file STEM.38 in the output folder)
+        "table": "TAB_F = CREA_TABLE(LISTE=(_F(PARA='INST', LISTE_R=(0.0, 1.0)),\n"
+                 "                          _F(PARA='DX', LISTE_R=(1.5, -2.5))))\n"
+                 "IMPR_TABLE(TABLE=TAB_F, UNITE=38)\n",
+        # IMPR_FONCTION: TABLEAU to unit 29, AGRAF to units 25 and 26 (values, directives)
+        "fonction": "FON_F = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 2.0))\n"
+                    "IMPR_FONCTION(FORMAT='TABLEAU', UNITE=29, COURBE=_F(FONCTION=FON_F))\n"
+                    "IMPR_FONCTION(FORMAT='AGRAF', UNITE=25, UNITE_DIGR=26,\n"
+                    "              COURBE=_F(FONCTION=FON_F))\n",
+        # IMPR_RESU of fields: element fields at Gauss points in MED (unit 82), a CHAM_GD
+        # in MED (83) and in VTK
+        "fields": "TEMP_F = CREA_CHAMP(OPERATION='AFFE', TYPE_CHAM='NOEU_TEMP_R', MAILLAGE=MAIL,\n"
+                  "                    AFFE=_F(TOUT='OUI', NOM_CMP='TEMP', VALE=20.0))\n"
+                  "IMPR_RESU(FORMAT='MED', UNITE=82, RESU=_F(RESULTAT=RESU,\n"
+                  "          NOM_CHAM=('SIEF_ELGA', 'VARI_ELGA')))\n"
+                  "IMPR_RESU(FORMAT='MED', UNITE=83, RESU=_F(CHAM_GD=TEMP_F))\n"
+                  "IMPR_RESU(FORMAT='VTK', RESU=_F(CHAM_GD=TEMP_F))\n",
     }[kind]
     at = text.rindex("FIN()")
     deck = os.path.join(workdir, STEM + ".comm")
@@ -89,6 +108,9 @@ def command(parasol, source_dir, deck, outdir, kind):
         cmd += ["--unit", "80=" + os.path.join(outdir, STEM + ".rmed")]
     if kind == "unit":
         cmd += ["--unit", "81=" + os.path.join(outdir, "bound.msh")]
+    if kind == "fields":
+        cmd += ["--unit", "82=" + os.path.join(outdir, "elga.rmed"),
+                "--unit", "83=" + os.path.join(outdir, "cham_gd.rmed")]
     return cmd + [deck]
 
 
@@ -210,7 +232,8 @@ def outputs_of(kind, ref):
     if kind == "listings":
         return [STEM + ".mess", STEM + ".resu"]
     suffix = {"vtk": (".pvd", ".vtu"), "gmsh": (".msh",), "med": (".rmed",),
-              "unit": ("bound.msh",)}[kind]
+              "unit": ("bound.msh",), "table": (".38",), "fonction": (".25", ".26", ".29"),
+              "fields": (".rmed", ".pvd", ".vtu")}[kind]
     names = [n for n in ref if n.endswith(suffix)]
     if kind == "vtk":     # the .pvd, the first and the last .vtu
         vtu = [n for n in names if n.endswith(".vtu")]
