@@ -39,6 +39,10 @@ usage:
       before the run, its .mess kept: a result in a folder that does not exist (the .mess
       then goes to the output folder), a result line naming a folder, the .mess and the
       .resu on one file (the .mess holds the error there).
+  faults.py folders PARASOL SOURCE_DIR WORKDIR
+      DEFI_FICHIER into REPE_OUT/ (made in the output folder, as Code_Aster's runner makes
+      it in its working directory) is written there; MED and IMPR_TABLE into a folder that
+      does not exist stop with one line naming the file and the folder.
   faults.py interrupt PARASOL SOURCE_DIR WORKDIR
       SIGINT and SIGTERM during a run (a 32 x 128 plate caught in its first step): the
       listings of an earlier run stay byte for byte, no `.partial` is left, and the process
@@ -196,7 +200,7 @@ def check_run(label, rc, out, err, outdir, ref, older, forced=None, writing=True
             fail("%s: a summary of success on stdout: %s" % (label, out))
     for n in names:
         path = os.path.join(outdir, n)
-        if os.path.islink(path) and n == forced:
+        if (os.path.islink(path) and n == forced) or os.path.isdir(path):
             continue
         data = read(path)
         if n.endswith(".mess"):
@@ -442,6 +446,51 @@ def export_lines(parasol, workdir):
     return 0
 
 
+def folders(parasol, source_dir, workdir):
+    """Files of a deck in folders: DEFI_FICHIER into REPE_OUT/ (which Code_Aster's runner
+    makes in every working directory) is written there; into a folder that does not exist,
+    MED and text outputs stop with one line naming the file and the missing folder."""
+    mesh = os.path.join(source_dir, "decks", "ssnl130a.mail")
+    shutil.rmtree(workdir, ignore_errors=True)
+    os.makedirs(workdir)
+    base = ("DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
+            "TA = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))\n")
+    cases = [
+        ("repe_out", "DEFI_FICHIER(UNITE=80, TYPE='BINARY', FICHIER='./REPE_OUT/m.med')\n"
+         "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))\n"
+         "DEFI_FICHIER(UNITE=38, FICHIER='REPE_OUT/t.txt')\n"
+         "IMPR_TABLE(TABLE=TA, UNITE=38)\n", 0, ["REPE_OUT/m.med", "REPE_OUT/t.txt"]),
+        ("med_nodir", "DEFI_FICHIER(UNITE=80, TYPE='BINARY', FICHIER='NODIR/m.med')\n"
+         "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))\n", 1,
+         "IMPR_RESU: cannot write %s/NODIR/m.med: No such file or directory (its folder "
+         "%s/NODIR does not exist)"),
+        ("table_nodir", "DEFI_FICHIER(UNITE=38, FICHIER='NODIR/t.txt')\n"
+         "IMPR_TABLE(TABLE=TA, UNITE=38)\n", 1,
+         "IMPR_TABLE/UNITE: cannot create %s/NODIR/t.txt: No such file or directory"),
+    ]
+    for name, body, rc_wanted, want in cases:
+        deck = os.path.join(workdir, name + ".comm")
+        with open(deck, "w") as f:
+            f.write(base + body + "FIN()\n")
+        out = os.path.join(workdir, name)
+        os.makedirs(out)
+        rc, so, se = run([parasol, "--quiet", "--outdir", out, "--unit", "20=" + mesh, deck])
+        check_run(name, rc, so, se, out, None, {}, writing=False)
+        if rc != rc_wanted:
+            fail("%s: exit %d, wanted %d: %s" % (name, rc, rc_wanted, se))
+        if rc == 0:
+            for f in want:
+                if not os.path.isfile(os.path.join(out, f)):
+                    fail("%s: %s was not written" % (name, f))
+            print("%s: exit 0, %s written" % (name, ", ".join(want)))
+        else:
+            text = want % ((out,) * want.count("%s"))
+            if text not in se:
+                fail("%s: stderr lacks %r: %r" % (name, text, se))
+            print("%s: %s" % (name, se.strip()))
+    return 0
+
+
 def main(argv):
     if len(argv) < 5:
         print(__doc__)
@@ -463,6 +512,8 @@ def main(argv):
               "tmpfs" if what == "sweep" else "ulimit")
     elif what == "export-lines":
         return export_lines(parasol, workdir)
+    elif what == "folders":
+        return folders(parasol, source_dir, workdir)
     elif what == "med-flip":
         return med_flip(parasol, workdir, argv[5])
     elif what == "interrupt":
