@@ -26,8 +26,8 @@ module atomic_file
     use kinds, only: i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR
     use strings, only: to_text
-    use system_error, only: last_errno, errno_text, process_id, path_kind, PATH_FOLDER, &
-        PATH_DEVICE
+    use system_error, only: last_errno, errno_text, process_id, path_kind, folder_of, &
+        PATH_FOLDER, PATH_DEVICE
     implicit none
     private
 
@@ -175,7 +175,7 @@ contains
         if (fd < 0) then
             code = last_errno()
             call set_error(st, STATUS_IO_ERROR, 'cannot create ' // path // ': ' // &
-                errno_text(code) // folder_hint(code))
+                errno_text(code) // folder_hint(code, path))
             return
         end if
         if (.not. direct) call track_temporary(file%temp_path)
@@ -255,15 +255,18 @@ contains
         call out%commit(st)
     end subroutine copy_file
 
-    !> What to check for the usual errno values of a file creation.
-    function folder_hint(code) result(text)
+    !> What to check for the usual errno values of a file creation: the folder named (it
+    !> may be a folder of the deck's own, DEFI_FICHIER(FICHIER='sub/x.txt'), not the output
+    !> folder; cli says "--outdir" for the listings).
+    function folder_hint(code, path) result(text)
         integer, intent(in) :: code
+        character(len=*), intent(in) :: path
         character(len=:), allocatable :: text
         select case (code)
         case (ENOENT, ENOTDIR)
-            text = ' (the output folder must exist: create it or give another --outdir)'
+            text = ' (its folder ' // folder_of(path) // ' does not exist)'
         case (EACCES, EROFS)
-            text = ' (the output folder must be writable)'
+            text = ' (its folder ' // folder_of(path) // ' must be writable)'
         case default
             text = ''
         end select

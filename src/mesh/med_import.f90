@@ -1,0 +1,171 @@
+!> MED files of version 2.x (Code_Aster's older meshes, MED 2.3.6) read through MED's own
+!> converter: the MED library's MEDimport (libmedimport, Debian package libmedimport0v5)
+!> writes a copy of the file in the current version, which the MED server then reads. The copy
+!> is private and temporary: a folder of its own made by the parent (make_import_folder), in
+!> which the server links the file (`in.med`) and has MEDimport write `out.med`; the parent
+!> removes both and the folder once the server has opened the copy, or died trying
+!> (remove_import_folder), so nothing is left whatever happens (doc/stability.md, "Faults").
+!>
+!> MEDimport runs in the MED server (med_server), never in parasol's process: it copies the
+!> file with a shell `cp` and calls exit() on some failures, and a damaged 2.x file is as
+!> likely to crash it as HDF5. Its progress report goes to standard output: the server's
+!> standard output is /dev/null from then on. The names handed to it are the folder's own
+!> (`in.med`, `out.med` in a folder of safe characters), since it quotes them into a shell
+!> command line: the user's file name never reaches the shell.
+module med_import
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_funptr, &
+        c_associated, c_f_procpointer
+    use status, only: status_t, set_error, STATUS_IO_ERROR
+    use strings, only: to_text
+    use system_error, only: last_errno, errno_text, canonical_path
+    use dynamic_library, only: dynamic_library_t, open_library, find_symbol
+    implicit none
+    private
+
+    public :: make_import_folder, remove_import_folder, convert_to_current, import_copy_path
+
+    !> The converter's library (its soname: Debian ships no development link for it).
+    character(len=*), parameter, public :: MEDIMPORT_LIBRARY = 'libmedimport.so.0'
+    !> convert_to_current's own failures (MEDimport's are its med_err, < 0 too).
+    integer(c_int), parameter, public :: IMPORT_NO_CONVERTER = -900201, &
+        IMPORT_LINK_FAILED = -900202
+
+    interface
+        function c_mkdtemp(template) result(p) bind(c, name='mkdtemp')
+            import :: c_char, c_ptr
+            character(kind=c_char), intent(inout) :: template(*)
+            type(c_ptr) :: p
+        end function c_mkdtemp
+        function c_symlink(target, linkpath) result(rc) bind(c, name='symlink')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: target(*), linkpath(*)
+            integer(c_int) :: rc
+        end function c_symlink
+        function c_unlink(pathname) result(rc) bind(c, name='unlink')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int) :: rc
+        end function c_unlink
+        function c_rmdir(pathname) result(rc) bind(c, name='rmdir')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int) :: rc
+        end function c_rmdir
+        function c_open(pathname, flags) result(fd) bind(c, name='open')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int), value :: flags
+            integer(c_int) :: fd
+        end function c_open
+        function c_dup2(old, new) result(fd) bind(c, name='dup2')
+            import :: c_int
+            integer(c_int), value :: old, new
+            integer(c_int) :: fd
+        end function c_dup2
+        function c_close(fd) result(rc) bind(c, name='close')
+            import :: c_int
+            integer(c_int), value :: fd
+            integer(c_int) :: rc
+        end function c_close
+        !> med_err MEDimport(const char *filein, const char *fileout) (MED 4 medimport.h)
+        function medimport_f(filein, fileout) result(rc) bind(c)
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: filein(*), fileout(*)
+            integer(c_int) :: rc
+        end function medimport_f
+    end interface
+
+contains
+
+    !> Makes the private folder of one conversion: `$TMPDIR/parasol-medimport-XXXXXX`
+    !> (mkdtemp(3): mode 0700), in /tmp when TMPDIR is unset or holds a character a shell
+    !> would read (MEDimport quotes the names into a command line).
+    !>  st : out, STATUS_IO_ERROR with the system's reason
+    subroutine make_import_folder(folder, st)
+        character(len=:), allocatable, intent(out) :: folder
+        type(status_t), intent(out) :: st
+        character(len=4096) :: tmp
+        character(kind=c_char), allocatable :: template(:)
+        character(len=:), allocatable :: base
+        integer :: n, k, env_status
+        type(c_ptr) :: p
+        call get_environment_variable('TMPDIR', tmp, n, env_status)
+        base = '/tmp'
+        if (env_status == 0 .and. n > 0) then
+            if (verify(tmp(1:n), 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ' // &
+                '0123456789/._+-') == 0) base = tmp(1:n)
+        end if
+        folder = base // '/parasol-medimport-XXXXXX'
+        n = len(folder)
+        allocate (template(n + 1))
+        do k = 1, n
+            template(k) = folder(k:k)
+        end do
+        template(n + 1) = c_null_char
+        p = c_mkdtemp(template)
+        if (.not. c_associated(p)) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot make a temporary folder in ' // base &
+                // ' for the conversion: ' // errno_text(last_errno()))
+            return
+        end if
+        do k = 1, n
+            folder(k:k) = template(k)
+        end do
+    end subroutine make_import_folder
+
+    !> The converted copy in `folder`.
+    function import_copy_path(folder) result(path)
+        character(len=*), intent(in) :: folder
+        character(len=:), allocatable :: path
+        path = folder // '/out.med'
+    end function import_copy_path
+
+    !> Removes the folder of a conversion and what is in it (a file open in the server stays
+    !> readable there until it closes it). Does nothing for ''.
+    subroutine remove_import_folder(folder)
+        character(len=*), intent(in) :: folder
+        integer(c_int) :: rc
+        if (len(folder) == 0) return
+        rc = c_unlink(folder // '/in.med' // c_null_char)
+        rc = c_unlink(folder // '/out.med' // c_null_char)
+        rc = c_rmdir(folder // c_null_char)
+    end subroutine remove_import_folder
+
+    !> In the MED server: converts MED file `path` (version 2.x) to import_copy_path(folder)
+    !> with MEDimport. Returns >= 0 on success; IMPORT_NO_CONVERTER when libmedimport cannot
+    !> be loaded (why: `reason`), IMPORT_LINK_FAILED (errno kept) when the file cannot be
+    !> linked into the folder, else MEDimport's own result (< 0: it could not convert).
+    integer(c_int) function convert_to_current(path, folder, reason) result(rc)
+        character(len=*), intent(in) :: path, folder
+        character(len=:), allocatable, intent(out) :: reason
+        integer(c_int), parameter :: O_WRONLY = 1, STDOUT = 1
+        type(dynamic_library_t) :: lib
+        type(status_t) :: st
+        type(c_funptr) :: address
+        procedure(medimport_f), pointer :: medimport
+        integer(c_int) :: null, ignored
+        reason = ''
+        null = c_open('/dev/null' // c_null_char, O_WRONLY)
+        if (null >= 0) then
+            ignored = c_dup2(null, STDOUT)
+            ignored = c_close(null)
+        end if
+        if (c_symlink(canonical_path(path) // c_null_char, folder // '/in.med' // &
+                      c_null_char) /= 0) then
+            rc = IMPORT_LINK_FAILED
+            reason = errno_text(last_errno())
+            return
+        end if
+        call open_library(lib, MEDIMPORT_LIBRARY, st)
+        if (st%ok()) call find_symbol(lib, 'MEDimport', address, st)
+        if (st%failed()) then
+            rc = IMPORT_NO_CONVERTER
+            reason = st%message
+            return
+        end if
+        call c_f_procpointer(address, medimport)
+        rc = medimport(folder // '/in.med' // c_null_char, folder // '/out.med' // c_null_char)
+        if (rc < 0) reason = 'MEDimport failed (MED error ' // to_text(int(rc)) // ')'
+    end function convert_to_current
+
+end module med_import
