@@ -101,6 +101,11 @@ module atomic_file
             integer(c_int), value :: fd
             integer(c_int) :: rc
         end function c_close
+        function c_rmdir(pathname) result(rc) bind(c, name='rmdir')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int) :: rc
+        end function c_rmdir
         function c_unlink(pathname) result(rc) bind(c, name='unlink')
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: pathname(*)
@@ -448,7 +453,8 @@ contains
 
     ! ---- interrupts ----
 
-    !> Records a temporary file to remove if the process is interrupted before it is
+    !> Records a temporary file (or an empty-by-then folder of them, removed after the
+    !> files) to remove if the process is interrupted before it is
     !> published or discarded (a path longer than MAX_PATH_BYTES, or more than MAX_TRACKED
     !> at once, is not tracked: the file then stays behind after an interrupt).
     subroutine track_temporary(temp)
@@ -507,6 +513,9 @@ contains
         integer :: k
         do k = 1, MAX_TRACKED
             if (tracked(k)) rc = c_unlink(tracked_paths(1, k))
+        end do
+        do k = 1, MAX_TRACKED        ! tracked folders (med_import's), empty by now
+            if (tracked(k)) rc = c_rmdir(tracked_paths(1, k))
         end do
         previous = c_signal(sig, transfer(0_c_intptr_t, previous))           ! SIG_DFL
         rc = c_raise(sig)

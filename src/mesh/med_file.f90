@@ -32,7 +32,8 @@ module med_file
         OP_WRITE_PROFILE, OP_WRITE_FIELD_VALUES, OP_LOCALIZATION_COUNT, OP_LOCALIZATION_NAME, &
         OP_WRITE_LOCALIZATION, OP_WRITE_ENTITY_VALUES, OP_FIELD_STEP_COUNT, OP_FIELD_STEP_INFO, &
         OP_FIELD_PART_COUNT, OP_FIELD_PART_INFO, OP_READ_ENTITY_VALUES, OP_READ_PROFILE, OP_IMPORT
-    use med_import, only: make_import_folder, remove_import_folder
+    use med_import, only: make_import_folder, remove_import_folder, IMPORT_TIME_BASE
+    use atomic_file, only: track_temporary, untrack_temporary
     implicit none
     private
 
@@ -56,6 +57,8 @@ module med_file
     integer, parameter :: OLDEST_MAJOR = 3, CONVERTED_MAJOR = 2
     !> errno values that mean the disk (or a limit) refused the data: said in the message.
     integer, parameter :: EIO = 5, EFBIG = 27, ENOSPC = 28, EROFS = 30, EDQUOT = 122
+    !> The signal that ends a conversion past its time limit (med_import).
+    integer, parameter :: SIGALRM = 14
 
     !> The server of an open file (med_server) and, once it died, how.
     type :: med_link_t
@@ -242,15 +245,28 @@ contains
         release = -1
         call make_import_folder(folder, st)
         if (st%failed()) return
+        ! an interrupt removes the copy, the link and the folder (atomic_file's handler)
+        call track_temporary(folder // '/out.med')
+        call track_temporary(folder // '/in.med')
+        call track_temporary(folder)
         call q%put_int(OP_IMPORT)
         call q%put_text(file%path)
         call q%put_text(folder)
         rc = exchange(file, q, r, 'convert', 'it', st, check=.false.)
         call remove_import_folder(folder)
+        call untrack_temporary(folder // '/out.med')
+        call untrack_temporary(folder // '/in.med')
+        call untrack_temporary(folder)
         if (st%failed()) then
             if (file%link%lost) then
-                call set_error(st, STATUS_IO_ERROR, 'the converter ended (' // &
-                    file%link%lost_how // ')')
+                if (file%link%server%signal == SIGALRM) then
+                    call set_error(st, STATUS_IO_ERROR, 'MEDimport did not finish within ' &
+                        // 'its time limit (' // to_text(int(IMPORT_TIME_BASE, i4)) // &
+                        ' s plus 1 s per MB of the file): it is damaged')
+                else
+                    call set_error(st, STATUS_IO_ERROR, 'the converter ended (' // &
+                        file%link%lost_how // ')')
+                end if
             end if
             return
         end if

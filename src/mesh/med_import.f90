@@ -13,9 +13,10 @@
 !> (`in.med`, `out.med` in a folder of safe characters), since it quotes them into a shell
 !> command line: the user's file name never reaches the shell.
 module med_import
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_funptr, &
-        c_associated, c_f_procpointer
+    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_null_char, c_ptr, &
+        c_funptr, c_associated, c_f_procpointer
     use status, only: status_t, set_error, STATUS_IO_ERROR
+    use kinds, only: i8
     use strings, only: to_text
     use system_error, only: last_errno, errno_text, canonical_path
     use dynamic_library, only: dynamic_library_t, open_library, find_symbol
@@ -23,7 +24,17 @@ module med_import
     private
 
     public :: make_import_folder, remove_import_folder, convert_to_current, import_copy_path
+    public :: IMPORT_TIME_BASE
 
+    !> Limits of one conversion (MEDimport loops on some damaged files, writing its copy
+    !> without end: 9.7 GB in 10 s for one of the fuzzer's cases): the copy may grow to
+    !> IMPORT_SIZE_FACTOR times the file, at least IMPORT_SIZE_MIN bytes (a converted
+    !> Code_Aster mesh is about 1.5 times its file), and the conversion may take
+    !> IMPORT_TIME_BASE seconds plus one per MB of the file (Code_Aster's 2.x meshes convert
+    !> in well under a second). Past either, the server stops: SIGALRM, or a write failing
+    !> with EFBIG (SIGXFSZ is ignored, as in parasol).
+    integer, parameter :: IMPORT_SIZE_FACTOR = 16, IMPORT_TIME_BASE = 60
+    integer(c_long), parameter :: IMPORT_SIZE_MIN = 64_c_long * 1024 * 1024
     !> The converter's library (its soname: Debian ships no development link for it).
     character(len=*), parameter, public :: MEDIMPORT_LIBRARY = 'libmedimport.so.0'
     !> convert_to_current's own failures (MEDimport's are its med_err, < 0 too).
@@ -67,6 +78,23 @@ module med_import
             integer(c_int), value :: fd
             integer(c_int) :: rc
         end function c_close
+        function c_alarm(seconds) result(left) bind(c, name='alarm')
+            import :: c_int
+            integer(c_int), value :: seconds
+            integer(c_int) :: left
+        end function c_alarm
+        function c_setrlimit(resource, limits) result(rc) bind(c, name='setrlimit')
+            import :: c_int, c_long
+            integer(c_int), value :: resource
+            integer(c_long), intent(in) :: limits(2)
+            integer(c_int) :: rc
+        end function c_setrlimit
+        function c_getrlimit(resource, limits) result(rc) bind(c, name='getrlimit')
+            import :: c_int, c_long
+            integer(c_int), value :: resource
+            integer(c_long), intent(out) :: limits(2)
+            integer(c_int) :: rc
+        end function c_getrlimit
         !> med_err MEDimport(const char *filein, const char *fileout) (MED 4 medimport.h)
         function medimport_f(filein, fileout) result(rc) bind(c)
             import :: c_char, c_int
@@ -144,7 +172,14 @@ contains
         type(c_funptr) :: address
         procedure(medimport_f), pointer :: medimport
         integer(c_int) :: null, ignored
+        integer(c_int), parameter :: RLIMIT_FSIZE = 1
+        integer, parameter :: EFBIG = 27
+        integer(c_long) :: saved(2), limits(2)
+        integer(i8) :: size_bytes
+        integer :: err
+        logical :: have_limits
         reason = ''
+        limits = 0
         null = c_open('/dev/null' // c_null_char, O_WRONLY)
         if (null >= 0) then
             ignored = c_dup2(null, STDOUT)
@@ -164,8 +199,27 @@ contains
             return
         end if
         call c_f_procpointer(address, medimport)
+        size_bytes = 0
+        inquire (file=path, size=size_bytes)
+        size_bytes = max(size_bytes, 0_i8)
+        have_limits = c_getrlimit(RLIMIT_FSIZE, saved) == 0
+        if (have_limits) then
+            limits = saved
+            limits(1) = max(IMPORT_SIZE_MIN, int(IMPORT_SIZE_FACTOR, c_long) * size_bytes)
+            if (saved(2) >= 0) limits(1) = min(limits(1), saved(2))  ! -1: RLIM_INFINITY
+            ignored = c_setrlimit(RLIMIT_FSIZE, limits)
+        end if
+        ignored = c_alarm(int(IMPORT_TIME_BASE + size_bytes / 1000000_i8, c_int))
         rc = medimport(folder // '/in.med' // c_null_char, folder // '/out.med' // c_null_char)
-        if (rc < 0) reason = 'MEDimport failed (MED error ' // to_text(int(rc)) // ')'
+        err = last_errno()
+        ignored = c_alarm(0_c_int)
+        if (have_limits) ignored = c_setrlimit(RLIMIT_FSIZE, saved)
+        if (rc < 0) then
+            reason = 'MEDimport failed (MED error ' // to_text(int(rc)) // ')'
+            if (err == EFBIG) reason = 'MEDimport''s copy grew past ' // &
+                to_text(int(limits(1) / 1048576)) // ' MB (' // to_text(IMPORT_SIZE_FACTOR) &
+                // ' times the file): it is damaged'
+        end if
     end function convert_to_current
 
 end module med_import

@@ -55,6 +55,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 
 CRASH_SIGNS = ("Fortran runtime", "Backtrace", "ERROR STOP", "Segmentation", "double free",
                "Program received signal", "HDF5-DIAG", "../src/", "Erreur")
@@ -627,6 +628,27 @@ def case_import_2x(argv):
         if os.listdir(tmp):
             problems.append("%s made 2.1.0: left in $TMPDIR: %s" % (mmed, os.listdir(tmp)))
         print("%s: read through MEDimport; as 2.1.0: %s" % (mmed, lines[0] if lines else rc))
+        # The fuzzer's case (seed 1202, case 585): one byte of zzzz136d.mmed, 45 661 0x00 ->
+        # 0x27, makes MEDimport write its copy without end (9.7 GB in 10 s before its size
+        # limit), then crash: exit 1, one line, nothing left, in seconds.
+        if mmed == "zzzz136d.mmed":
+            looping = os.path.join(workdir, mmed + ".loops.med")
+            data = bytearray(open(source, "rb").read())
+            data[45661] = 0x27
+            with open(looping, "wb") as f:
+                f.write(bytes(data))
+            started = time.time()
+            rc, err = read_mesh(looping, out + ".loops")
+            took = time.time() - started
+            said = "could not convert it: "
+            if rc != 1 or len(err.strip().splitlines()) != 1 or said not in err or \
+                    took > 30:
+                problems.append("%s byte 45661 0x27: expected exit 1 and one line with %r "
+                                "within 30 s, got exit %d after %.1f s: %r" % (
+                                    mmed, said, rc, took, err))
+            if os.listdir(tmp):
+                problems.append("%s byte 45661: left in $TMPDIR: %s" % (mmed, os.listdir(tmp)))
+            print("%s byte 45661 0x27: %.1f s, %s" % (mmed, took, err.strip()))
         # No room for the copy: $TMPDIR a folder that does not exist.
         env["TMPDIR"] = os.path.join(workdir, "no_such_folder")
         rc, err = read_mesh(source, out + ".notmp")
