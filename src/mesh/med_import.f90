@@ -195,7 +195,7 @@ contains
         if (st%ok()) call find_symbol(lib, 'MEDimport', address, st)
         if (st%failed()) then
             rc = IMPORT_NO_CONVERTER
-            reason = st%message
+            reason = st%message // ' (MED''s converter: Debian package libmedimport0v5)'
             return
         end if
         call c_f_procpointer(address, medimport)
@@ -209,7 +209,8 @@ contains
             if (saved(2) >= 0) limits(1) = min(limits(1), saved(2))  ! -1: RLIM_INFINITY
             ignored = c_setrlimit(RLIMIT_FSIZE, limits)
         end if
-        ignored = c_alarm(int(IMPORT_TIME_BASE + size_bytes / 1000000_i8, c_int))
+        ignored = c_alarm(int(min(IMPORT_TIME_BASE + size_bytes / 1000000_i8, 86400_i8), &
+                              c_int))
         rc = medimport(folder // '/in.med' // c_null_char, folder // '/out.med' // c_null_char)
         err = last_errno()
         ignored = c_alarm(0_c_int)
