@@ -649,6 +649,19 @@ def case_import_2x(argv):
             if os.listdir(tmp):
                 problems.append("%s byte 45661: left in $TMPDIR: %s" % (mmed, os.listdir(tmp)))
             print("%s byte 45661 0x27: %.1f s, %s" % (mmed, took, err.strip()))
+        # The fuzzer's case (seed 2026, case 1449): 110 bytes of zzzz136d.mmed at 59 494
+        # duplicated convert into coordinates with a signaling NaN, whose mere test raised
+        # IEEE invalid (SIGFPE in the checked build): one line naming the node.
+        if mmed == "zzzz136d.mmed":
+            snan = os.path.join(workdir, mmed + ".snan.med")
+            data = open(source, "rb").read()
+            with open(snan, "wb") as f:
+                f.write(data[:59494 + 110] + data[59494:59494 + 110] + data[59494 + 110:])
+            rc, err = read_mesh(snan, out + ".snan")
+            said = "node 96 has a coordinate that is not a finite number"
+            if rc != 1 or len(err.strip().splitlines()) != 1 or said not in err:
+                problems.append("%s with 110 bytes duplicated at 59494: expected exit 1 and "
+                                "one line with %r, got exit %d: %r" % (mmed, said, rc, err))
         # No room for the copy: $TMPDIR a folder that does not exist.
         env["TMPDIR"] = os.path.join(workdir, "no_such_folder")
         rc, err = read_mesh(source, out + ".notmp")
