@@ -27,6 +27,8 @@ module analysis_commands
     use function_concept, only: param_binding_t
     use direct_solver, only: solver_options_t
     use solver_factory, only: DEFAULT_METHOD, default_renum, renum_allowed
+    use residual_line_search, only: line_search_options_t
+    use krylov_solver, only: pre_cond_allowed, algorithm_allowed, KRYLOV_DEFAULT_RESI_RELA
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
@@ -464,6 +466,10 @@ contains
             if (st%ok()) call occ%get_int('REAC_INCR', options%reac_incr, st)
             if (st%failed()) return
         end if
+        if (cmd%count('RECH_LINEAIRE') > 0) then
+            call read_line_search(cmd%occurrence('RECH_LINEAIRE', 1), options%line, st)
+            if (st%failed()) return
+        end if
         if (cmd%count('CONVERGENCE') > 0) then
             ! Code_Aster (U4.51.03, nmcore): the criteria given are all tested; RESI_GLOB_RELA
             ! at its default 1e-6 only when neither is given.
@@ -522,6 +528,8 @@ contains
             end if
             solver%renum = text
         end if
+        if (text == 'GCPC' .or. text == 'PETSC') call read_iterative(occ, solver, st)
+        if (st%failed()) return
         call occ%get_int('NPREC', solver%nprec, st)
         if (st%ok()) call occ%get_text('STOP_SINGULIER', text, st)
         if (st%failed()) return
@@ -533,5 +541,102 @@ contains
                 'ACCELERATION ' // text // ': parasol factors in full rank (FR)')
         end if
     end subroutine read_solver
+
+    !> SOLVEUR of METHODE GCPC / PETSC (krylov_solver): PRE_COND, ALGORITHME, RESI_RELA,
+    !> NMAX_ITER as Code_Aster documents them (U4.50.01; defaults from the catalog). What
+    !> parasol does not build is refused at its keyword: it is never replaced by another.
+    !>  st : out, located at PRE_COND, ALGORITHME, NIVE_REMPLISSAGE, OPTION_PETSC, RESI_RELA
+    subroutine read_iterative(occ, solver, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(solver_options_t), intent(inout) :: solver
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: text
+        integer(i4) :: level
+        call occ%get_text('PRE_COND', text, st)
+        if (st%failed()) return
+        if (index(' ' // pre_cond_allowed(trim(solver%method)) // ' ', ' ' // text // ' ') &
+            == 0) then
+            call occ%error_at('PRE_COND', text // ' is not built by parasol (preconditioners ' &
+                // 'of METHODE=''' // trim(solver%method) // ''': ' // &
+                pre_cond_allowed(trim(solver%method)) // ')', st, code=STATUS_NOT_IMPLEMENTED)
+            return
+        end if
+        solver%pre_cond = text
+        solver%algorithm = 'CG'
+        if (trim(solver%method) == 'PETSC') then
+            call occ%get_text('ALGORITHME', text, st)
+            if (st%failed()) return
+            if (index(' ' // algorithm_allowed('PETSC') // ' ', ' ' // text // ' ') == 0) then
+                call occ%error_at('ALGORITHME', text // ' is not built by parasol (Krylov ' // &
+                    'methods of METHODE=''PETSC'': ' // algorithm_allowed('PETSC') // ')', st, &
+                    code=STATUS_NOT_IMPLEMENTED)
+                return
+            end if
+            solver%algorithm = text
+            if (occ%has('OPTION_PETSC')) then
+                call occ%get_text('OPTION_PETSC', text, st)
+                if (st%failed()) return
+                if (len_trim(text) > 0) then
+                    call occ%error_at('OPTION_PETSC', 'PETSc''s command-line options are ' // &
+                        'not read by parasol (its own Krylov methods): use ALGORITHME, ' // &
+                        'PRE_COND, RESI_RELA, NMAX_ITER', st, code=STATUS_NOT_IMPLEMENTED)
+                    return
+                end if
+            end if
+        end if
+        call occ%get_int('NIVE_REMPLISSAGE', level, st)
+        if (st%failed()) return
+        if (level /= 0 .and. solver%pre_cond == 'LDLT_INC') then
+            call occ%error_at('NIVE_REMPLISSAGE', 'parasol builds the incomplete ' // &
+                'factorization without fill (NIVE_REMPLISSAGE=0) only', st, &
+                code=STATUS_NOT_IMPLEMENTED)
+            return
+        end if
+        call occ%get_int('NMAX_ITER', solver%nmax_iter, st)
+        if (st%failed()) return
+        solver%resi_rela = KRYLOV_DEFAULT_RESI_RELA
+        if (occ%has('RESI_RELA')) then
+            call occ%get_real('RESI_RELA', solver%resi_rela, st)
+            if (st%failed()) return
+            if (.not. (solver%resi_rela > 0.0_dp .and. solver%resi_rela < 1.0_dp)) then
+                call occ%error_at('RESI_RELA', 'the relative residual of an iterative ' // &
+                    'METHODE must be in (0, 1) (default 1e-6)', st)
+                return
+            end if
+        end if
+    end subroutine read_iterative
+
+    !> RECH_LINEAIRE (U4.51.03; residual_line_search): METHODE CORDE or MIXTE (PILOTAGE goes
+    !> with PILOTAGE, which parasol does not build), RESI_LINE_RELA, ITER_LINE_MAXI (0: no
+    !> search), RHO_MIN < RHO_MAX, RHO_EXCL.
+    !>  st : out, located at METHODE (PILOTAGE) or RHO_MAX (not above RHO_MIN)
+    subroutine read_line_search(occ, line, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(line_search_options_t), intent(inout) :: line
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: text
+        call occ%get_text('METHODE', text, st)
+        if (st%failed()) return
+        if (text == 'PILOTAGE') then
+            call occ%error_at('METHODE', 'the line search PILOTAGE goes with STAT_NON_LINE/' // &
+                'PILOTAGE (continuation), which parasol does not build: use CORDE or MIXTE', &
+                st, code=STATUS_NOT_IMPLEMENTED)
+            return
+        end if
+        line%mixte = text == 'MIXTE'
+        call occ%get_real('RESI_LINE_RELA', line%resi_line_rela, st)
+        if (st%ok()) call occ%get_int('ITER_LINE_MAXI', line%iter_line_maxi, st)
+        if (st%ok()) call occ%get_real('RHO_MIN', line%rho_min, st)
+        if (st%ok()) call occ%get_real('RHO_MAX', line%rho_max, st)
+        if (st%ok()) call occ%get_real('RHO_EXCL', line%rho_excl, st)
+        if (st%failed()) return
+        if (.not. line%rho_max > line%rho_min) then
+            call occ%error_at('RHO_MAX', 'must be above RHO_MIN (' // real_e13(line%rho_min) // &
+                '): the steps of the line search lie in [RHO_MIN, RHO_MAX]', st, &
+                code=STATUS_MODEL_ERROR)
+            return
+        end if
+        line%enabled = line%iter_line_maxi > 0
+    end subroutine read_line_search
 
 end module analysis_commands

@@ -557,6 +557,11 @@ contains
         else if (nprec <= 0) then
             text = text // ', read as ' // to_text(effective_nprec(opt))
         end if
+        if (trim(method) == 'GCPC' .or. trim(method) == 'PETSC') then
+            text = text // '; an iterative method: no pivots, only its preconditioner''s ' // &
+                'factorization (PRE_COND LDLT_SP, LDLT_DP) is judged against NPREC)'
+            return
+        end if
         if (acc%pivots_unknown) then
             text = text // '; ' // trim(method) // ' gives no pivots: its null-pivot ' // &
                 'detection checked NPREC)'

@@ -74,6 +74,8 @@ module contact_newton
     use newton_factor, only: drop
     use factor_reuse, only: correction, judge_converged_tangent
     use contact_globalisation, only: line_search, check_no_equilibrium
+    use residual_line_search, only: line_search_options_t, secant_search_t, search_start, &
+        search_next, search_trial, search_result
     use newton_log, only: history_text, step_line, seconds_text, iteration_row
     use two_level_solver, only: from_hat, hat_body_part
     use progress, only: wall_seconds, progress_note, progress_update, progress_done, &
@@ -127,6 +129,7 @@ contains
         type(elimination_t) :: elim
         integer(i4) :: k, step, n_eq
         real(dp), allocatable :: targets(:), forc(:)
+        character(len=:), allocatable :: text
         integer(i4), allocatable :: levels(:)
         real(dp) :: t_prev
         type(step_start_t) :: saved
@@ -218,6 +221,8 @@ contains
             t_prev = targets(k)
             k = k + 1
         end do
+        text = state%solver%iteration_summary()       ! GCPC, PETSC: their iterations
+        if (len(text) > 0) call log_add(log, text)
     end subroutine stat_non_line
 
     !> A step to targets(k) from t_prev failed with status st. When the list of instants
@@ -348,7 +353,7 @@ contains
         real(dp), allocatable :: r(:), b(:), x(:), du_body(:), resi_history(:)
         real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start, alpha
         integer(i4) :: iter, changed, use, mode
-        logical :: zero_load, converged, said_zero, settled, solve_tightly, searchable
+        logical :: zero_load, converged, said_zero, settled, solve_tightly, searchable, searched
         type(step_pivots_t) :: piv
         step_start = wall_seconds()
         call log_add(log, '')
@@ -412,12 +417,21 @@ contains
             end if
             alpha = 1.0_dp
             full(iter) = .true.
-            if (use == MATRIX_TANGENT .and. state%by_status .and. (iter > 0 .or. searchable)) &
+            ! RECH_LINEAIRE given: Code_Aster's search on the residual replaces parasol's on
+            ! the contact energy (doc/analysis.md, "Line search")
+            searched = options%line%enabled .and. (iter > 0 .or. searchable)
+            if (.not. searched .and. use == MATRIX_TANGENT .and. state%by_status .and. &
+                (iter > 0 .or. searchable)) &
                 call line_search(s, map, state, b, r, log, alpha, full(iter), st)
             if (st%failed()) return
             call progress_update(options%progress, 'internal forces')
             history(:, iter) = state%closed
-            call apply_correction(s, map, state, r, alpha, x, du_body, st)
+            if (searched) then
+                call residual_search(s, map, state, options%line, r, x, du_body, log, &
+                    full(iter), st)
+            else
+                call apply_correction(s, map, state, r, alpha, x, du_body, st)
+            end if
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
             call residual_measures(map, state%fint, state%fext, resi_rela, &
@@ -523,6 +537,58 @@ contains
             state%closed, state%fn, st, state%linear, history=state%history, du_body=du_body)
         if (st%ok()) call count_forces(state, t0)
     end subroutine apply_correction
+
+    !> RECH_LINEAIRE (residual_line_search): u moves along the correction p (r in hat
+    !> coordinates) to the rho the search chooses, f(rho) = p . (f_int - f_ext) evaluated at
+    !> each trial (one evaluation of the internal forces each, the iterate moved by the
+    !> difference of rho: the linear forces are exact increments).
+    !>  full : out, rho = 1
+    subroutine residual_search(s, map, state, opts, r, x, du_body, log, full, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(newton_state_t), intent(inout) :: state
+        type(line_search_options_t), intent(in) :: opts
+        real(dp), intent(in) :: r(:)
+        real(dp), intent(inout) :: x(:), du_body(:)
+        type(analysis_log_t), intent(inout) :: log
+        logical, intent(out) :: full
+        type(status_t), intent(out) :: st
+        type(secant_search_t) :: ss
+        real(dp), allocatable :: p(:), g(:)
+        real(dp) :: at, rho, f0
+        logical :: done
+        allocate (p(map%n_free), g(map%n_free))
+        call from_hat(state%solver, r, p)
+        call gather_free(map, state%fint - state%fext, g)
+        f0 = dot_product(p, g)
+        full = .true.
+        if (.not. abs(f0) > 0.0_dp) then
+            call apply_correction(s, map, state, r, 1.0_dp, x, du_body, st)
+            return
+        end if
+        call search_start(ss, opts, f0)
+        at = 0.0_dp
+        do
+            rho = search_trial(ss)
+            call apply_correction(s, map, state, r, rho - at, x, du_body, st)
+            if (st%failed()) return
+            at = rho
+            call gather_free(map, state%fint - state%fext, g)
+            call search_next(ss, opts, dot_product(p, g), done)
+            if (done) exit
+        end do
+        rho = search_result(ss)
+        if (abs(rho - at) > 0.0_dp) call apply_correction(s, map, state, r, rho - at, x, du_body, st)
+        if (st%failed()) return
+        full = .not. abs(rho - 1.0_dp) > 0.0_dp
+        if (full) return
+        state%damped = state%damped + 1
+        call log_add(log, '  line search (RECH_LINEAIRE ' // trim(merge('MIXTE', 'CORDE', &
+            opts%mixte)) // '): rho = ' // real_short(rho) // ' after ' // &
+            to_text(ss%evaluations) // ' evaluation(s), |f(rho)| / |f(0)| = ' // &
+            real_short(ss%f_best / abs(f0)) // trim(merge(' (RESI_LINE_RELA met)    ', &
+            ' (ITER_LINE_MAXI reached)', ss%converged)))
+    end subroutine residual_search
 
     !> One more evaluation of the internal forces, started at wall time t0 (the step's count
     !> and time, for the .mess: doc/performance.md measures them).

@@ -129,6 +129,7 @@ contains
                 ' against the largest displacement ' // real_short(maxval(abs(u), dim=1)) &
                 // ')')
         end do
+        if (len(solver%iteration_summary()) > 0) call log_add(log, solver%iteration_summary())
     end subroutine meca_statique
 
 end module linear_static

@@ -18,6 +18,7 @@ module newton_state
     use number_limits, only: product_fits
     use progress, only: progress_t
     use time_stepping, only: step_cutting_t
+    use residual_line_search, only: line_search_options_t
     implicit none
     private
 
@@ -47,6 +48,7 @@ module newton_state
         !> what a step that fails does (DEFI_LIST_INST/ECHEC; off: the analysis stops)
         type(step_cutting_t) :: cutting
         type(solver_options_t) :: factor           !< SOLVEUR: METHODE, RENUM, NPREC ...
+        type(line_search_options_t) :: line        !< RECH_LINEAIRE (residual_line_search)
         type(deadline_t) :: deadline               !< the run's time limit, polled per iteration
         !> the run's reporter: a line per step, the work under way (null: nobody listens)
         class(progress_t), pointer :: progress => null()

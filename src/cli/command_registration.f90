@@ -14,9 +14,10 @@ module command_registration
     use crea_resu_command, only: run_crea_resu
     use post_champ_command, only: run_post_champ
     use modi_repere_command, only: run_modi_repere
-    use mesh_commands, only: run_lire_maillage
+    use mesh_commands, only: run_lire_maillage, run_pre_gibi
     use mesh_group_commands, only: run_defi_group
-    use mesh_modify_commands, only: run_modi_maillage
+    use mesh_modify_commands, only: run_modi_maillage, set_field_support_resolver
+    use field_support, only: mesh_of_support
     use mesh_create_commands, only: run_crea_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
@@ -32,6 +33,8 @@ module command_registration
     use recu_fonction_command, only: run_recu_fonction
     use calc_fonction_command, only: run_calc_fonction
     use post_releve_command, only: run_post_releve_t
+    use macr_lign_coupe_command, only: run_macr_lign_coupe
+    use post_elem_command, only: run_post_elem
     use test_fonction_command, only: run_test_fonction
     use impr_fonction_command, only: run_impr_fonction
     use test_table_command, only: run_test_table
@@ -67,8 +70,10 @@ contains
         call ctx%register('POST_CHAMP', run_post_champ)
         call ctx%register('MODI_REPERE', run_modi_repere, reuse=.true.)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
+        call ctx%register('PRE_GIBI', run_pre_gibi)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)
         call ctx%register('MODI_MAILLAGE', run_modi_maillage, reuse=.true.)
+        call set_field_support_resolver(mesh_of_support)   ! DEFORME's DEPL on a model, a result
         call ctx%register('CREA_MAILLAGE', run_crea_maillage)
         call ctx%register('AFFE_MODELE', run_affe_modele)
         call ctx%register('DEFI_MATERIAU', run_defi_materiau, at_check=.true.)
@@ -89,6 +94,8 @@ contains
         call ctx%register('RECU_FONCTION', run_recu_fonction)
         call ctx%register('CALC_FONCTION', run_calc_fonction)
         call ctx%register('POST_RELEVE_T', run_post_releve_t)
+        call ctx%register('MACR_LIGN_COUPE', run_macr_lign_coupe)
+        call ctx%register('POST_ELEM', run_post_elem)
         call ctx%register('TEST_FONCTION', run_test_fonction)
         call ctx%register('IMPR_FONCTION', run_impr_fonction)
         call ctx%register('TEST_TABLE', run_test_table)

@@ -34,6 +34,11 @@ module number_limits
     !> double precision, and the solvers scale by 1/sqrt of the diagonal.
     real(dp), parameter, public :: MAX_MODULUS = 1.0e100_dp
     real(dp), parameter, public :: MIN_MODULUS = 1.0e-100_dp
+    !> Largest |temperature| a thermal strain is formed from (AFFE_VARC TEMP, VALE_REF,
+    !> TEMP_DEF_ALPHA, the abscissae of ELAS_FO ALPHA), and largest |strain| formed from a
+    !> deck's values (ALPHA (T - T_ref)): a stress E eps stays below 1e130.
+    real(dp), parameter, public :: MAX_TEMPERATURE = 1.0e30_dp
+    real(dp), parameter, public :: MAX_STRAIN = 1.0e30_dp
     !> Largest |instant| (DEFI_LIST_REEL, INST): differences of instants stay finite.
     real(dp), parameter, public :: MAX_INSTANT = 1.0e30_dp
     !> Largest magnitude of a computed quantity that products may still be formed from

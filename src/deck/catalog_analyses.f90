@@ -39,7 +39,7 @@ contains
         call c%key('FONC_MULT', 'FUNC')
         call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
         call c%end_fact()
-        call c%fact('COMPORTEMENT', max=MANY, req=.true.)
+        call c%fact('COMPORTEMENT', max=MANY)   ! statut 'd': absent = ELAS, PETIT on every cell
         call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC DIS_CONTACT')
         call c%key('DEFORMATION', 'TXM', def='PETIT', into='PETIT')
         call c%key('TOUT', 'TXM', into='OUI')
@@ -61,6 +61,15 @@ contains
         call c%key('REAC_INCR', 'I', def='1', vmin=0.0_dp)     ! Code_Aster default, val_min
         call c%key('REAC_ITER', 'I', def='0', vmin=0.0_dp)     ! Code_Aster default, val_min
         call c%end_fact()
+        ! Code_Aster's C_RECH_LINEAIRE (c_rech_lineaire.py): residual_line_search
+        call c%fact('RECH_LINEAIRE')
+        call c%key('METHODE', 'TXM', def='CORDE', into='CORDE MIXTE PILOTAGE')
+        call c%key('RESI_LINE_RELA', 'R', def='1.0E-1', vmin=0.0_dp)
+        call c%key('ITER_LINE_MAXI', 'I', def='3', vmin=0.0_dp, vmax=999.0_dp)
+        call c%key('RHO_MIN', 'R', def='1.0E-2', vmin=0.0_dp)
+        call c%key('RHO_MAX', 'R', def='1.0E1', vmin=0.0_dp)
+        call c%key('RHO_EXCL', 'R', def='0.9E-2', vmin=0.0_dp)
+        call c%end_fact()
         call c%fact('CONVERGENCE')
         call c%key('RESI_GLOB_RELA', 'R', vmin=0.0_dp)
         call c%key('RESI_GLOB_MAXI', 'R', vmin=0.0_dp)
@@ -76,19 +85,24 @@ contains
         call c%end_fact()
     end subroutine describe_analyses
 
-    !> SOLVEUR factor keyword of the analyses (defaults as Code_Aster's: METHODE='MUMPS',
-    !> NPREC=8, STOP_SINGULIER='OUI'; RENUM's default depends on the method).
+    !> SOLVEUR factor keyword of the analyses (defaults as Code_Aster's, c_solveur.py:
+    !> METHODE='MUMPS', NPREC=8, STOP_SINGULIER='OUI'; RENUM's default depends on the method).
+    !> GCPC and PETSC (krylov_solver): their keywords in their blocks, with Code_Aster's
+    !> defaults; the preconditioners and algorithms parasol does not build are accepted here
+    !> and refused by the analysis at the keyword (read_solver), never replaced.
     subroutine describe_solver(c)
         type(catalog_t), intent(inout) :: c
+        character(len=*), parameter :: PETSC_PRE_COND = 'LDLT_INC LDLT_SP LDLT_DP JACOBI ' // &
+            'SOR ML BOOMER GAMG BLOC_LAGR FIELDSPLIT UTILISATEUR HPDDM SANS'
         call c%fact('SOLVEUR')
-        call c%key('METHODE', 'TXM', def='MUMPS', into='LDLT MULT_FRONT MUMPS')
+        call c%key('METHODE', 'TXM', def='MUMPS', into='LDLT MULT_FRONT MUMPS GCPC PETSC')
         call c%key('RENUM', 'TXM', into='RCMK METIS SANS AMD MD AMF PORD SCOTCH QAMD AUTO')
         call c%key('NPREC', 'I', def='8')
         call c%key('STOP_SINGULIER', 'TXM', def='OUI', into=OUI_NON)
         call c%key('ELIM_LAGR', 'TXM', noop=.true.)
         call c%key('PCENT_PIVOT', 'I', noop=.true.)
         call c%key('GESTION_MEMOIRE', 'TXM', noop=.true.)
-        call c%key('RESI_RELA', 'R', noop=.true.)
+        call c%key('RESI_RELA', 'R')          ! GCPC, PETSC: 1e-6; MUMPS: its own check
         call c%key('POSTTRAITEMENTS', 'TXM', noop=.true.)
         call c%key('TYPE_RESOL', 'TXM', noop=.true.)
         call c%key('ACCELERATION', 'TXM', into='AUTO FR FR+ FR++ LR LR+ LR++')  ! MUMPS
@@ -97,6 +111,21 @@ contains
         call c%key('PRETRAITEMENTS', 'TXM', noop=.true.)
         call c%key('FILTRAGE_MATRICE', 'R', noop=.true.)
         call c%key('MIXER_PRECISION', 'TXM', noop=.true.)
+        call c%bloc(key='METHODE', equals='GCPC')
+        call c%key('PRE_COND', 'TXM', def='LDLT_INC', into='LDLT_INC LDLT_SP LDLT_DP')
+        call c%key('NMAX_ITER', 'I', def='0', vmin=0.0_dp)
+        call c%key('NIVE_REMPLISSAGE', 'I', def='0', vmin=0.0_dp)
+        call c%key('REAC_PRECOND', 'I', noop=.true.)
+        call c%end_bloc()
+        call c%bloc(key='METHODE', equals='PETSC')
+        call c%key('ALGORITHME', 'TXM', def='FGMRES', into='CG CR GMRES GCR FGMRES GMRES_LMP')
+        call c%key('PRE_COND', 'TXM', def='LDLT_SP', into=PETSC_PRE_COND)
+        call c%key('NMAX_ITER', 'I', def='0', vmin=0.0_dp)
+        call c%key('NIVE_REMPLISSAGE', 'I', def='0', vmin=0.0_dp)
+        call c%key('REMPLISSAGE', 'R', noop=.true.)
+        call c%key('REAC_PRECOND', 'I', noop=.true.)
+        call c%key('OPTION_PETSC', 'TXM')
+        call c%end_bloc()
         call c%end_fact()
     end subroutine describe_solver
 

@@ -5,6 +5,7 @@
 module catalog_functions
     use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI
     use number_limits, only: MAX_INSTANT
+    use catalog_result_functions, only: PARA_FONCTION
     implicit none
     private
     public :: describe_functions
@@ -19,8 +20,9 @@ contains
         call c%key('VALE', 'R', req=.true.)
 
         call c%command('DEFI_FONCTION', 'fonction')
-        call c%key('NOM_PARA', 'TXM', req=.true., &
-                   into='INST X Y Z ABSC EPSI SIGM TEMP DX DY DZ FREQ PULS')
+        ! Any name of Code_Aster's C_PARA_FONCTION: the function keeps it as a label;
+        ! the consumer (a load, a material, a table) decides which variable it binds.
+        call c%key('NOM_PARA', 'TXM', req=.true., into=PARA_FONCTION)
         call c%key('NOM_RESU', 'TXM', def='TOUTRESU')
         call c%key('VALE', 'R', min=2, max=MANY)
         call c%key('ABSCISSE', 'R', max=MANY)

@@ -1,10 +1,11 @@
-!> The catalog of the mesh commands: LIRE_MAILLAGE, DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE.
+!> The catalog of the mesh commands: LIRE_MAILLAGE, PRE_GIBI, DEFI_GROUP, MODI_MAILLAGE,
+!> CREA_MAILLAGE.
 !> Part of THE command catalog (deck_catalog_data gathers the parts): keywords, types,
 !> cardinality, defaults, allowed values, rules and conditional blocks as Code_Aster's own
 !> catalog describes them (code_aster/Cata/Commands/lire_maillage.py, defi_group.py,
 !> modi_maillage.py, crea_maillage.py; U4.21.01, U4.22.01, U4.23.04, U4.23.02), for the
 !> options parasol builds. Options of Code_Aster that need what parasol does not have
-!> (X-FEM cracks, prestressing cables, volume cells, fields) are left out, so a deck naming
+!> (X-FEM cracks, prestressing cables, volume cells) are left out, so a deck naming
 !> one is told at its keyword.
 !>
 !> DEFI_GROUP and MODI_MAILLAGE modify their mesh in place (Code_Aster's reentrant='o:...':
@@ -31,6 +32,7 @@ contains
     subroutine describe_mesh_commands(c)
         type(catalog_t), intent(inout) :: c
         call describe_lire_maillage(c)
+        call describe_pre_gibi(c)
         call describe_defi_group(c)
         call describe_modi_maillage(c)
         call describe_crea_maillage(c)
@@ -57,10 +59,19 @@ contains
         call c%key('PARTITIONNEUR', 'TXM', def='SANS', into='SANS PTSCOTCH', noop=.true.)
         call c%end_bloc()
         call c%bloc(key='FORMAT', equals='IDEAS')
-        call c%key('CREA_GROUP_COUL', 'TXM', def='NON', into=OUI_NON, noop=.true.)
+        call c%key('CREA_GROUP_COUL', 'TXM', def='NON', into=OUI_NON)
         call c%end_bloc()
         call c%key('INFO', 'I', def='1', into='0 1 2')
     end subroutine describe_lire_maillage
+
+    ! PRE_GIBI (pre_gibi.py): the GIBI file on UNITE_GIBI converted to a .mail on
+    ! UNITE_MAILLAGE, which a later LIRE_MAILLAGE(FORMAT='ASTER') reads.
+    subroutine describe_pre_gibi(c)
+        type(catalog_t), intent(inout) :: c
+        call c%command('PRE_GIBI', '')
+        call c%key('UNITE_GIBI', 'I', def='19', vmin=2.0_dp)
+        call c%key('UNITE_MAILLAGE', 'I', def='20', vmin=2.0_dp)
+    end subroutine describe_pre_gibi
 
     ! DEFI_GROUP (defi_group.py): DETR_GROUP_* first, then CREA_GROUP_MA, then CREA_GROUP_NO,
     ! each occurrence seeing the groups of the earlier ones (op0104).
@@ -237,15 +248,22 @@ contains
         type(catalog_t), intent(inout) :: c
         call c%command('MODI_MAILLAGE', 'maillage', reentrant='o:MAILLAGE')
         call c%key('MAILLAGE', 'maillage', req=.true.)
-        call c%rule(RULE_AU_MOINS_UN, 'ORIE_PEAU ORIE_NORM_COQUE TRANSLATION ROTATION ' // &
-                    'MODI_BASE ECHELLE SYMETRIE ORIE_LIGNE')
-        call c%rule(RULE_PRESENT_ABSENT, 'ORIE_PEAU ORIE_NORM_COQUE ORIE_LIGNE')
-        call c%rule(RULE_PRESENT_ABSENT, 'ORIE_NORM_COQUE ORIE_PEAU ORIE_LIGNE')
+        call c%rule(RULE_AU_MOINS_UN, 'DEFORME ORIE_PEAU ORIE_NORM_COQUE TRANSLATION ' // &
+                    'ROTATION MODI_BASE ECHELLE SYMETRIE ORIE_LIGNE')
+        call c%rule(RULE_PRESENT_ABSENT, 'DEFORME ORIE_PEAU ORIE_NORM_COQUE ORIE_LIGNE')
+        call c%rule(RULE_PRESENT_ABSENT, 'ORIE_PEAU DEFORME ORIE_NORM_COQUE ORIE_LIGNE')
+        call c%rule(RULE_PRESENT_ABSENT, 'ORIE_NORM_COQUE DEFORME ORIE_PEAU ORIE_LIGNE')
         call c%rule(RULE_EXCLUS, 'ROTATION MODI_BASE')
         call c%rule(RULE_EXCLUS, 'SYMETRIE ROTATION')
         call c%rule(RULE_EXCLUS, 'SYMETRIE TRANSLATION')
         call c%rule(RULE_EXCLUS, 'SYMETRIE MODI_BASE')
         call c%rule(RULE_EXCLUS, 'SYMETRIE ECHELLE')
+        call c%fact('DEFORME')
+        call c%key('OPTION', 'TXM', req=.true., into='TRAN')
+        call c%rule(RULE_UN_PARMI, 'DEPL ALEA')
+        call c%key('DEPL', 'cham_no_sdaster')
+        call c%key('ALEA', 'R', vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%end_fact()
         call c%fact('ORIE_PEAU', max=MANY)
         call c%key('GROUP_MA_PEAU', 'TXM', max=MANY, req=.true.)
         call c%key('GROUP_MA_INTERNE', 'TXM', max=MANY)
@@ -290,7 +308,8 @@ contains
         type(catalog_t), intent(inout) :: c
         call c%command('CREA_MAILLAGE', 'maillage')
         call c%key('MAILLAGE', 'maillage', req=.true.)
-        call c%rule(RULE_UN_PARMI, 'CREA_MAILLE CREA_POI1 LINE_QUAD MODI_MAILLE QUAD_LINE')
+        call c%rule(RULE_UN_PARMI, 'CREA_MAILLE CREA_POI1 LINE_QUAD MODI_MAILLE QUAD_LINE ' // &
+                    'RESTREINT')
         call c%fact('CREA_POI1', max=MANY)
         call c%rule(RULE_AU_MOINS_UN, 'TOUT GROUP_MA GROUP_NO NOEUD')
         call c%key('NOM_GROUP_MA', 'TXM', max=MANY)
@@ -323,6 +342,12 @@ contains
         call c%rule(RULE_EXCLUS, 'TOUT GROUP_MA')
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%end_fact()
+        call c%fact('RESTREINT')
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call c%key('TOUT_GROUP_MA', 'TXM', def='NON', into=OUI_NON)
+        call c%key('GROUP_NO', 'TXM', max=MANY)
+        call c%key('TOUT_GROUP_NO', 'TXM', def='NON', into=OUI_NON)
         call c%end_fact()
         call c%key('TITRE', 'TXM')
         call c%key('INFO', 'I', def='1', into='1 2')

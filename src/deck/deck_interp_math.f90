@@ -109,7 +109,8 @@ contains
             if (st%failed()) return
             scale = 180.0_dp / PI_VALUE
             if (bare == 'radians') scale = PI_VALUE / 180.0_dp
-            if (abs(xs(1)) > huge(1.0_dp) / scale) then
+            ! huge / scale overflows when scale < 1 (radians): only degrees can overflow
+            if (scale > 1.0_dp .and. abs(xs(1)) > huge(1.0_dp) / scale) then
                 call fail(st, ctx, id, math_message(MATH_OVERFLOW, bare // '()')); return
             end if
             v = real_value(xs(1) * scale)

@@ -25,7 +25,7 @@ module mesh_aster_reader
     implicit none
     private
 
-    public :: read_aster_mesh
+    public :: read_aster_mesh, read_aster_text
 
     !> Cell types that Code_Aster knows and parasol refuses by name.
     character(len=7), parameter :: OTHER_CELL_TYPES(12) = ['SEG4   ', 'TRIA7  ', &
@@ -48,12 +48,32 @@ contains
         type(mesh_t), intent(out) :: mesh
         type(status_t), intent(out) :: st
         type(text_lexer_t) :: lex
+        call open_lexer(lex, path, st)
+        if (st%failed()) return
+        call read_lexer(lex, mesh, st)
+    end subroutine read_aster_mesh
+
+    !> Reads .mail text held in memory (what PRE_GIBI makes of a GIBI file) into `mesh`.
+    !>  name : in, what messages call the text (`name:LINE: ...`) and mesh%file
+    subroutine read_aster_text(text, name, mesh, st)
+        character(len=*), intent(in) :: text, name
+        type(mesh_t), intent(out) :: mesh
+        type(status_t), intent(out) :: st
+        type(text_lexer_t) :: lex
+        lex%text = text
+        lex%file = name
+        call read_lexer(lex, mesh, st)
+    end subroutine read_aster_text
+
+    ! The sub-files of `lex` to FIN, then the mesh checked (mesh_finish).
+    subroutine read_lexer(lex, mesh, st)
+        type(text_lexer_t), intent(inout) :: lex
+        type(mesh_t), intent(out) :: mesh
+        type(status_t), intent(inout) :: st
         integer(i4) :: first, last, dim
         logical :: found_fin
         character(len=:), allocatable :: word
-        call open_lexer(lex, path, st)
-        if (st%failed()) return
-        call mesh_init(mesh, 3_i4, path)
+        call mesh_init(mesh, 3_i4, lex%file)
         dim = 0
         found_fin = .false.
         do while (.not. at_end(lex))
@@ -72,12 +92,12 @@ contains
         end do
         if (.not. found_fin) then
             call set_error(st, STATUS_MESH_ERROR, 'no FIN at the end of the mesh file ' // &
-                '(the file is truncated?)', file=path, line=lex%line)
+                '(the file is truncated?)', file=lex%file, line=lex%line)
             return
         end if
         mesh%dim = max(dim, 2_i4)
         call mesh_finish(mesh, lex%line, st)
-    end subroutine read_aster_mesh
+    end subroutine read_lexer
 
     ! Dispatches on the sub-file keyword `word` (already consumed) and reads to FINSF.
     subroutine read_sub_file(lex, mesh, word, dim, st)
@@ -286,18 +306,23 @@ contains
             end if
             name = lex%text(first:last)
             header_line = lex%line
-            call next_line(lex)
+            ! members may follow the name on its line (PRE_GIBI writes `A  N1`)
+            call next_token(lex, first, last)
+        else
+            first = 0
         end if
         allocate (members(64))
         n = 0
         do while (.not. at_end(lex))
-            if (at_finsf(lex, first, last)) then
-                if (of_nodes) then
-                    call mesh_add_node_group(mesh, name, members(1:n), header_line, st)
-                else
-                    call mesh_add_cell_group(mesh, name, members(1:n), header_line, st)
+            if (first == 0) then   ! a new line (else: the rest of the name's line)
+                if (at_finsf(lex, first, last)) then
+                    if (of_nodes) then
+                        call mesh_add_node_group(mesh, name, members(1:n), header_line, st)
+                    else
+                        call mesh_add_cell_group(mesh, name, members(1:n), header_line, st)
+                    end if
+                    return
                 end if
-                return
             end if
             do while (first > 0)
                 if (n == size(members)) members = [members, members]

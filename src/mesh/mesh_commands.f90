@@ -1,4 +1,5 @@
-!> Command handler of the mesh layer: LIRE_MAILLAGE (doc/deck-language.md).
+!> Command handlers of the mesh layer: LIRE_MAILLAGE, PRE_GIBI (doc/deck-language.md,
+!> doc/mesh-commands.md).
 module mesh_commands
     use kinds, only: i4
     use status, only: status_t, STATUS_IO_ERROR, STATUS_NOT_IMPLEMENTED
@@ -10,6 +11,8 @@ module mesh_commands
     use mesh_reader, only: read_mesh
     use mesh_concept, only: mesh_concept_t
     use mesh_command_support, only: relocate_error
+    use mesh_gibi_reader, only: gibi_to_aster
+    use atomic_file, only: atomic_file_t, open_atomic
     implicit none
     private
 
@@ -17,12 +20,13 @@ module mesh_commands
     !> .med (Salome's and most tools' name) and .mmed (Code_Aster's test suite's name).
     character(len=*), parameter :: MED_EXTENSIONS(2) = ['.med ', '.mmed']
 
-    public :: run_lire_maillage
+    public :: run_lire_maillage, run_pre_gibi
 
 contains
 
-    !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH', UNITE=20, NOM_MED): reads the mesh file
-    !> (FORMAT='GIBI' and 'IDEAS', in Code_Aster's catalog, are refused at FORMAT), the
+    !> LIRE_MAILLAGE(FORMAT='MED'|'ASTER'|'GMSH'|'GIBI'|'IDEAS', UNITE=20, NOM_MED,
+    !> CREA_GROUP_COUL): reads the mesh file (GIBI as PRE_GIBI converts it, IDEAS as
+    !> PRE_IDEAS does: mesh_ideas_reader), the
     !> parallel and bookkeeping keywords (PARTITIONNEUR, INFO_MED, VERI_MAIL) having no effect;
     !> bound to UNITE (ctx%unit_path; MED is the default FORMAT, as in Code_Aster) and writes
     !> its summary (nodes, cells per type, groups with sizes, bounding box) to the .mess.
@@ -41,17 +45,18 @@ contains
         class(concept_t), allocatable, intent(out) :: result
         type(status_t), intent(out) :: st
         type(mesh_concept_t), allocatable :: mc
-        character(len=:), allocatable :: format, path, mesh_name
+        character(len=:), allocatable :: format, path, mesh_name, colours
         character(len=100), allocatable :: lines(:)
         type(string_t), allocatable :: notes(:)
         integer(i4) :: unit, k
         logical :: exists
         call cmd%get_text('FORMAT', format, st)
         if (st%failed()) return
-        if (format /= 'MED' .and. format /= 'ASTER' .and. format /= 'GMSH') then
+        if (format /= 'MED' .and. format /= 'ASTER' .and. format /= 'GMSH' .and. &
+            format /= 'GIBI' .and. format /= 'IDEAS') then
             call cmd%error_at('FORMAT', 'parasol does not read the ' // format // &
-                ' format (it reads MED, ASTER and GMSH meshes: convert the mesh to one ' // &
-                'of them)', st, code=STATUS_NOT_IMPLEMENTED)
+                ' format (it reads MED, ASTER, GMSH, GIBI and IDEAS meshes: convert the ' // &
+                'mesh to one of them)', st, code=STATUS_NOT_IMPLEMENTED)
             return
         end if
         call cmd%get_int('UNITE', unit, st)
@@ -77,8 +82,14 @@ contains
                 call locate_med_error(cmd, st)
                 return
             end if
+        else if (format == 'IDEAS') then
+            call cmd%get_text('CREA_GROUP_COUL', colours, st)
+            if (st%failed()) return
+            call read_mesh(path, mc%mesh, st, format, notes=notes, &
+                           colour_groups=colours == 'OUI')
+            if (st%failed()) return
         else
-            call read_mesh(path, mc%mesh, st, format)
+            call read_mesh(path, mc%mesh, st, format, notes=notes)
             if (st%failed()) return
         end if
         lines = mesh_summary(mc%mesh)
@@ -92,6 +103,66 @@ contains
         end if
         call move_alloc(mc, result)
     end subroutine run_lire_maillage
+
+    !> PRE_GIBI(UNITE_GIBI=19, UNITE_MAILLAGE=20): the GIBI file of UNITE_GIBI converted as
+    !> Code_Aster converts it (mesh_gibi_reader) and written as a .mail on UNITE_MAILLAGE: the
+    !> file bound to that unit (replaced, as Code_Aster replaces it), else <stem>.<unit> in
+    !> the output folder, the unit then bound to it so that LIRE_MAILLAGE(FORMAT='ASTER',
+    !> UNITE=...) reads it. Cells of every type Cast3M has are written (LIRE_MAILLAGE refuses
+    !> those parasol's meshes do not hold).
+    !>  st : out, an unbound UNITE_GIBI or a missing file at UNITE_GIBI; errors in the GIBI
+    !>       file at its line; a file that cannot be written at UNITE_MAILLAGE
+    subroutine run_pre_gibi(ctx, cmd, result, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        class(concept_t), allocatable, intent(out) :: result
+        type(status_t), intent(out) :: st
+        integer(i4) :: unit_in, unit_out, k
+        character(len=:), allocatable :: path, out_path, text
+        type(string_t), allocatable :: notes(:)
+        type(atomic_file_t) :: file
+        logical :: exists, bound
+        if (allocated(result)) deallocate (result)
+        call cmd%get_int('UNITE_GIBI', unit_in, st)
+        if (st%ok()) call cmd%get_int('UNITE_MAILLAGE', unit_out, st)
+        if (st%failed()) return
+        call ctx%unit_path(unit_in, 'GIBI', path, st)
+        if (st%failed()) then
+            call relocate_error(cmd, 'UNITE_GIBI', st)
+            return
+        end if
+        inquire (file=path, exist=exists)
+        if (.not. exists) then
+            call cmd%error_at('UNITE_GIBI', 'GIBI file ' // path // ' (unit ' // &
+                to_text(unit_in) // ') does not exist', st, code=STATUS_IO_ERROR)
+            return
+        end if
+        call gibi_to_aster(path, text, notes, st)
+        if (st%failed()) return
+        bound = .false.
+        if (allocated(ctx%unit_numbers)) bound = any(ctx%unit_numbers == unit_out)
+        if (bound) then
+            call ctx%unit_path(unit_out, 'ASTER', out_path, st)
+            if (st%failed()) return
+        else
+            out_path = ctx%output_path('.' // to_text(unit_out))
+        end if
+        call open_atomic(file, out_path, st)
+        if (st%ok()) then
+            call file%write_text(text)
+            call file%commit(st)
+        end if
+        if (st%failed()) then
+            call relocate_error(cmd, 'UNITE_MAILLAGE', st)
+            return
+        end if
+        if (.not. bound) call ctx%bind_unit(unit_out, out_path)
+        call ctx%write_mess('    PRE_GIBI: ' // path // ' written as a .mail to ' // out_path // &
+                            ' (unit ' // to_text(unit_out) // ')')
+        do k = 1, size(notes)
+            call ctx%write_mess('    ' // notes(k)%s)
+        end do
+    end subroutine run_pre_gibi
 
     ! The file of the mesh: the bound unit's path, or the default beside the deck.
     subroutine mesh_file_path(ctx, cmd, unit, format, path, st)

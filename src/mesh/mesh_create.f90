@@ -22,16 +22,15 @@
 !> Names: entities that keep their number keep their name; new ones, and all of a family
 !> that is numbered again, are named N<number> / M<number> (Code_Aster's meshes name them by
 !> number), with a suffix when such a name is taken. Every operation is O(n) (edges found
-!> in a hash table).
+!> through the node-to-edge lists of edge_table_t).
 module mesh_create
     use kinds, only: dp, i4, i8
-    use status, only: status_t
-    use strings, only: to_text
-    use mesh_types, only: mesh_t, mesh_init, mesh_add_node, mesh_add_cell, &
-        mesh_add_node_group, mesh_add_cell_group, mesh_finish, node_name, cell_name, &
-        node_group_name, cell_group_name, n_node_groups, n_cell_groups, nodes_of_group, &
-        cells_of_group
-    use mesh_name_index, only: name_index_t, name_find
+    use status, only: status_t, clear_status
+    use mesh_types, only: mesh_t, mesh_add_node, mesh_add_cell, mesh_add_node_group, &
+        mesh_add_cell_group, mesh_finish, node_group_name, cell_group_name, n_node_groups, &
+        n_cell_groups, nodes_of_group, cells_of_group, mesh_remove_node_groups, &
+        mesh_remove_cell_groups
+    use mesh_name_index, only: name_index_t, name_find, name_add, numbered_name
     use mesh_cell_shapes, only: CELL_POI1, CELL_SEG2, CELL_SEG3, CELL_TRIA3, CELL_TRIA6, &
         CELL_QUAD4, CELL_QUAD8, CELL_QUAD9, CELL_TYPE_CORNERS, CELL_TYPE_NODES, &
         CELL_TYPE_LINEAR, cell_type_is_quadratic
@@ -41,11 +40,13 @@ module mesh_create
     public :: add_point_cells, duplicate_cells, split_quadrangles, add_face_centres, &
         to_quadratic, to_linear
 
-    !> Edges -> mid nodes (open addressing on the key min*(n+1)+max of their end nodes).
+    !> Edges -> mid nodes: for each node, the edges whose smaller end it is (their other
+    !> end and mid node), in compressed rows sized by a first count of the cells' edges.
+    !> Looking an edge up scans a handful of entries stored near those of neighbouring nodes,
+    !> so a structured mesh is walked through memory in order (a hash table's random probes
+    !> cost a cache miss each).
     type :: edge_table_t
-        integer(i8), allocatable :: keys(:)
-        integer(i4), allocatable :: mids(:)
-        integer(i8) :: stride = 0
+        integer(i4), allocatable :: ptr(:), fill(:), other(:), mid(:)
     end type edge_table_t
 
 contains
@@ -60,9 +61,7 @@ contains
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: point_cell(:), members(:)
         integer(i4) :: n, c, o
-        call copy_nodes(mesh, out, st)
-        if (st%ok()) call copy_cells(mesh, out, st)
-        if (st%failed()) return
+        out = mesh
         allocate (point_cell(mesh%n_nodes), source=0_i4)
         c = mesh%n_cells
         do n = 1, mesh%n_nodes
@@ -72,15 +71,13 @@ contains
             if (st%failed()) return
             point_cell(n) = c
         end do
-        call copy_groups(mesh, out, st)
-        if (st%failed()) return
         do o = 1, size(names)
             if (len_trim(names(o)) == 0) cycle
             members = pack(point_cell, chosen(:, o))
             call mesh_add_cell_group(out, trim(names(o)), members, 0, st)
             if (st%failed()) return
         end do
-        call mesh_finish(out, 0, st)
+        call mesh_finish(out, 0, st, check_cells=.false.)
     end subroutine add_point_cells
 
     !> CREA_MAILLE: copies of the cells of each occurrence (`cells(ptr(o):ptr(o+1)-1)`) after
@@ -93,26 +90,23 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: o, i, c
         integer(i4), allocatable :: members(:)
-        call copy_nodes(mesh, out, st)
-        if (st%ok()) call copy_cells(mesh, out, st)
-        if (st%failed()) return
+        out = mesh
         c = mesh%n_cells
         do i = 1, size(cells, kind=i4)
             c = c + 1
             call mesh_add_cell(out, fresh_name(out%cell_names, 'M', c), &
-                mesh%cell_type(cells(i)), cell_nodes(mesh, cells(i)), &
+                mesh%cell_type(cells(i)), &
+                mesh%cell_nodes(mesh%cell_ptr(cells(i)):mesh%cell_ptr(cells(i) + 1) - 1), &
                 mesh%cell_line(cells(i)), st)
             if (st%failed()) return
         end do
-        call copy_groups(mesh, out, st)
-        if (st%failed()) return
         c = mesh%n_cells
         do o = 1, size(names)
             members = [(c + i, i = ptr(o), ptr(o + 1) - 1)]
             call mesh_add_cell_group(out, trim(names(o)), members, 0, st)
             if (st%failed()) return
         end do
-        call mesh_finish(out, 0, st)
+        call mesh_finish(out, 0, st, check_cells=.false.)
     end subroutine duplicate_cells
 
     !> QUAD_TRIA3 on the cells flagged in `chosen` (other types left as they are).
@@ -127,44 +121,67 @@ contains
         integer(i4), parameter :: Q4(3, 2) = reshape([1, 2, 3, 1, 3, 4], [3, 2])
         integer(i4), parameter :: Q8(3, 6) = reshape([1, 5, 8, 5, 2, 6, 6, 3, 7, 7, 4, 8, &
                                                       5, 7, 8, 5, 6, 7], [3, 6])
-        integer(i4), allocatable :: first(:), count(:), nodes(:), members(:), pieces(:, :)
-        integer(i4) :: c, k, m, g, i, t
-        call copy_nodes(mesh, out, st)
-        if (st%failed()) return
-        allocate (first(mesh%n_cells), count(mesh%n_cells))
-        m = 0
+        integer(i4), allocatable :: first(:), pieces(:), members(:), types(:), ptr(:), &
+            nodes(:), lines(:)
+        logical, allocatable :: every(:)
+        integer(i4) :: c, k, m, g, i, t, p0, q, total
+        type(name_index_t) :: names
+        allocate (first(mesh%n_cells + 1), pieces(mesh%n_cells))
         split = 0
         do c = 1, mesh%n_cells
-            nodes = cell_nodes(mesh, c)
             t = mesh%cell_type(c)
-            first(c) = m + 1
-            if (chosen(c) .and. (t == CELL_QUAD4 .or. t == CELL_QUAD8 .or. t == CELL_QUAD9)) then
-                split = split + 1
-                if (t == CELL_QUAD4) then
-                    pieces = Q4
-                else
-                    pieces = Q8
-                end if
-                count(c) = size(pieces, 2, kind=i4)
-                do k = 1, count(c)
-                    m = m + 1
-                    call mesh_add_cell(out, 'M' // to_text(m), CELL_TRIA3, nodes(pieces(:, k)), &
-                                       mesh%cell_line(c), st)
-                    if (st%failed()) return
-                end do
-            else
-                count(c) = 1
-                m = m + 1
-                call mesh_add_cell(out, 'M' // to_text(m), t, nodes, mesh%cell_line(c), st)
-                if (st%failed()) return
-            end if
+            pieces(c) = 1
+            if (chosen(c) .and. t == CELL_QUAD4) pieces(c) = 2
+            if (chosen(c) .and. (t == CELL_QUAD8 .or. t == CELL_QUAD9)) pieces(c) = 6
+            if (pieces(c) > 1) split = split + 1
         end do
-        call copy_node_groups(mesh, out, st)
-        if (st%failed()) return
+        first(1) = 1
+        do c = 1, mesh%n_cells
+            first(c + 1) = first(c) + pieces(c)
+        end do
+        total = first(mesh%n_cells + 1) - 1
+        allocate (types(total), ptr(total + 1), lines(total))
+        allocate (nodes(size(mesh%cell_nodes) + 3 * 6 * split))
+        ptr(1) = 1
+        m = 0
+        do c = 1, mesh%n_cells
+            p0 = mesh%cell_ptr(c) - 1
+            do k = 1, pieces(c)
+                m = m + 1
+                lines(m) = mesh%cell_line(c)
+                q = ptr(m)
+                if (pieces(c) == 1) then
+                    types(m) = mesh%cell_type(c)
+                    i = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+                    nodes(q:q + i - 1) = mesh%cell_nodes(p0 + 1:p0 + i)
+                else
+                    types(m) = CELL_TRIA3
+                    i = 3
+                    if (pieces(c) == 2) then
+                        nodes(q:q + 2) = mesh%cell_nodes(p0 + Q4(:, k))
+                    else
+                        nodes(q:q + 2) = mesh%cell_nodes(p0 + Q8(:, k))
+                    end if
+                end if
+                ptr(m + 1) = q + i
+            end do
+        end do
+        do m = 1, total
+            call name_add(names, numbered_name('M', m), i)
+        end do
+        out = mesh
+        out%n_cells = total
+        call move_alloc(types, out%cell_type)
+        call move_alloc(ptr, out%cell_ptr)
+        call move_alloc(lines, out%cell_line)
+        out%cell_nodes = nodes(1:out%cell_ptr(total + 1) - 1)
+        out%cell_names = names
+        ! a group holding a quadrangle holds its pieces, members in cell order
+        allocate (every(n_cell_groups(mesh)), source=.true.)
+        call mesh_remove_cell_groups(out, every)
         do g = 1, n_cell_groups(mesh)
-            ! members in cell order, each cell by its pieces
             members = sort_unique(cells_of_group(mesh, g), mesh%n_cells)
-            members = [((first(members(i)) + k - 1, k = 1, count(members(i))), &
+            members = [((first(members(i)) + k - 1, k = 1, pieces(members(i))), &
                         i = 1, size(members))]
             call mesh_add_cell_group(out, cell_group_name(mesh, g), members, &
                                      mesh%cell_group_line(g), st)
@@ -181,38 +198,30 @@ contains
         type(mesh_t), intent(out) :: out
         integer(i4), intent(out) :: added
         type(status_t), intent(out) :: st
-        integer(i4), allocatable :: centre(:), nodes(:)
-        integer(i4) :: i, c, n
+        integer(i4), allocatable :: extra(:, :)
+        integer(i4), allocatable :: new_type(:)
+        integer(i4) :: i, c, n, p0
         real(dp) :: x(3)
-        call copy_nodes(mesh, out, st)
-        if (st%failed()) return
-        allocate (centre(mesh%n_cells), source=0_i4)
+        out = mesh
+        allocate (extra(4, mesh%n_cells), source=0_i4)
+        new_type = mesh%cell_type
         n = mesh%n_nodes
         added = 0
         do i = 1, size(cells, kind=i4)
             c = cells(i)
-            if (mesh%cell_type(c) /= CELL_QUAD8 .or. centre(c) > 0) cycle
-            nodes = cell_nodes(mesh, c)
-            x = 0.5_dp * sum(mesh%coords(:, nodes(5:8)), dim=2) &
-                - 0.25_dp * sum(mesh%coords(:, nodes(1:4)), dim=2)
+            if (mesh%cell_type(c) /= CELL_QUAD8 .or. extra(1, c) > 0) cycle
+            p0 = mesh%cell_ptr(c) - 1
+            x = 0.5_dp * sum(mesh%coords(:, mesh%cell_nodes(p0 + 5:p0 + 8)), dim=2) &
+                - 0.25_dp * sum(mesh%coords(:, mesh%cell_nodes(p0 + 1:p0 + 4)), dim=2)
             n = n + 1
-            call mesh_add_node(out, fresh_name(out%node_names, 'N', n), x, 0, st)
+            call add_named_node(out, n, x, st)
             if (st%failed()) return
-            centre(c) = n
+            extra(1, c) = n
+            new_type(c) = CELL_QUAD9
             added = added + 1
         end do
-        do c = 1, mesh%n_cells
-            if (centre(c) > 0) then
-                call mesh_add_cell(out, cell_name(mesh, c), CELL_QUAD9, &
-                    [cell_nodes(mesh, c), centre(c)], mesh%cell_line(c), st)
-            else
-                call mesh_add_cell(out, cell_name(mesh, c), mesh%cell_type(c), &
-                    cell_nodes(mesh, c), mesh%cell_line(c), st)
-            end if
-            if (st%failed()) return
-        end do
-        call copy_groups(mesh, out, st)
-        if (st%ok()) call mesh_finish(out, 0, st)
+        call set_connectivity(mesh, out, new_type, extra)
+        call mesh_finish(out, 0, st, check_cells=.false.)
     end subroutine add_face_centres
 
     !> LINE_QUAD on the cells flagged in `chosen`.
@@ -224,23 +233,24 @@ contains
         integer(i4), intent(out) :: converted
         type(status_t), intent(out) :: st
         type(edge_table_t) :: edges
-        integer(i4), allocatable :: nodes(:), mids(:, :)
-        integer(i4) :: c, k, nv, n, a, b, t, mid
-        real(dp), allocatable :: new_coords(:, :)
-        call edge_table_init(edges, mesh%n_nodes, 4 * mesh%n_cells + 8)
+        integer(i4), allocatable :: mids(:, :), new_type(:)
+        integer(i4) :: c, k, nv, ne, n, a, b, t, mid, p0
+        call edge_table_init(edges, mesh, chosen)
         ! the mid nodes quadratic cells already have on their edges
         do c = 1, mesh%n_cells
             t = mesh%cell_type(c)
             if (.not. cell_type_is_quadratic(t)) cycle
-            nodes = cell_nodes(mesh, c)
+            p0 = mesh%cell_ptr(c) - 1
             nv = CELL_TYPE_CORNERS(t)
             do k = 1, merge(1, nv, nv == 2)
-                call edge_table_put(edges, nodes(k), nodes(mod(k, nv) + 1), nodes(nv + k))
+                call edge_table_put(edges, mesh%cell_nodes(p0 + k), &
+                    mesh%cell_nodes(p0 + mod(k, nv) + 1), mesh%cell_nodes(p0 + nv + k))
             end do
         end do
         ! new mid nodes, in the order of the cells and of their edges
+        out = mesh
         allocate (mids(4, mesh%n_cells), source=0_i4)
-        allocate (new_coords(3, 4 * count(chosen)))
+        new_type = mesh%cell_type
         n = mesh%n_nodes
         converted = 0
         do c = 1, mesh%n_cells
@@ -248,49 +258,34 @@ contains
             if (.not. chosen(c) .or. .not. (t == CELL_SEG2 .or. t == CELL_TRIA3 .or. &
                                              t == CELL_QUAD4)) cycle
             converted = converted + 1
-            nodes = cell_nodes(mesh, c)
+            p0 = mesh%cell_ptr(c) - 1
             nv = CELL_TYPE_CORNERS(t)
-            do k = 1, merge(1, nv, nv == 2)
-                a = nodes(k)
-                b = nodes(mod(k, nv) + 1)
+            ne = merge(1, nv, nv == 2)
+            do k = 1, ne
+                a = mesh%cell_nodes(p0 + k)
+                b = mesh%cell_nodes(p0 + mod(k, nv) + 1)
                 mid = edge_table_get(edges, a, b)
                 if (mid == 0) then
                     n = n + 1
                     mid = n
-                    new_coords(:, n - mesh%n_nodes) = 0.5_dp * (mesh%coords(:, a) + &
-                                                                mesh%coords(:, b))
+                    call add_named_node(out, n, 0.5_dp * (mesh%coords(:, a) + &
+                                                          mesh%coords(:, b)), st)
+                    if (st%failed()) return
                     call edge_table_put(edges, a, b, mid)
                 end if
                 mids(k, c) = mid
             end do
+            select case (t)
+            case (CELL_SEG2)
+                new_type(c) = CELL_SEG3
+            case (CELL_TRIA3)
+                new_type(c) = CELL_TRIA6
+            case default
+                new_type(c) = CELL_QUAD8
+            end select
         end do
-        call copy_nodes(mesh, out, st)
-        if (st%failed()) return
-        do k = mesh%n_nodes + 1, n
-            call mesh_add_node(out, fresh_name(out%node_names, 'N', k), &
-                               new_coords(:, k - mesh%n_nodes), 0, st)
-            if (st%failed()) return
-        end do
-        do c = 1, mesh%n_cells
-            t = mesh%cell_type(c)
-            nodes = cell_nodes(mesh, c)
-            if (mids(1, c) > 0) then
-                nv = CELL_TYPE_CORNERS(t)
-                select case (t)
-                case (CELL_SEG2)
-                    t = CELL_SEG3
-                case (CELL_TRIA3)
-                    t = CELL_TRIA6
-                case default
-                    t = CELL_QUAD8
-                end select
-                nodes = [nodes, mids(1:merge(1, nv, nv == 2), c)]
-            end if
-            call mesh_add_cell(out, cell_name(mesh, c), t, nodes, mesh%cell_line(c), st)
-            if (st%failed()) return
-        end do
-        call copy_groups(mesh, out, st)
-        if (st%ok()) call mesh_finish(out, 0, st)
+        call set_connectivity(mesh, out, new_type, mids)
+        call mesh_finish(out, 0, st, check_cells=.false.)
     end subroutine to_quadratic
 
     !> QUAD_LINE on the cells flagged in `chosen`.
@@ -301,20 +296,23 @@ contains
         type(mesh_t), intent(out) :: out
         integer(i4), intent(out) :: converted, removed
         type(status_t), intent(out) :: st
-        logical, allocatable :: in_cell(:), used(:), linear(:)
-        integer(i4), allocatable :: new_number(:), nodes(:), members(:)
-        integer(i4) :: c, n, k, g, t
+        logical, allocatable :: in_cell(:), used(:), every(:)
+        integer(i4), allocatable :: new_number(:), new_type(:), ptr(:), nodes(:), members(:)
+        integer(i4) :: c, n, k, g, t, p0, nn, i
+        type(name_index_t) :: names
         allocate (in_cell(mesh%n_nodes), used(mesh%n_nodes), source=.false.)
-        allocate (linear(mesh%n_cells))
+        new_type = mesh%cell_type
         converted = 0
         do c = 1, mesh%n_cells
             t = mesh%cell_type(c)
-            linear(c) = chosen(c) .and. cell_type_is_quadratic(t)
-            if (linear(c)) converted = converted + 1
-            nodes = cell_nodes(mesh, c)
-            in_cell(nodes) = .true.
-            if (linear(c)) nodes = nodes(1:CELL_TYPE_CORNERS(t))
-            used(nodes) = .true.
+            p0 = mesh%cell_ptr(c) - 1
+            nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+            in_cell(mesh%cell_nodes(p0 + 1:p0 + nn)) = .true.
+            if (chosen(c) .and. cell_type_is_quadratic(t)) then
+                new_type(c) = CELL_TYPE_LINEAR(t)
+                converted = converted + 1
+            end if
+            used(mesh%cell_nodes(p0 + 1:p0 + CELL_TYPE_NODES(new_type(c)))) = .true.
         end do
         ! kept: the nodes of the cells as they will be, and those of no cell before
         used = used .or. .not. in_cell
@@ -326,106 +324,79 @@ contains
             new_number(n) = k
         end do
         removed = mesh%n_nodes - k
-        call mesh_init(out, mesh%dim, mesh%file)
-        out%title = mesh%title
-        do n = 1, mesh%n_nodes
-            if (.not. used(n)) cycle
-            if (removed > 0) then
-                call mesh_add_node(out, 'N' // to_text(new_number(n)), mesh%coords(:, n), 0, st)
-            else
-                call mesh_add_node(out, node_name(mesh, n), mesh%coords(:, n), 0, st)
-            end if
-            if (st%failed()) return
-        end do
+        out = mesh
+        if (removed > 0) then
+            out%coords = mesh%coords(:, pack([(n, n = 1, mesh%n_nodes)], used))
+            out%n_nodes = k
+            do n = 1, k
+                call name_add(names, numbered_name('N', n), i)
+            end do
+            out%node_names = names
+        end if
+        allocate (ptr(mesh%n_cells + 1), nodes(size(mesh%cell_nodes)))
+        ptr(1) = 1
         do c = 1, mesh%n_cells
-            nodes = cell_nodes(mesh, c)
-            t = mesh%cell_type(c)
-            if (linear(c)) then
-                t = CELL_TYPE_LINEAR(t)
-                nodes = nodes(1:CELL_TYPE_NODES(t))
-            end if
-            call mesh_add_cell(out, cell_name(mesh, c), t, new_number(nodes), &
-                               mesh%cell_line(c), st)
-            if (st%failed()) return
+            p0 = mesh%cell_ptr(c) - 1
+            nn = CELL_TYPE_NODES(new_type(c))
+            nodes(ptr(c):ptr(c) + nn - 1) = new_number(mesh%cell_nodes(p0 + 1:p0 + nn))
+            ptr(c + 1) = ptr(c) + nn
         end do
-        do g = 1, n_node_groups(mesh)
-            members = nodes_of_group(mesh, g)
-            members = new_number(pack(members, used(members)))
-            if (size(members) == 0) cycle
-            call mesh_add_node_group(out, node_group_name(mesh, g), members, &
-                                     mesh%node_group_line(g), st)
-            if (st%failed()) return
-        end do
-        do g = 1, n_cell_groups(mesh)
-            call mesh_add_cell_group(out, cell_group_name(mesh, g), cells_of_group(mesh, g), &
-                                     mesh%cell_group_line(g), st)
-            if (st%failed()) return
-        end do
-        call mesh_finish(out, 0, st)
+        call move_alloc(new_type, out%cell_type)
+        call move_alloc(ptr, out%cell_ptr)
+        out%cell_nodes = nodes(1:out%cell_ptr(mesh%n_cells + 1) - 1)
+        if (removed > 0) then
+            allocate (every(n_node_groups(mesh)), source=.true.)
+            call mesh_remove_node_groups(out, every)
+            do g = 1, n_node_groups(mesh)
+                members = nodes_of_group(mesh, g)
+                members = new_number(pack(members, used(members)))
+                if (size(members) == 0) cycle
+                call mesh_add_node_group(out, node_group_name(mesh, g), members, &
+                                         mesh%node_group_line(g), st)
+                if (st%failed()) return
+            end do
+        end if
+        call mesh_finish(out, 0, st, check_cells=.false.)
     end subroutine to_linear
+
+    ! The connectivity of `out` made from `mesh`'s with each cell's type new_type(c) and its
+    ! nodes followed by the nonzero ones of extra(:, c) (mid-edge or centre nodes added).
+    subroutine set_connectivity(mesh, out, new_type, extra)
+        type(mesh_t), intent(in) :: mesh
+        type(mesh_t), intent(inout) :: out
+        integer(i4), allocatable, intent(inout) :: new_type(:)
+        integer(i4), intent(in) :: extra(:, :)
+        integer(i4), allocatable :: ptr(:), nodes(:)
+        integer(i4) :: c, p0, nn, ne
+        allocate (ptr(mesh%n_cells + 1), nodes(size(mesh%cell_nodes) + count(extra > 0)))
+        ptr(1) = 1
+        do c = 1, mesh%n_cells
+            p0 = mesh%cell_ptr(c) - 1
+            nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+            ne = count(extra(:, c) > 0, kind=i4)
+            nodes(ptr(c):ptr(c) + nn - 1) = mesh%cell_nodes(p0 + 1:p0 + nn)
+            nodes(ptr(c) + nn:ptr(c) + nn + ne - 1) = extra(1:ne, c)
+            ptr(c + 1) = ptr(c) + nn + ne
+        end do
+        call move_alloc(new_type, out%cell_type)
+        call move_alloc(ptr, out%cell_ptr)
+        call move_alloc(nodes, out%cell_nodes)
+    end subroutine set_connectivity
 
     ! ---- helpers -------------------------------------------------------------------------
 
-    ! The nodes of `mesh` into `out` (a new mesh of the same dimension and file).
-    subroutine copy_nodes(mesh, out, st)
-        type(mesh_t), intent(in) :: mesh
-        type(mesh_t), intent(out) :: out
-        type(status_t), intent(out) :: st
-        integer(i4) :: n
-        call mesh_init(out, mesh%dim, mesh%file)
-        out%title = mesh%title
-        do n = 1, mesh%n_nodes
-            call mesh_add_node(out, node_name(mesh, n), mesh%coords(:, n), 0, st)
-            if (st%failed()) return
-        end do
-    end subroutine copy_nodes
-
-    ! The cells of `mesh` into `out`, unchanged.
-    subroutine copy_cells(mesh, out, st)
-        type(mesh_t), intent(in) :: mesh
+    ! Node number n (the next one) named N<n>, or N<n>_<k> when that name is taken (the add
+    ! fails only for a taken name: the coordinates come from the mesh's own).
+    subroutine add_named_node(out, n, x, st)
         type(mesh_t), intent(inout) :: out
+        integer(i4), intent(in) :: n
+        real(dp), intent(in) :: x(3)
         type(status_t), intent(out) :: st
-        integer(i4) :: c
-        do c = 1, mesh%n_cells
-            call mesh_add_cell(out, cell_name(mesh, c), mesh%cell_type(c), &
-                               cell_nodes(mesh, c), mesh%cell_line(c), st)
-            if (st%failed()) return
-        end do
-    end subroutine copy_cells
-
-    ! Every group of `mesh` into `out`, members unchanged.
-    subroutine copy_groups(mesh, out, st)
-        type(mesh_t), intent(in) :: mesh
-        type(mesh_t), intent(inout) :: out
-        type(status_t), intent(out) :: st
-        integer(i4) :: g
-        call copy_node_groups(mesh, out, st)
-        if (st%failed()) return
-        do g = 1, n_cell_groups(mesh)
-            call mesh_add_cell_group(out, cell_group_name(mesh, g), cells_of_group(mesh, g), &
-                                     mesh%cell_group_line(g), st)
-            if (st%failed()) return
-        end do
-    end subroutine copy_groups
-
-    subroutine copy_node_groups(mesh, out, st)
-        type(mesh_t), intent(in) :: mesh
-        type(mesh_t), intent(inout) :: out
-        type(status_t), intent(out) :: st
-        integer(i4) :: g
-        do g = 1, n_node_groups(mesh)
-            call mesh_add_node_group(out, node_group_name(mesh, g), nodes_of_group(mesh, g), &
-                                     mesh%node_group_line(g), st)
-            if (st%failed()) return
-        end do
-    end subroutine copy_node_groups
-
-    function cell_nodes(mesh, c) result(nodes)
-        type(mesh_t), intent(in) :: mesh
-        integer(i4), intent(in) :: c
-        integer(i4), allocatable :: nodes(:)
-        nodes = mesh%cell_nodes(mesh%cell_ptr(c):mesh%cell_ptr(c + 1) - 1)
-    end function cell_nodes
+        call mesh_add_node(out, numbered_name('N', n), x, 0, st)
+        if (st%ok()) return
+        call clear_status(st)
+        call mesh_add_node(out, fresh_name(out%node_names, 'N', n), x, 0, st)
+    end subroutine add_named_node
 
     ! prefix<number>, or prefix<number>_<k> with the smallest k that makes it new.
     function fresh_name(names, prefix, number) result(name)
@@ -434,11 +405,11 @@ contains
         integer(i4), intent(in) :: number
         character(len=:), allocatable :: name
         integer(i4) :: k
-        name = prefix // to_text(number)
+        name = numbered_name(prefix, number)
         k = 0
         do while (name_find(names, name) > 0)
             k = k + 1
-            name = prefix // to_text(number) // '_' // to_text(k)
+            name = numbered_name(prefix, number) // numbered_name('_', k)
         end do
     end function fresh_name
 
@@ -453,51 +424,61 @@ contains
         b = pack([(i, i = 1, n)], seen)
     end function sort_unique
 
-    subroutine edge_table_init(table, n_nodes, capacity)
+    ! Room for the edges of the cells flagged in `take` (and those of every quadratic
+    ! cell).
+    subroutine edge_table_init(table, mesh, take)
         type(edge_table_t), intent(out) :: table
-        integer(i4), intent(in) :: n_nodes, capacity
-        integer(i8) :: size
-        size = 16
-        do while (size < 2_i8 * capacity)
-            size = 2 * size
+        type(mesh_t), intent(in) :: mesh
+        logical, intent(in) :: take(:)
+        integer(i4) :: c, k, nv, p0, n, t
+        allocate (table%ptr(mesh%n_nodes + 1), source=0_i4)
+        do c = 1, mesh%n_cells
+            t = mesh%cell_type(c)
+            if (.not. (take(c) .or. cell_type_is_quadratic(t))) cycle
+            if (CELL_TYPE_CORNERS(t) < 2) cycle
+            p0 = mesh%cell_ptr(c) - 1
+            nv = CELL_TYPE_CORNERS(t)
+            do k = 1, merge(1, nv, nv == 2)
+                n = min(mesh%cell_nodes(p0 + k), mesh%cell_nodes(p0 + mod(k, nv) + 1))
+                table%ptr(n + 1) = table%ptr(n + 1) + 1
+            end do
         end do
-        allocate (table%keys(0:size - 1), source=-1_i8)
-        allocate (table%mids(0:size - 1), source=0_i4)
-        table%stride = int(n_nodes, i8) + 1
+        table%ptr(1) = 1
+        do n = 1, mesh%n_nodes
+            table%ptr(n + 1) = table%ptr(n + 1) + table%ptr(n)
+        end do
+        allocate (table%fill(mesh%n_nodes), source=0_i4)
+        allocate (table%other(table%ptr(mesh%n_nodes + 1) - 1), &
+                  table%mid(table%ptr(mesh%n_nodes + 1) - 1))
     end subroutine edge_table_init
 
-    ! Slot of the edge (a, b) (either order): its own, or the empty one where it would go.
-    integer(i8) function edge_slot(table, a, b) result(slot)
-        type(edge_table_t), intent(in) :: table
-        integer(i4), intent(in) :: a, b
-        integer(i8) :: key, mask
-        key = int(min(a, b), i8) * table%stride + int(max(a, b), i8)
-        mask = size(table%keys, kind=i8) - 1
-        ! spread neighbouring node numbers (each factor < 2**27 and a node number < 2**31:
-        ! no overflow)
-        slot = iand(ieor(int(min(a, b), i8) * 73856093_i8, int(max(a, b), i8) * 19349663_i8), &
-                    mask)
-        do while (table%keys(slot) /= -1_i8 .and. table%keys(slot) /= key)
-            slot = iand(slot + 1, mask)
-        end do
-    end function edge_slot
-
+    ! The mid node of edge (a, b) (either order), 0 if it has none yet.
     integer(i4) function edge_table_get(table, a, b) result(mid)
         type(edge_table_t), intent(in) :: table
         integer(i4), intent(in) :: a, b
-        mid = table%mids(edge_slot(table, a, b))
+        integer(i4) :: lo, hi, k
+        lo = min(a, b)
+        hi = max(a, b)
+        mid = 0
+        do k = table%ptr(lo), table%ptr(lo) + table%fill(lo) - 1
+            if (table%other(k) == hi) then
+                mid = table%mid(k)
+                return
+            end if
+        end do
     end function edge_table_get
 
-    ! Records the mid node of edge (a, b) (a first one stays). The table was sized for
-    ! every edge of every cell at half load.
+    ! Records the mid node of edge (a, b) (a first one stays).
     subroutine edge_table_put(table, a, b, mid)
         type(edge_table_t), intent(inout) :: table
         integer(i4), intent(in) :: a, b, mid
-        integer(i8) :: slot
-        slot = edge_slot(table, a, b)
-        if (table%keys(slot) /= -1_i8) return
-        table%keys(slot) = int(min(a, b), i8) * table%stride + int(max(a, b), i8)
-        table%mids(slot) = mid
+        integer(i4) :: lo, k
+        if (edge_table_get(table, a, b) > 0) return
+        lo = min(a, b)
+        k = table%ptr(lo) + table%fill(lo)
+        table%other(k) = max(a, b)
+        table%mid(k) = mid
+        table%fill(lo) = table%fill(lo) + 1
     end subroutine edge_table_put
 
 end module mesh_create

@@ -1,6 +1,6 @@
 !> CREA_MAILLAGE (U4.23.02): a new mesh made from MAILLAGE by one operation (Code_Aster's
 !> UN_PARMI): CREA_POI1, CREA_MAILLE, MODI_MAILLE (QUAD_TRIA3, QUAD8_9), LINE_QUAD,
-!> QUAD_LINE. The geometry of each operation is in mesh_create; this module reads the
+!> QUAD_LINE, RESTREINT (mesh_restrict). The geometry of each operation is in mesh_create; this module reads the
 !> keywords as Code_Aster does (op0167): the cells and nodes an occurrence names come in
 !> increasing number, each once; a selection that names nothing is an error; a new group
 !> named like an existing one is an error (MESH1_20); converting only part of a mesh is
@@ -12,7 +12,8 @@ module mesh_create_commands
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, mesh_summary, cells_of_group, nodes_of_group
+    use mesh_types, only: mesh_t, mesh_summary, cells_of_group, nodes_of_group, &
+        n_cell_groups, n_node_groups
     use mesh_name_index, only: name_find
     use mesh_concept, only: mesh_concept_t
     use mesh_cell_shapes, only: CELL_TRIA6, CELL_QUAD8
@@ -21,7 +22,8 @@ module mesh_create_commands
     use mesh_group_keywords, only: read_named_cells, read_named_nodes, fold_groups
     use mesh_create, only: add_point_cells, duplicate_cells, split_quadrangles, &
         add_face_centres, to_quadratic, to_linear
-    use mesh_command_support, only: relocate_error, warn_at
+    use mesh_command_support, only: relocate_error, warn_at, read_groups, read_node_groups
+    use mesh_restrict, only: restrict_mesh
     implicit none
     private
 
@@ -30,7 +32,7 @@ module mesh_create_commands
 contains
 
     !> CREA_MAILLAGE(MAILLAGE, one of CREA_POI1, CREA_MAILLE, MODI_MAILLE, LINE_QUAD,
-    !> QUAD_LINE). The .mess gets what was made and the new mesh's summary.
+    !> QUAD_LINE, RESTREINT). The .mess gets what was made and the new mesh's summary.
     subroutine run_crea_maillage(ctx, cmd, result, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
@@ -53,6 +55,8 @@ contains
                 call modi_maille(ctx, cmd, p%mesh, made%mesh, st)
             else if (cmd%count('LINE_QUAD') > 0) then
                 call convert_degree(ctx, cmd, 'LINE_QUAD', p%mesh, made%mesh, st)
+            else if (cmd%count('RESTREINT') > 0) then
+                call restreint(ctx, cmd, p%mesh, made%mesh, st)
             else
                 call convert_degree(ctx, cmd, 'QUAD_LINE', p%mesh, made%mesh, st)
             end if
@@ -131,6 +135,66 @@ contains
         call ctx%write_mess('    CREA_POI1: ' // to_text(out%n_cells - mesh%n_cells) // &
                             ' POI1 cells made')
     end subroutine crea_poi1
+
+    ! RESTREINT=_F(GROUP_MA, TOUT_GROUP_MA, GROUP_NO, TOUT_GROUP_NO): the cells of the
+    ! GROUP_MA groups, the nodes of those cells and of the GROUP_NO groups; the groups kept
+    ! are the GROUP_MA (TOUT_GROUP_MA='OUI': every cell group) and the GROUP_NO (TOUT_GROUP_NO
+    ! ='OUI': every node group), reduced to what is kept (mesh_restrict, as rdtmai).
+    subroutine restreint(ctx, cmd, mesh, out, st)
+        type(run_context_t), intent(in) :: ctx
+        type(command_t), intent(in) :: cmd
+        type(mesh_t), intent(in) :: mesh
+        type(mesh_t), intent(out) :: out
+        type(status_t), intent(out) :: st
+        type(keyword_set_t) :: occ
+        type(string_t), allocatable :: names(:)
+        integer(i4), allocatable :: cell_groups(:), node_groups(:), list(:), cells(:), &
+            nodes(:)
+        character(len=:), allocatable :: every_ma, every_no
+        logical, allocatable :: mark(:)
+        integer(i4) :: g, made_ma, made_no
+        occ = cmd%occurrence('RESTREINT', 1)
+        call read_groups(occ, 'GROUP_MA', mesh, names, cell_groups, st)
+        if (st%failed()) return
+        allocate (mark(mesh%n_cells), source=.false.)
+        do g = 1, size(cell_groups, kind=i4)
+            list = cells_of_group(mesh, cell_groups(g))
+            mark(list) = .true.
+        end do
+        cells = pack([(g, g = 1, mesh%n_cells)], mark)
+        if (size(cells) == 0) then
+            call occ%error_at('GROUP_MA', 'the groups hold no cell: the mesh would be ' // &
+                              'empty', st)
+            return
+        end if
+        deallocate (mark)
+        allocate (mark(mesh%n_nodes), source=.false.)
+        allocate (node_groups(0))
+        if (occ%has('GROUP_NO')) then
+            call read_node_groups(occ, 'GROUP_NO', mesh, names, node_groups, st)
+            if (st%failed()) return
+            do g = 1, size(node_groups, kind=i4)
+                list = nodes_of_group(mesh, node_groups(g))
+                mark(list) = .true.
+            end do
+        end if
+        nodes = pack([(g, g = 1, mesh%n_nodes)], mark)
+        call occ%get_text('TOUT_GROUP_MA', every_ma, st)
+        if (st%ok()) call occ%get_text('TOUT_GROUP_NO', every_no, st)
+        if (st%failed()) return
+        if (every_ma == 'OUI') cell_groups = [(g, g = 1, n_cell_groups(mesh))]
+        if (every_no == 'OUI') node_groups = [(g, g = 1, n_node_groups(mesh))]
+        call restrict_mesh(mesh, cells, nodes, cell_groups, node_groups, out, made_ma, &
+                           made_no, st)
+        if (st%failed()) then
+            call relocate_error(cmd, 'RESTREINT', st)
+            return
+        end if
+        call ctx%write_mess('    RESTREINT: ' // to_text(out%n_cells) // ' of ' // &
+            to_text(mesh%n_cells) // ' cells, ' // to_text(out%n_nodes) // ' of ' // &
+            to_text(mesh%n_nodes) // ' nodes kept; ' // to_text(made_ma) // ' GROUP_MA, ' // &
+            to_text(made_no) // ' GROUP_NO (a group left empty is not made)')
+    end subroutine restreint
 
     ! CREA_MAILLE: copies of the cells of each occurrence (TOUT, the default, or GROUP_MA).
     subroutine crea_maille(ctx, cmd, mesh, out, st)

@@ -1,4 +1,5 @@
-!> Reader of Gmsh ASCII meshes, formats 2.2 and 4.1 (LIRE_MAILLAGE FORMAT='GMSH').
+!> Reader of Gmsh ASCII meshes, formats 2.2 and 4.1 (LIRE_MAILLAGE FORMAT='GMSH'), and 1.0
+!> as the 2.2 text it amounts to (mesh_gmsh1_text).
 !>
 !> Element types kept: 15 (point -> POI1), 1 (line -> SEG2), 2 (triangle -> TRIA3),
 !> 3 (quadrangle -> QUAD4); any other type is an error naming it. Nodes are named N<tag>,
@@ -26,6 +27,7 @@ module mesh_gmsh_reader
         mesh_add_node_group, mesh_add_cell_group, mesh_finish, nodes_of_cells, &
         CELL_POI1, CELL_SEG2, CELL_TRIA3, CELL_QUAD4, CELL_SEG3, CELL_TRIA6, CELL_QUAD8, &
         CELL_QUAD9, CELL_TYPE_NODES, CELL_TYPE_DIM
+    use mesh_gmsh1_text, only: is_gmsh1, gmsh1_to_gmsh22, GMSH1_HEADER_LINES
     use mesh_text_lexer, only: text_lexer_t, open_lexer, next_token, next_line, at_end, &
         parse_real, parse_integer, bytes_left
     implicit none
@@ -76,8 +78,15 @@ contains
         type(text_lexer_t) :: lex
         type(gmsh_state_t) :: gs
         integer(i4) :: first, last, k
+        character(len=:), allocatable :: converted
         call open_lexer(lex, path, st)
         if (st%failed()) return
+        if (is_gmsh1(lex%text)) then   ! format 1.0: read as the 2.2 text it amounts to
+            call gmsh1_to_gmsh22(lex%text, path, converted, st)
+            if (st%failed()) return
+            call move_alloc(converted, lex%text)
+            lex%line = 1 - GMSH1_HEADER_LINES
+        end if
         lex%percent_comments = .false.
         call mesh_init(mesh, 3_i4, path)
         allocate (gs%tag_to_node(1024), gs%tag_to_cell(1024), source=0_i4)

@@ -8,8 +8,10 @@
 !>    TRIA3, TRIA6, QUAD4, QUAD8, QUAD9 (MeshReader's asterTypeList), in file order within a
 !>    type; MED's node order within a cell is Code_Aster's for these types (Code_Aster
 !>    permutes only 3D types). Other cell types are refused by their Code_Aster names;
-!>  - node and cell names: the file's names when it has them (MED stores 16 characters; the
-!>    full name is kept), else N<number> and M<number> with the numbers of the order above;
+!>  - node and cell names: N<number> and M<number> with the numbers of the order above,
+!>    whatever names the file stores: code_aster 17 keeps no entity names (BaseMesh::
+!>    buildNamesVectors does nothing; a deck's MAILLE='M23' is cell 23 in that order, as
+!>    ssls100a's cells M23-M98 are its TRIA3 after 22 SEG2 the file names M77-M98);
 !>  - groups from the families: a family with a number > 0 is a set of nodes, < 0 a set of
 !>    cells; each of its groups is a GROUP_NO or GROUP_MA holding those entities. Groups are
 !>    created in the order they first appear in the families, members in increasing order;
@@ -144,8 +146,7 @@ contains
         if (st%failed()) return
         call read_families(file, name, families, st)
         if (st%failed()) return
-        call build_mesh(file, spacedim, coords, node_names, node_named, cell_kind, cell_nodes, &
-                        cell_names, cell_named, mesh, st)
+        call build_mesh(file, spacedim, coords, cell_kind, cell_nodes, mesh, st)
         if (st%failed()) return
         call add_groups(file, families, node_family, cell_family, mesh, notes, st)
         if (st%failed()) return
@@ -472,31 +473,25 @@ contains
     end subroutine read_families
 
     ! Nodes and cells into the mesh, named as Code_Aster names them.
-    subroutine build_mesh(file, spacedim, coords, node_names, node_named, cell_kind, &
-                          cell_nodes, cell_names, cell_named, mesh, st)
+    subroutine build_mesh(file, spacedim, coords, cell_kind, cell_nodes, mesh, st)
         type(med_file_t), intent(in) :: file
         integer(i4), intent(in) :: spacedim
         real(dp), intent(in) :: coords(:, :)
-        character(len=MED_SNAME_LEN), intent(in) :: node_names(:), cell_names(:)
-        logical, intent(in) :: node_named, cell_named(:)
         integer(i4), intent(in) :: cell_kind(:), cell_nodes(:, :)
         type(mesh_t), intent(inout) :: mesh
         type(status_t), intent(out) :: st
         integer(i4) :: k, t
         character(len=:), allocatable :: name
         call mesh_init(mesh, spacedim, file%path)
+        ! the file's names are not Code_Aster's (module header): numbers name the entities
         do k = 1, size(coords, 2, kind=i4)
-            name = ''
-            if (node_named) name = trim(node_names(k))
-            if (len(name) == 0) name = number_name('N', k)
+            name = number_name('N', k)
             call mesh_add_node(mesh, name, coords(:, k), 0_i4, st)
             if (st%failed()) return
         end do
         do k = 1, size(cell_kind, kind=i4)
             t = cell_kind(k)
-            name = ''
-            if (cell_named(k)) name = trim(cell_names(k))
-            if (len(name) == 0) name = number_name('M', k)
+            name = number_name('M', k)
             call mesh_add_cell(mesh, name, READ_TYPE_CELL(t), &
                                cell_nodes(1:READ_TYPE_NODES(t), k), 0_i4, st)
             if (st%failed()) return

@@ -1,8 +1,10 @@
-!> MODI_MAILLAGE (U4.23.04): moves a mesh (TRANSLATION, MODI_BASE, ROTATION, SYMETRIE,
-!> ECHELLE) and orients its cells (ORIE_NORM_COQUE, ORIE_PEAU, ORIE_LIGNE), in place (reuse=,
-!> as DEFI_GROUP: a model built on the mesh sees the change), in Code_Aster's order (op0154):
-!> the transformations first, ROTATION occurrences in turn, then ORIE_NORM_COQUE, ORIE_PEAU
-!> and ORIE_LIGNE occurrence by occurrence, group by group. The command works on a copy: an
+!> MODI_MAILLAGE (U4.23.04): moves a mesh (DEFORME, TRANSLATION, MODI_BASE, ROTATION,
+!> SYMETRIE, ECHELLE) and orients its cells (ORIE_NORM_COQUE, ORIE_PEAU, ORIE_LIGNE), in
+!> place (reuse=, as DEFI_GROUP: a model built on the mesh sees the change), in Code_Aster's
+!> order (op0154): DEFORME, the transformations, ROTATION occurrences in turn, then
+!> ORIE_NORM_COQUE, ORIE_PEAU and ORIE_LIGNE occurrence by occurrence, group by group.
+!> DEFORME adds a displacement field's DX, DY, DZ to the nodes that carry them (vtgpld: the
+!> others stay) or perturbs every node (ALEA, modi_alea). The command works on a copy: an
 !> error leaves the mesh as it was. A moved mesh is checked again as LIRE_MAILLAGE checks a
 !> mesh (coordinates within 1e30, no cell made degenerate: ECHELLE=0 is refused so).
 module mesh_modify_commands
@@ -16,7 +18,9 @@ module mesh_modify_commands
     use mesh_types, only: mesh_t, mesh_finish, cells_of_group, cell_name, node_name
     use mesh_concept, only: mesh_concept_t
     use mesh_geometry, only: z_constant, normalized, cross
-    use mesh_transform, only: translate, change_basis, rotate, reflect, scale
+    use mesh_transform, only: translate, change_basis, rotate, reflect, scale, perturb
+    use field_concept, only: field_concept_t
+    use field_types, only: FIELD_NOEU, field_type_cham
     use mesh_orientation, only: orientation_report_t, orient_skin, orient_consistently, &
         orient_by_vector
     use mesh_group_keywords, only: fold_groups
@@ -25,9 +29,30 @@ module mesh_modify_commands
     implicit none
     private
 
-    public :: run_modi_maillage
+    public :: run_modi_maillage, set_field_support_resolver
+
+    !> The mesh a field's support concept (maillage, modele, result) has: DEFORME asks it of
+    !> a model or a result, whose types live in layers below this one, so the composition
+    !> root (command_registration) gives the procedure (field_support's mesh_of_support).
+    abstract interface
+        subroutine support_mesh_f(support, mesh, st)
+            import :: concept_t, mesh_t, status_t
+            class(concept_t), pointer, intent(in) :: support
+            type(mesh_t), pointer, intent(out) :: mesh
+            type(status_t), intent(out) :: st
+        end subroutine support_mesh_f
+    end interface
+    procedure(support_mesh_f), pointer, save :: mesh_of_support => null()
+
+    character(len=2), parameter :: DIRECTIONS(3) = ['DX', 'DY', 'DZ']
 
 contains
+
+    !> Gives DEFORME the mesh of a field's support (module header).
+    subroutine set_field_support_resolver(resolver)
+        procedure(support_mesh_f) :: resolver
+        mesh_of_support => resolver
+    end subroutine set_field_support_resolver
 
     !> MODI_MAILLAGE(reuse=MAIL, MAILLAGE=MAIL, ...). The .mess gets what each operation
     !> did (cells turned round, per group; INFO=2: their names).
@@ -46,7 +71,7 @@ contains
         call cmd%get_int('INFO', info, st)
         if (st%failed()) return
         work = target%mesh
-        call transform(ctx, cmd, work, moved, st)
+        call transform(ctx, cmd, target, work, moved, st)
         if (st%failed()) return
         do i = 1, cmd%count('ORIE_NORM_COQUE')
             call orient_shells(ctx, cmd%occurrence('ORIE_NORM_COQUE', i), work, info, &
@@ -65,11 +90,12 @@ contains
         target%mesh = work
     end subroutine run_modi_maillage
 
-    ! TRANSLATION, MODI_BASE, ROTATION, SYMETRIE, ECHELLE, in that order; then the moved mesh
-    ! checked again.
-    subroutine transform(ctx, cmd, mesh, moved, st)
+    ! DEFORME, TRANSLATION, MODI_BASE, ROTATION, SYMETRIE, ECHELLE, in that order; then the
+    ! moved mesh checked again.
+    subroutine transform(ctx, cmd, owner, mesh, moved, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
+        type(mesh_concept_t), intent(in), target :: owner
         type(mesh_t), intent(inout) :: mesh
         logical, intent(out) :: moved
         type(status_t), intent(out) :: st
@@ -81,6 +107,12 @@ contains
         logical :: ok
         moved = .false.
         last = ''
+        if (cmd%count('DEFORME') > 0) then
+            call deform(ctx, cmd%occurrence('DEFORME', 1), owner, mesh, st)
+            if (st%failed()) return
+            moved = .true.
+            last = 'DEFORME'
+        end if
         if (cmd%has('TRANSLATION')) then
             call cmd%get_reals('TRANSLATION', values, st)
             if (st%failed()) return
@@ -170,6 +202,103 @@ contains
         call mesh_finish(mesh, 0_i4, st)
         if (st%failed()) call relocate_error(cmd, last, st)
     end subroutine transform
+
+    ! DEFORME=_F(OPTION='TRAN', DEPL=U) or (..., ALEA=a): see the module header. U must be a
+    ! NOEU_DEPL_R field on this mesh: made on the MAILLAGE itself, on a model of it, or taken
+    ! from a result computed on it (a copy of its nodes), as Code_Aster's MESH1_1 asks.
+    subroutine deform(ctx, occ, owner, mesh, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(mesh_concept_t), intent(in), target :: owner
+        type(mesh_t), intent(inout) :: mesh
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        type(field_concept_t), pointer :: u
+        type(mesh_t), pointer :: m
+        real(dp) :: alea
+        integer(i4) :: j, k, c, n_moved
+        integer(i4) :: cmp(3)
+        logical :: same
+        if (occ%has('ALEA')) then
+            call occ%get_real('ALEA', alea, st)
+            if (st%failed()) return
+            call perturb(mesh%coords(:, 1:mesh%n_nodes), alea)
+            call ctx%write_mess('    DEFORME: every node perturbed by ALEA=' // to_text(alea) &
+                                // ' of the mesh''s extent')
+            return
+        end if
+        call occ%get_concept('DEPL', p, st)
+        if (st%failed()) return
+        select type (p)
+        type is (field_concept_t)
+            u => p
+        class default
+            call occ%error_at('DEPL', 'expected a displacement field (cham_no_sdaster), ' // &
+                              'got ' // p%type_name(), st)
+            return
+        end select
+        if (u%field%location /= FIELD_NOEU .or. u%field%quantity /= 'DEPL_R') then
+            call occ%error_at('DEPL', 'the field must be a NOEU_DEPL_R (displacements at ' // &
+                              'the nodes); ' // u%name // ' is a ' // field_type_cham(u%field), st)
+            return
+        end if
+        same = .false.
+        if (associated(u%support)) then
+            select type (s => u%support)
+            type is (mesh_concept_t)
+                same = associated(u%support, owner)
+            class default
+                if (associated(mesh_of_support)) then
+                    call mesh_of_support(u%support, m, st)
+                    if (st%failed()) then
+                        call relocate_error(occ, 'DEPL', st)
+                        return
+                    end if
+                    ! a model's mesh is the maillage's; a result's is a copy: same nodes
+                    same = associated(m, owner%mesh)
+                    if (.not. same) same = same_nodes(m, owner%mesh)
+                end if
+            end select
+        end if
+        if (same) same = size(u%field%node_values, 2) == mesh%n_nodes
+        if (.not. same) then
+            call occ%error_at('DEPL', 'the displacement ' // u%name // ' is on another mesh ' // &
+                'than ' // owner%name // ' (make it on ' // owner%name // ', or on a ' // &
+                'model or result of it)', st)
+            return
+        end if
+        cmp = 0
+        do j = 1, 3
+            do c = 1, size(u%field%components, kind=i4)
+                if (u%field%components(c)%s == DIRECTIONS(j)) cmp(j) = c
+            end do
+        end do
+        n_moved = 0
+        do k = 1, mesh%n_nodes
+            if (.not. any(u%field%node_has(:, k))) cycle
+            n_moved = n_moved + 1
+            do j = 1, 3
+                if (cmp(j) == 0) cycle
+                if (u%field%node_has(cmp(j), k)) &
+                    mesh%coords(j, k) = mesh%coords(j, k) + u%field%node_values(cmp(j), k)
+            end do
+        end do
+        call ctx%write_mess('    DEFORME: ' // to_text(n_moved) // ' node(s) moved by ' // u%name)
+    end subroutine deform
+
+    ! A result's copy of `mesh`: the same nodes, by name (the coordinates may have moved since).
+    logical function same_nodes(copy, mesh)
+        type(mesh_t), intent(in) :: copy, mesh
+        integer(i4) :: k
+        same_nodes = copy%n_nodes == mesh%n_nodes
+        if (.not. same_nodes) return
+        do k = 1, mesh%n_nodes
+            if (node_name(copy, k) /= node_name(mesh, k)) then
+                same_nodes = .false.
+                return
+            end if
+        end do
+    end function same_nodes
 
     ! The unit axis of a rotation in space: DIR, or POIN_2 - POIN_1.
     subroutine rotation_axis(occ, point, axis, st)

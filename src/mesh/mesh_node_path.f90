@@ -19,6 +19,7 @@ module mesh_node_path
     use strings, only: to_text
     use mesh_types, only: mesh_t, node_name, cell_name, CELL_TYPE_NAMES
     use mesh_cell_kinds, only: cell_dimension
+    use stable_sort, only: real_order
     implicit none
     private
 
@@ -246,7 +247,7 @@ contains
             end if
             abscissa(i) = c
         end do
-        order = stable_order(abscissa)
+        order = real_order(abscissa)
         nodes = nodes(order)
         abscissa = abscissa(order)
         do i = 1, size(nodes, kind=i4) - 1
@@ -258,42 +259,5 @@ contains
             end if
         end do
     end subroutine order_segment_nodes
-
-    ! The permutation sorting x increasingly, equal keys in their order (merge sort).
-    function stable_order(x) result(order)
-        real(dp), intent(in) :: x(:)
-        integer(i4), allocatable :: order(:), work(:)
-        integer(i4) :: n, width, lo, mid, hi, i, j, k
-        logical :: take_left
-        n = size(x, kind=i4)
-        order = [(i, i = 1, n)]
-        allocate (work(n))
-        width = 1
-        do while (width < n)
-            lo = 1
-            do while (lo <= n)
-                mid = min(lo + width, n + 1)
-                hi = min(lo + 2 * width, n + 1)
-                i = lo
-                j = mid
-                k = lo
-                do while (k < hi)
-                    take_left = i < mid
-                    if (take_left .and. j < hi) take_left = .not. (x(order(j)) < x(order(i)))
-                    if (take_left) then
-                        work(k) = order(i)
-                        i = i + 1
-                    else
-                        work(k) = order(j)
-                        j = j + 1
-                    end if
-                    k = k + 1
-                end do
-                lo = hi
-            end do
-            order = work
-            width = 2 * width
-        end do
-    end function stable_order
 
 end module mesh_node_path

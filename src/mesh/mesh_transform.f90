@@ -1,14 +1,16 @@
 !> The geometric transformations of MODI_MAILLAGE (U4.23.04), as Code_Aster applies them to
 !> every node (tranma, chgref, rotama, symema, echell). A transformation given with 2
 !> components (TRANSLATION=(dx, dy), POIN_1=(x, y), VECT_X=(a, b), AXE_1=(a, b)) works in
-!> the (x, y) plane and leaves z as it is.
+!> the (x, y) plane and leaves z as it is. DEFORME's ALEA is Code_Aster's modi_alea, with
+!> its generator (ggubs, IMSL's GGUBS: x <- 16807 x mod (2^31 - 1), seed 24331), so a
+!> perturbed mesh is the one Code_Aster makes, node for node.
 module mesh_transform
     use kinds, only: dp, i4
     use mesh_geometry, only: DEGREE, cross
     implicit none
     private
 
-    public :: translate, change_basis, rotate, reflect, scale
+    public :: translate, change_basis, rotate, reflect, scale, perturb
 
 contains
 
@@ -89,5 +91,26 @@ contains
         real(dp), intent(in) :: factor
         coords = coords * factor
     end subroutine scale
+
+    !> DEFORME=_F(ALEA=alea) (modi_alea): each coordinate moves by alea * r * (its extent
+    !> over the mesh), r uniform in [-1, 1], drawn for x, y, z of node 1, then of node 2...
+    !> (a coordinate of no extent, z of a plane mesh, stays).
+    pure subroutine perturb(coords, alea)
+        real(dp), intent(inout) :: coords(:, :)
+        real(dp), intent(in) :: alea
+        real(dp), parameter :: D2P31M = 2147483647.0_dp, D2P31 = 2147483648.0_dp
+        real(dp) :: extent(3), seed, r
+        integer(i4) :: k, j
+        if (size(coords, 2) == 0) return
+        extent = alea * (maxval(coords, dim=2) - minval(coords, dim=2))
+        seed = 24331.0_dp
+        do k = 1, size(coords, 2, kind=i4)
+            do j = 1, 3
+                seed = 16807.0_dp * seed - aint(16807.0_dp * seed / D2P31M) * D2P31M
+                r = seed / D2P31
+                coords(j, k) = coords(j, k) + 2.0_dp * (r - 0.5_dp) * extent(j)
+            end do
+        end do
+    end subroutine perturb
 
 end module mesh_transform

@@ -252,17 +252,24 @@ contains
 
     !> Trims the work arrays to their final sizes and checks the mesh is not empty.
     !> Errors: no nodes or no cells ("empty mesh").
-    subroutine mesh_finish(mesh, line, st)
+    !>  check_cells : optional, default true: false skips the degenerate-cell check, for a
+    !>                mesh made from a checked one without changing any cell's geometry
+    !>                (CREA_MAILLAGE's LINE_QUAD, QUAD8_9, QUAD_LINE, CREA_POI1, CREA_MAILLE)
+    subroutine mesh_finish(mesh, line, st, check_cells)
         type(mesh_t), intent(inout) :: mesh
         integer(i4), intent(in) :: line
         type(status_t), intent(inout) :: st
+        logical, intent(in), optional :: check_cells
+        logical :: check
         if (mesh%n_nodes == 0 .or. mesh%n_cells == 0) then
             call set_error(st, STATUS_MESH_ERROR, 'empty mesh: ' // to_text(mesh%n_nodes) // &
                 ' nodes and ' // to_text(mesh%n_cells) // ' cells (a mesh needs both)', &
                 file=mesh%file, line=line)
             return
         end if
-        call check_degenerate_cells(mesh, st)
+        check = .true.
+        if (present(check_cells)) check = check_cells
+        if (check) call check_degenerate_cells(mesh, st)
         if (st%failed()) return
         call shrink_real2(mesh%coords, mesh%n_nodes)
         call shrink_int(mesh%cell_type, mesh%n_cells)

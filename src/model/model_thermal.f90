@@ -13,6 +13,7 @@ module model_thermal
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: real_e13
+    use number_limits, only: product_fits, MAX_TEMPERATURE, MAX_STRAIN
     use function_concept, only: function_concept_t, param_binding_t
     use tabulated_function, only: tabulated_function_t
     use model_material, only: material_t, behaviour_number, behaviour_function, &
@@ -22,6 +23,10 @@ module model_thermal
 
     !> Code_Aster's default of ELAS_FO PRECISION (alfint's distance to T_ref).
     real(dp), parameter :: DEFAULT_PRECISION = 1.0_dp
+    !> The smallest distance to T_ref alfint divides by (a PRECISION below it is raised to
+    !> it, so that the quotient of bounded numbers stays finite; 1e-30 K is far below any
+    !> temperature a deck distinguishes).
+    real(dp), parameter :: MIN_PRECISION = 1.0e-30_dp
 
     public :: has_thermal_expansion, thermal_strain
 
@@ -48,40 +53,81 @@ contains
         real(dp), intent(in) :: t, tref
         real(dp), intent(out) :: eps
         type(status_t), intent(out) :: st
-        real(dp) :: alpha, tdef, prec
+        real(dp) :: alpha, tdef, prec, eps_ref
         logical :: found, has_def
         class(function_concept_t), pointer :: f
         eps = 0.0_dp
+        ! the temperatures are bounded before any difference or product is formed from them
+        ! (number_limits: a temperature field of 1e308 would overflow D alpha (T - T_ref))
+        if (.not. temperature_fits(t, 'TEMP', st)) return
+        if (.not. temperature_fits(tref, 'VALE_REF', st)) return
         call behaviour_number(mat, 'ELAS', 'ALPHA', alpha, found)
         if (found) then
-            eps = alpha * (t - tref)
+            call strain_of(alpha, t - tref, eps, st)
             return
         end if
         f => behaviour_function(mat, 'ELAS_FO', 'ALPHA')
         if (.not. associated(f)) then
             call behaviour_number(mat, 'ELAS_FO', 'ALPHA', alpha, found)
-            if (found) eps = alpha * (t - tref)
+            if (found) call strain_of(alpha, t - tref, eps, st)
             return
         end if
         call behaviour_number(mat, 'ELAS_FO', 'TEMP_DEF_ALPHA', tdef, has_def)
         if (.not. has_def) then
             call evaluate_alpha(f, t, alpha, st)
-            eps = alpha * (t - tref)
+            if (st%ok()) call strain_of(alpha, t - tref, eps, st)
             return
         end if
+        if (.not. temperature_fits(tdef, 'TEMP_DEF_ALPHA', st)) return
         call behaviour_number(mat, 'ELAS_FO', 'PRECISION', prec, found)
         if (.not. found) prec = DEFAULT_PRECISION
         select type (f)
         type is (tabulated_function_t)
-            call tabulated_strain(f, t, tref, tdef, prec, eps)
+            if (any(abs(f%x) > MAX_TEMPERATURE) .or. any(abs(f%y) > MAX_STRAIN)) then
+                call set_error(st, STATUS_MODEL_ERROR, 'ELAS_FO/ALPHA: its temperatures ' // &
+                    'must lie within +-' // real_e13(MAX_TEMPERATURE) // ' and its values ' // &
+                    'within +-' // real_e13(MAX_STRAIN) // ' for a thermal strain')
+                return
+            end if
+            call tabulated_strain(f, t, tref, tdef, max(prec, MIN_PRECISION), eps_ref)
+            call strain_of(1.0_dp, eps_ref, eps, st)
         class default
             call evaluate_alpha(f, t, alpha, st)
+            if (st%ok()) call strain_of(alpha, t - tdef, eps, st)
             if (st%failed()) return
-            eps = alpha * (t - tdef)
             call evaluate_alpha(f, tref, alpha, st)
-            eps = eps - alpha * (tref - tdef)
+            if (st%ok()) call strain_of(alpha, tref - tdef, eps_ref, st)
+            if (st%ok()) eps = eps - eps_ref
         end select
     end subroutine thermal_strain
+
+    !> True when |t| <= MAX_TEMPERATURE; otherwise st names the quantity.
+    logical function temperature_fits(t, what, st)
+        real(dp), intent(in) :: t
+        character(len=*), intent(in) :: what
+        type(status_t), intent(inout) :: st
+        temperature_fits = abs(t) <= MAX_TEMPERATURE
+        if (.not. temperature_fits) call set_error(st, STATUS_MODEL_ERROR, what // ' = ' // &
+            real_e13(t) // ' is beyond the temperatures parasol takes for a thermal strain ' // &
+            '(|T| <= ' // real_e13(MAX_TEMPERATURE) // ')')
+    end function temperature_fits
+
+    !> eps = alpha dt when the product fits and |eps| <= MAX_STRAIN, else an error.
+    subroutine strain_of(alpha, dt, eps, st)
+        real(dp), intent(in) :: alpha, dt
+        real(dp), intent(out) :: eps
+        type(status_t), intent(inout) :: st
+        eps = 0.0_dp
+        if (product_fits(alpha, dt)) then
+            if (abs(alpha * dt) <= MAX_STRAIN) then
+                eps = alpha * dt
+                return
+            end if
+        end if
+        call set_error(st, STATUS_MODEL_ERROR, 'the thermal strain ALPHA (T - T_ref) = ' // &
+            real_e13(alpha) // ' x ' // real_e13(dt) // ' is beyond ' // &
+            real_e13(MAX_STRAIN) // ' (check ALPHA and the temperatures of AFFE_VARC)')
+    end subroutine strain_of
 
     subroutine evaluate_alpha(f, t, alpha, st)
         class(function_concept_t), intent(in) :: f
@@ -131,7 +177,8 @@ contains
         end if
     contains
         ! d alpha / dT at T_ref from the neighbours of point k (both sides averaged, as
-        ! alfint; a neighbour at T_ref itself does not count)
+        ! alfint; a neighbour at T_ref itself, or closer than MIN_PRECISION, does not count:
+        ! the quotient stays finite)
         pure real(dp) function slope_at(k) result(s)
             integer(i4), intent(in) :: k
             real(dp) :: total
@@ -139,13 +186,13 @@ contains
             total = 0.0_dp
             terms = 0
             if (k < n) then
-                if (abs(f%x(k + 1) - tref) > 0.0_dp) then
+                if (abs(f%x(k + 1) - tref) >= MIN_PRECISION) then
                     total = total + (f%y(k + 1) - alfref) / (f%x(k + 1) - tref)
                     terms = terms + 1
                 end if
             end if
             if (k > 1) then
-                if (abs(f%x(k - 1) - tref) > 0.0_dp) then
+                if (abs(f%x(k - 1) - tref) >= MIN_PRECISION) then
                     total = total + (alfref - f%y(k - 1)) / (tref - f%x(k - 1))
                     terms = terms + 1
                 end if

@@ -20,6 +20,7 @@ module model_varc
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
+    use number_limits, only: MAX_TEMPERATURE
     use function_concept, only: function_concept_t, param_binding_t
     use mesh_types, only: mesh_t, cell_label, node_name
     use field_types, only: field_t, FIELD_NOEU, FIELD_CART, FIELD_ELEM, field_component, &
@@ -113,8 +114,10 @@ contains
         associate (src => varc%sources(s))
             call instants_around(src, t, i1, i2, w, st)
             if (st%ok()) call field_cell_temperature(src%fields(i1), mesh, c, temp, st)
+            if (st%ok()) call check_bounded(temp, st)
             if (st%ok() .and. i2 /= i1) then
                 call field_cell_temperature(src%fields(i2), mesh, c, second, st)
+                if (st%ok()) call check_bounded(second, st)
                 if (st%ok()) then
                     if (second%kind /= temp%kind .or. second%n_sub /= temp%n_sub) then
                         call set_error(st, STATUS_MODEL_ERROR, 'the TEMP fields at INST ' // &
@@ -130,6 +133,18 @@ contains
                 cell_label(mesh, c) // ': ' // st%message)
         end associate
     end subroutine varc_cell_temperature
+
+    ! The temperatures a cell sees are bounded (number_limits MAX_TEMPERATURE) before the
+    ! elements interpolate them and form strains and stresses from them.
+    subroutine check_bounded(temp, st)
+        type(cell_temperature_t), intent(in) :: temp
+        type(status_t), intent(inout) :: st
+        if (.not. allocated(temp%t)) return
+        if (all(abs(temp%t) <= MAX_TEMPERATURE)) return
+        call set_error(st, STATUS_MODEL_ERROR, 'the temperature field has ' // &
+            real_e13(maxval(abs(temp%t))) // ' on the cell, beyond the temperatures ' // &
+            'parasol takes (|T| <= ' // real_e13(MAX_TEMPERATURE) // ')')
+    end subroutine check_bounded
 
     ! The stored instants i1 <= i2 around the instant read at t, and the weight of i2.
     subroutine instants_around(src, t, i1, i2, w, st)

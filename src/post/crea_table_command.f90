@@ -11,9 +11,11 @@
 !>    model): columns RESULTAT (INTITULE, default the result's name) and NOM_CHAM (or
 !>    CHAM_GD), INST (when asked by INST or LIST_INST), NUME_ORDRE, MAILLE (element
 !>    fields), NOEUD (NOEU, ELNO) or POINT (ELGA), SOUS_POINT (ELGA, ELNO, ELEM), COOR_X,
-!>    COOR_Y, COOR_Z (nodes; a cell's centre for ELEM and CART; Gauss points have none
-!>    here: their coordinates need the elements' integration families), then the
-!>    components (TOUT_CMP: the field's, in its quantity's order; NOM_CMP: those named);
+!>    COOR_Y, COOR_Z (the node; an ELGA point's position, Code_Aster's COOR_ELGA, a
+!>    plate layer's sub-points along the normal; absent for ELEM and CART as in Code_Aster),
+!>    then the components (TOUT_CMP: those the field holds, in its quantity's order;
+!>    NOM_CMP: those named); CARA_ELEM gives the plates' layers of a CHAM_GD (default: those
+!>    of the result it was extracted from);
 !>    a row per instant and node (TOUT, GROUP_NO, GROUP_MA: their nodes, in the mesh's
 !>    order) or per instant, cell, point and sub-point (TOUT, GROUP_MA).
 !> TITRE gives the title. TYPE_TABLE other than TABLE (tables of functions or of concepts)
@@ -40,6 +42,13 @@ module crea_table_command
     use function_points, only: function_samples_t, samples_of_function
     use result_instants, only: selected_instants
     use crea_champ_command, only: selected_nodes, selected_cells
+    use analysis_result, only: result_concept_t
+    use model_types, only: model_t, is_plate
+    use model_cara_elem, only: cara_elem_t
+    use cara_elem_concept, only: cara_elem_concept_t
+    use element_gauss_families, only: gauss_rule_t, gauss_point_positions, MAX_GAUSS_POINTS
+    use element_plate, only: plate_local_frame
+    use field_layout, only: element_points
     implicit none
     private
 
@@ -242,6 +251,8 @@ contains
         class(concept_t), pointer :: ptr
         type(field_t), pointer :: f
         type(mesh_t), pointer :: mesh
+        type(model_t), pointer :: model
+        type(cara_elem_t), pointer :: cara
         character(len=:), allocatable :: field, label
         integer, allocatable :: indices(:)
         integer :: i
@@ -249,6 +260,8 @@ contains
         type(layout_t) :: layout
         res => null()
         f => null()
+        model => null()
+        cara => null()
         field = ''
         if (occ%has('RESULTAT')) then
             call result_of_occurrence(occ, res, st)
@@ -276,6 +289,7 @@ contains
             type is (field_concept_t)
                 f => ptr%field
                 call mesh_of_support(ptr, mesh, st)
+                if (st%ok()) call structure_of_support(ptr, model, cara)
             class default
                 call occ%error_at('CHAM_GD', 'expected a field (cham_no, cham_elem or ' // &
                     'carte), got ' // ptr%type_name(), st)
@@ -289,6 +303,15 @@ contains
             if (st%failed()) return
             indices = [0]
             by_inst = .false.
+        end if
+        if (associated(res)) call structure_of_result(res, model, cara)
+        if (occ%has('CARA_ELEM')) then
+            call occ%get_concept('CARA_ELEM', ptr, st)
+            if (st%failed()) return
+            select type (ptr)
+            type is (cara_elem_concept_t)
+                cara => ptr%cara
+            end select
         end if
         do i = 1, size(indices)
             if (associated(res)) then
@@ -304,10 +327,11 @@ contains
                 if (st%failed()) return
             end if
             if (associated(res)) then
-                call append_field_rows(occ, t, layout, f, mesh, label, field, &
+                call append_field_rows(occ, t, layout, f, mesh, model, cara, label, field, &
                                        res%nume_ordre(indices(i)), res%inst(indices(i)), st)
             else
-                call append_field_rows(occ, t, layout, f, mesh, label, '', 0_i4, 0.0_dp, st)
+                call append_field_rows(occ, t, layout, f, mesh, model, cara, label, '', &
+                                       0_i4, 0.0_dp, st)
             end if
             if (st%failed()) return
         end do
@@ -352,9 +376,29 @@ contains
                     [layout%components, c]
             end do
         else
-            layout%components = [(c, c=1, size(f%components))]
+            layout%components = present_components(f)
         end if
     end subroutine table_layout
+
+    !> TOUT_CMP: the components the field holds (a cell field: those of some cell of it,
+    !> as Code_Aster's CHAM_ELEM_S), in the quantity's order.
+    function present_components(f) result(list)
+        type(field_t), intent(in) :: f
+        integer, allocatable :: list(:)
+        logical, allocatable :: held(:)
+        integer :: c, k
+        if (.not. field_is_cell_field(f)) then
+            list = [(k, k=1, size(f%components))]
+            return
+        end if
+        allocate (held(size(f%components)), source=.false.)
+        do c = 1, f%n_cells
+            if (f%n_points(c) <= 0) cycle
+            if (f%cell_set(c) < 1 .or. f%cell_set(c) > size(f%sets)) cycle
+            held(f%sets(f%cell_set(c))%cmp) = .true.
+        end do
+        list = pack([(k, k=1, size(f%components))], held)
+    end function present_components
 
     function components_list(f) result(text)
         type(field_t), intent(in) :: f
@@ -392,12 +436,10 @@ contains
         if (layout%location == FIELD_ELGA .or. layout%location == FIELD_ELNO .or. &
             layout%location == FIELD_ELEM) &
             call table_add_column(t, 'SOUS_POINT', TABLE_INT, layout%c_subpoint, st)
-        if (layout%location /= FIELD_ELGA) then
-            ! the coordinates of Gauss points need the elements' families (not known here)
-            call table_add_column(t, 'COOR_X', TABLE_REAL, layout%c_xyz(1), st)
-            call table_add_column(t, 'COOR_Y', TABLE_REAL, layout%c_xyz(2), st)
-            call table_add_column(t, 'COOR_Z', TABLE_REAL, layout%c_xyz(3), st)
-        end if
+        ! always declared; ELEM and CART rows leave them absent (Code_Aster's cteltb)
+        call table_add_column(t, 'COOR_X', TABLE_REAL, layout%c_xyz(1), st)
+        call table_add_column(t, 'COOR_Y', TABLE_REAL, layout%c_xyz(2), st)
+        call table_add_column(t, 'COOR_Z', TABLE_REAL, layout%c_xyz(3), st)
         if (st%failed()) return
         allocate (layout%c_values(size(layout%components)))
         layout%c_values = 0
@@ -409,12 +451,15 @@ contains
     end subroutine add_layout_columns
 
     !> The rows of one field (one instant).
-    subroutine append_field_rows(occ, t, layout, f, mesh, label, field, order, inst, st)
+    subroutine append_field_rows(occ, t, layout, f, mesh, model, cara, label, field, order, &
+                                 inst, st)
         type(keyword_set_t), intent(in) :: occ
         type(table_t), intent(inout) :: t
         type(layout_t), intent(in) :: layout
         type(field_t), intent(in) :: f
         type(mesh_t), intent(in) :: mesh
+        type(model_t), pointer, intent(in) :: model
+        type(cara_elem_t), pointer, intent(in) :: cara
         character(len=*), intent(in) :: label, field
         integer(i4), intent(in) :: order
         real(dp), intent(in) :: inst
@@ -422,7 +467,8 @@ contains
         integer, allocatable :: nodes(:), cells(:)
         integer :: k, j, p, q, row, n_new, node, c
         integer(i8) :: pos
-        real(dp) :: centre(3)
+        real(dp), allocatable :: xyz(:, :, :)
+        logical :: located
         call name_value_columns(t, layout, f)
         if (f%location == FIELD_NOEU) then
             call nodes_of_occurrence(occ, mesh, nodes, st)
@@ -459,11 +505,9 @@ contains
         row = t%n_rows - n_new
         do k = 1, size(cells)
             c = cells(k)
-            centre = 0.0_dp
-            do j = mesh%cell_ptr(c), mesh%cell_ptr(c + 1) - 1
-                centre = centre + mesh%coords(:, mesh%cell_nodes(j))
-            end do
-            centre = centre / real(max(mesh%cell_ptr(c + 1) - mesh%cell_ptr(c), 1), dp)
+            located = .false.
+            if (f%location == FIELD_ELGA) call gauss_coordinates(mesh, model, cara, c, &
+                f%n_points(c), f%n_subpoints(c), xyz, located)
             do p = 1, f%n_points(c)
                 do q = 1, f%n_subpoints(c)
                     row = row + 1
@@ -480,9 +524,9 @@ contains
                             call table_set_real(t, layout%c_xyz(j), row, &
                                 mesh%coords(j, node), st)
                         end do
-                    else if (layout%c_xyz(1) > 0) then
+                    else if (located) then
                         do j = 1, 3
-                            call table_set_real(t, layout%c_xyz(j), row, centre(j), st)
+                            call table_set_real(t, layout%c_xyz(j), row, xyz(j, q, p), st)
                         end do
                     end if
                     do j = 1, size(layout%components)
@@ -514,6 +558,88 @@ contains
             call table_set_int(t, layout%c_order, r, int(order, i8), st)
         end subroutine prefix
     end subroutine append_field_rows
+
+    !> The coordinates of an ELGA field's points and sub-points on cell c, as Code_Aster's
+    !> COOR_ELGA (te0488 for plates): the isoparametric image of the element family's
+    !> reference points (field_layout element_points); on a plate with layers, sub-point
+    !> (layer l, level 1..3) lies at z = -h/2 + (l-1) h/n + (level-1) h/(2n) along the
+    !> cell's normal (element_plate's frame, Code_Aster's dxtpgl / dxqpgl). `located` is
+    !> false when the model or the points are not known (the coordinates stay absent).
+    subroutine gauss_coordinates(mesh, model, cara, c, np, nsub, xyz, located)
+        type(mesh_t), intent(in) :: mesh
+        type(model_t), pointer, intent(in) :: model
+        type(cara_elem_t), pointer, intent(in) :: cara
+        integer, intent(in) :: c
+        integer(i4), intent(in) :: np, nsub
+        real(dp), allocatable, intent(out) :: xyz(:, :, :)
+        logical, intent(out) :: located
+        type(gauss_rule_t) :: rule
+        type(status_t) :: st
+        real(dp) :: pos(3, MAX_GAUSS_POINTS), x(3, 9), rot(3, 3), xy(2, 9), h, z
+        integer(i4) :: nn, kind, layers, p, q, lay, level
+        located = .false.
+        allocate (xyz(3, max(nsub, 1_i4), max(np, 1_i4)), source=0.0_dp)
+        if (.not. associated(model)) return
+        if (c > size(model%element)) return
+        kind = model%element(c)
+        nn = mesh%cell_ptr(c + 1) - mesh%cell_ptr(c)
+        if (nn > size(x, 2) .or. np > MAX_GAUSS_POINTS) return
+        call element_points(kind, mesh%cell_type(c), np, rule, st)
+        if (st%failed()) return
+        x(:, 1:nn) = mesh%coords(:, mesh%cell_nodes(mesh%cell_ptr(c):mesh%cell_ptr(c + 1) - 1))
+        call gauss_point_positions(rule, x(:, 1:nn), pos(:, 1:np))
+        do p = 1, np
+            do q = 1, nsub
+                xyz(:, q, p) = pos(:, p)
+            end do
+        end do
+        located = .true.
+        if (nsub <= 1 .or. .not. is_plate(kind) .or. .not. associated(cara)) return
+        if (c > size(cara%thickness)) return
+        layers = max(1_i4, cara%coque_layers(c))
+        if (nsub /= 3 * layers) return
+        call plate_local_frame(x(:, 1:nn), nn, rot, xy(:, 1:nn), st)
+        if (st%failed()) return
+        h = cara%thickness(c)
+        do p = 1, np
+            q = 0
+            do lay = 1, layers
+                do level = 1, 3
+                    q = q + 1
+                    z = -h / 2.0_dp + (lay - 1) * (h / layers) + (level - 1) * (h / layers) / 2.0_dp
+                    xyz(:, q, p) = pos(:, p) + z * rot(3, :)
+                end do
+            end do
+        end do
+    end subroutine gauss_coordinates
+
+    !> The model and characteristics a result was computed with (none for a result made
+    !> by CREA_RESU).
+    subroutine structure_of_result(res, model, cara)
+        class(result_fields_t), target, intent(in) :: res
+        type(model_t), pointer, intent(inout) :: model
+        type(cara_elem_t), pointer, intent(inout) :: cara
+        select type (res)
+        type is (result_concept_t)
+            if (allocated(res%model%element)) model => res%model
+            if (allocated(res%cara%thickness)) cara => res%cara
+        end select
+    end subroutine structure_of_result
+
+    !> The model (and characteristics) behind a field concept's support: a model, or the
+    !> result it was extracted from.
+    subroutine structure_of_support(fc, model, cara)
+        type(field_concept_t), intent(in) :: fc
+        type(model_t), pointer, intent(inout) :: model
+        type(cara_elem_t), pointer, intent(inout) :: cara
+        if (.not. associated(fc%support)) return
+        select type (support => fc%support)
+        type is (model_concept_t)
+            model => support%model
+        class is (result_fields_t)
+            call structure_of_result(support, model, cara)
+        end select
+    end subroutine structure_of_support
 
     !> Names the component columns after the field (the first field decides).
     subroutine name_value_columns(t, layout, f)
@@ -557,6 +683,8 @@ contains
             mesh => support%mesh
         type is (model_concept_t)
             mesh => support%mesh
+        class is (result_fields_t)
+            call result_mesh(support, mesh, st)
         class default
             call set_error(st, STATUS_MODEL_ERROR, 'the field''s support is a ' // &
                 support%type_name() // ', not a mesh or a model')

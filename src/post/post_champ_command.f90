@@ -75,8 +75,8 @@ contains
                 call result_add_instant(out, p%nume_ordre(indices(i)), p%inst(indices(i)), at)
                 do k = 1, size(names)
                     call result_field_at(p, indices(i), names(k)%s, f, st)
-                    if (st%ok()) call extract_subpoint(f, 3 * (layer - 1) + subpoint_in_layer, &
-                        cells, reduced, st)
+                    if (st%ok()) call extract_subpoint(f, layer, subpoint_in_layer, cells, &
+                        reduced, st)
                     if (st%failed()) then
                         if (index(st%message, 'cell ') == 1) st%message = cell_label(p%mesh, &
                             bad_cell(st%message)) // st%message(index(st%message, ':'):)
@@ -126,18 +126,19 @@ contains
         out%has_state = .false.
     end subroutine empty_like
 
-    !> A cell field reduced to sub-point `sub` on every cell that has sub-points (the other
-    !> cells of `cells` copied).
+    !> A cell field reduced to sub-point 3 (layer - 1) + level on every cell that has
+    !> sub-points (the other cells of `cells` copied).
     !>  st : STATUS_MODEL_ERROR 'cell N: ...' when a cell has fewer sub-points (naming its
     !>       layers), or when the field is not an element field
-    subroutine extract_subpoint(f, sub, cells, out, st)
+    subroutine extract_subpoint(f, layer, level, cells, out, st)
         type(field_t), intent(in) :: f
-        integer(i4), intent(in) :: sub
+        integer(i4), intent(in) :: layer     ! NUME_COUCHE, >= 1 (the catalog)
+        integer(i4), intent(in) :: level     ! 1 INF, 2 MOY, 3 SUP within the layer
         logical, intent(in) :: cells(:)
         type(field_t), intent(out) :: out
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: n_points(:), n_sub(:)
-        integer(i4) :: c, p, n_cmp, s_in
+        integer(i4) :: c, p, n_cmp, s_in, sub
         integer(i8) :: from, to
         if (.not. field_is_cell_field(f)) then
             call set_error(st, STATUS_MODEL_ERROR, 'EXTR_COQUE takes fields by element ' // &
@@ -150,15 +151,19 @@ contains
         allocate (n_sub(f%n_cells), source=1_i4)
         do c = 1, f%n_cells
             if (n_points(c) == 0 .or. f%n_subpoints(c) == 1) cycle
-            if (sub > f%n_subpoints(c)) then
+            ! the layer is compared before 3 (layer - 1) + level is formed: NUME_COUCHE is
+            ! any positive integer the deck gives, 3 NUME_COUCHE may not fit in 32 bits
+            if (layer > f%n_subpoints(c) / 3) then
                 call set_error(st, STATUS_MODEL_ERROR, 'cell ' // to_text(c) // ': no ' // &
-                    'layer ' // to_text((sub - 1) / 3 + 1) // ': it has ' // &
+                    'layer ' // to_text(layer) // ': it has ' // &
                     to_text(f%n_subpoints(c) / 3) // ' layer(s) (COQUE_NCOU of AFFE_CARA_ELEM)')
                 return
             end if
         end do
         call field_define_cells(out, n_points, n_sub, f%cell_set, f%sets, st)
         if (st%failed()) return
+        sub = 1
+        if (any(n_points > 0 .and. f%n_subpoints > 1)) sub = 3 * (layer - 1) + level
         do c = 1, f%n_cells
             if (n_points(c) == 0) cycle
             n_cmp = size(f%sets(f%cell_set(c))%cmp, kind=i4)

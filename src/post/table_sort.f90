@@ -1,4 +1,4 @@
-!> Ordering the rows of a table (CALC_TABLE TRI, IMPR_TABLE TRI): a stable merge sort of
+!> Ordering the rows of a table (CALC_TABLE TRI, IMPR_TABLE TRI): stable_sort's merge sort of
 !> row indices, O(n log n), on one or more key columns, as Code_Aster's Table.sort: rows
 !> compare key after key; an absent cell sorts as the type's zero (0, 0.0 or the empty
 !> text); texts compare character by character (a shorter text that is a prefix of a
@@ -8,25 +8,9 @@ module table_sort
     use kinds, only: i8, dp
     use strings, only: string_t
     use table_concept, only: table_t, TABLE_INT, TABLE_REAL
+    use stable_sort, only: item_order_t, stable_order, real_order
     implicit none
     private
-
-    !> What stable_order sorts: items 1..n that `compare` orders (-1, 0, 1 as item a sorts
-    !> before, with or after item b). An extension holds the keys, so that no internal
-    !> procedure is passed (an internal procedure as an argument needs a trampoline on an
-    !> executable stack).
-    type, abstract, public :: item_order_t
-    contains
-        procedure(compare_items), deferred :: compare
-    end type item_order_t
-
-    abstract interface
-        integer function compare_items(self, a, b)
-            import :: item_order_t
-            class(item_order_t), intent(in) :: self
-            integer, intent(in) :: a, b
-        end function compare_items
-    end interface
 
     !> Rows of a table by key columns, DECROISSANT reversing.
     type, extends(item_order_t) :: row_order_t
@@ -36,13 +20,6 @@ module table_sort
     contains
         procedure :: compare => compare_rows
     end type row_order_t
-
-    !> Reals, increasing.
-    type, extends(item_order_t) :: real_order_t
-        real(dp), allocatable :: x(:)
-    contains
-        procedure :: compare => compare_reals
-    end type real_order_t
 
     !> Texts, as Python compares str.
     type, extends(item_order_t) :: text_order_t
@@ -72,15 +49,6 @@ contains
         call stable_order(t%n_rows, rows, order)
     end subroutine table_sorted_rows
 
-    !> The permutation that sorts `x` increasingly, equal values in their order.
-    function real_order(x) result(order)
-        real(dp), intent(in) :: x(:)
-        integer, allocatable :: order(:)
-        type(real_order_t) :: reals
-        reals%x = x
-        call stable_order(size(x), reals, order)
-    end function real_order
-
     !> The permutation that sorts `keys` (compare_texts), equal keys in their order.
     function text_order(keys) result(order)
         type(string_t), intent(in) :: keys(:)
@@ -90,60 +58,12 @@ contains
         call stable_order(size(keys), texts, order)
     end function text_order
 
-    !> The permutation of 1..n that sorts items by `relation`: a bottom-up merge sort,
-    !> stable, O(n log n).
-    subroutine stable_order(n, relation, order)
-        integer, intent(in) :: n
-        class(item_order_t), intent(in) :: relation
-        integer, allocatable, intent(out) :: order(:)
-        integer, allocatable :: work(:)
-        integer :: width, lo, mid, hi, i, j, k
-        allocate (order(n), work(n))
-        order = [(i, i=1, n)]
-        width = 1
-        do while (width < n)
-            lo = 1
-            do while (lo <= n)
-                mid = min(lo + width - 1, n)
-                hi = min(lo + 2 * width - 1, n)
-                if (mid < hi) then
-                    i = lo; j = mid + 1; k = lo
-                    do while (i <= mid .and. j <= hi)
-                        if (relation%compare(order(j), order(i)) < 0) then  ! strictly before
-                            work(k) = order(j); j = j + 1
-                        else
-                            work(k) = order(i); i = i + 1
-                        end if
-                        k = k + 1
-                    end do
-                    do while (i <= mid)
-                        work(k) = order(i); i = i + 1; k = k + 1
-                    end do
-                    do while (j <= hi)
-                        work(k) = order(j); j = j + 1; k = k + 1
-                    end do
-                    order(lo:hi) = work(lo:hi)
-                end if
-                lo = lo + 2 * width
-            end do
-            width = 2 * width
-        end do
-    end subroutine stable_order
-
     integer function compare_rows(self, a, b) result(c)
         class(row_order_t), intent(in) :: self
         integer, intent(in) :: a, b
         c = compare_table_rows(self%t, self%keys, a, b)
         if (self%descending) c = -c
     end function compare_rows
-
-    integer function compare_reals(self, a, b) result(c)
-        class(real_order_t), intent(in) :: self
-        integer, intent(in) :: a, b
-        c = 0
-        if (self%x(a) < self%x(b)) c = -1
-        if (self%x(a) > self%x(b)) c = 1
-    end function compare_reals
 
     integer function compare_keys(self, a, b) result(c)
         class(text_order_t), intent(in) :: self

@@ -50,6 +50,11 @@ module direct_solver
         real(dp) :: hold_digits = 0.0_dp             !< hold pivots losing >= this (0: off)
         real(dp) :: hold_ratio = 0.0_dp              !< hold |pivot| <= this x max|a_jj|
         integer(i4) :: kernel = 0                    !< LDLT: 0 auto, 1 reference, 2 blocked
+        !> The iterative methods GCPC and PETSC (krylov_solver; U4.50.01 defaults):
+        character(len=16) :: pre_cond = ''            !< PRE_COND ('' = the method's default)
+        character(len=16) :: algorithm = ''           !< ALGORITHME (PETSC; GCPC is CG)
+        real(dp) :: resi_rela = 1.0e-6_dp             !< RESI_RELA: ||b - A x|| / ||b||
+        integer(i4) :: nmax_iter = 0                  !< NMAX_ITER (0: krylov_solver's limit)
     end type solver_options_t
 
     !> What a factorization saw (the .mess solver lines, the pivot classification).
@@ -97,6 +102,7 @@ module direct_solver
         procedure(solve_many_interface), deferred :: solve_many
         procedure(memory_interface), deferred :: memory_estimate
         procedure :: release => release_nothing
+        procedure :: iteration_summary => no_iterations
         generic :: solve => solve_one, solve_many
     end type direct_solver_t
 
@@ -168,6 +174,14 @@ contains
         rc = c_setenv('OMP_THREAD_LIMIT' // c_null_char, OPENMP_THREAD_LIMIT // c_null_char, &
             0_c_int)
     end subroutine limit_openmp_threads
+
+    !> What the iterations of an iterative method did, for the .mess ('' for a direct one).
+    function no_iterations(self) result(text)
+        class(direct_solver_t), intent(in) :: self
+        character(len=:), allocatable :: text
+        text = ''
+        if (.false.) text = trim(self%options%method)
+    end function no_iterations
 
     !> Frees the back-end's memory (default: nothing to free).
     subroutine release_nothing(self)

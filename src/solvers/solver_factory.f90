@@ -6,6 +6,8 @@
 !>   MUMPS      : AUTO (default), AMD, AMF, PORD, SCOTCH, QAMD -- MUMPS's ordering (ICNTL(7));
 !>                SANS leaves MUMPS its automatic choice (as Code_Aster's driver does);
 !>                Debian's MUMPS is built without METIS, so METIS is refused
+!>   GCPC, PETSC: RCMK (default), SANS -- applied by the assembly (the incomplete factor's
+!>                quality depends on it); the iterative methods are krylov_solver's
 module solver_factory
     use kinds, only: i4
     use status, only: status_t, set_error, STATUS_DECK_ERROR
@@ -13,6 +15,7 @@ module solver_factory
     use ldlt_solver, only: ldlt_solver_t
     use cholmod_solver, only: cholmod_solver_t
     use mumps_solver, only: mumps_solver_t
+    use krylov_solver, only: krylov_solver_t
     implicit none
     private
 
@@ -34,6 +37,8 @@ contains
             renum = 'METIS'
         case ('MUMPS')
             renum = 'AUTO'
+        case ('GCPC', 'PETSC')
+            renum = 'RCMK'
         case default
             renum = ''
         end select
@@ -50,21 +55,25 @@ contains
             list = 'METIS AMD MD'
         case ('MUMPS')
             list = 'AUTO AMD AMF PORD SCOTCH QAMD SANS'
+        case ('GCPC', 'PETSC')
+            list = 'RCMK SANS'
         case default
             list = ''
         end select
     end function renum_allowed
 
     !> The node renumbering the assembly applies: RENUM for LDLT (the skyline has no
-    !> ordering of its own), the mesh order ('SANS') for back-ends that order themselves.
+    !> ordering of its own) and the iterative methods, the mesh order ('SANS') for back-ends
+    !> that order themselves.
     pure function assembly_renum(options) result(renum)
         type(solver_options_t), intent(in) :: options
         character(len=:), allocatable :: renum
         renum = 'SANS'
-        if (trim(options%method) == 'LDLT') then
+        select case (trim(options%method))
+        case ('LDLT', 'GCPC', 'PETSC')
             renum = trim(options%renum)
-            if (len(renum) == 0) renum = default_renum('LDLT')
-        end if
+            if (len(renum) == 0) renum = default_renum(trim(options%method))
+        end select
     end function assembly_renum
 
     !> Allocates the back-end of options%method with its options (RENUM defaulted).
@@ -80,7 +89,7 @@ contains
         if (.not. word_in(trim(opt%renum), renum_allowed(trim(opt%method)))) then
             if (len(renum_allowed(trim(opt%method))) == 0) then
                 call set_error(st, STATUS_DECK_ERROR, 'unknown METHODE ' // &
-                    trim(opt%method) // ' (LDLT, MULT_FRONT or MUMPS)')
+                    trim(opt%method) // ' (LDLT, MULT_FRONT, MUMPS, GCPC or PETSC)')
             else
                 call set_error(st, STATUS_DECK_ERROR, 'RENUM ' // trim(opt%renum) // &
                     ' is not an ordering of METHODE ' // trim(opt%method) // ' (' // &
@@ -93,6 +102,8 @@ contains
             allocate (ldlt_solver_t :: solver)
         case ('MULT_FRONT')
             allocate (cholmod_solver_t :: solver)
+        case ('GCPC', 'PETSC')
+            allocate (krylov_solver_t :: solver)
         case default
             allocate (mumps_solver_t :: solver)
         end select

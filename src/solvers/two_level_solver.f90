@@ -63,6 +63,7 @@ module two_level_solver
         procedure :: solve_many => two_level_solve_many
         procedure :: memory_estimate => two_level_memory
         procedure :: release => two_level_release
+        procedure :: iteration_summary => two_level_iterations
         procedure :: active => two_level_active
     end type two_level_solver_t
 
@@ -506,5 +507,13 @@ contains
         self%factored = .false.
         self%coarse_ready = .false.
     end subroutine two_level_release
+
+    !> The inner method's iterations (an iterative METHODE under the rigid-mode path).
+    function two_level_iterations(self) result(text)
+        class(two_level_solver_t), intent(in) :: self
+        character(len=:), allocatable :: text
+        text = ''
+        if (allocated(self%inner)) text = self%inner%iteration_summary()
+    end function two_level_iterations
 
 end module two_level_solver

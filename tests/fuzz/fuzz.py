@@ -13,7 +13,8 @@ IMPR_RESU files, a deck checked with --check), one of its files, and one to four
 replaced by 0, +-1e308, 1e309, NaN, 2**63, huge and negative counts; keywords and names
 swapped; expressions that overflow; Gmsh header counts that lie; sections duplicated; nodes
 made coincident or lifted out of their plane; MED files edited at the byte level and, through
-h5py, at the content level: values, NBR counts, datasets removed or resized). Each case runs
+h5py, at the content level: values, NBR counts, datasets removed or resized; the mesh
+commands DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE on a test plate). Each case runs
 in its own folder with a time limit and a 4 GB address-space limit and is classified:
 
   clean      exit 0 or 2 (TEST_RESU NOOK) with nothing on stderr but located warnings, or
@@ -129,6 +130,25 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
     seeds.append(Seed("b_mail", {"case.comm": deck_b, "case.mail": meshes[("b", "aster")]},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 2.0))
+    # The iterative methods (krylov_solver): model B with PETSC and its keywords, model A
+    # (springs only: the rigid-mode path around the iteration) with GCPC; each with
+    # RECH_LINEAIRE (residual_line_search: CORDE, MIXTE and every keyword).
+    for model, deck, solveur in (
+            ("b", deck_b, "SOLVEUR=_F(METHODE='PETSC', ALGORITHME='FGMRES', "
+                          "PRE_COND='LDLT_SP', RESI_RELA=1e-10, NMAX_ITER=50), "
+                          "RECH_LINEAIRE=_F(METHODE='CORDE', ITER_LINE_MAXI=3)"),
+            ("a", deck_a, "SOLVEUR=_F(METHODE='GCPC', PRE_COND='LDLT_INC', "
+                          "RESI_RELA=1e-9, NMAX_ITER=500, RENUM='RCMK'), "
+                          "RECH_LINEAIRE=_F(METHODE='MIXTE', RESI_LINE_RELA=0.05, "
+                          "ITER_LINE_MAXI=4, RHO_MIN=0.02, RHO_MAX=5.0, RHO_EXCL=0.01)")):
+        text = open(deck, encoding="utf-8").read()
+        text = re.sub(r"SOLVEUR=_F\([^)]*\)", solveur, text)
+        path = os.path.join(seeds_dir, "%s_iterative.comm" % model)
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        seeds.append(Seed("%s_iterative" % model, {"case.comm": path,
+                                                  "case.mail": meshes[(model, "aster")]},
+                          [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
     for model, deck in (("a", deck_a), ("b", deck_b)):
         gdeck = deck_copy(deck, "%s_gmsh.comm" % model, "GMSH")
         for fmt in ("gmsh22", "gmsh41"):
@@ -276,12 +296,54 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       {"case.comm": os.path.join(tables, "post_releve_ssnl130.comm"),
                        "case.mail": meshes[("a", "aster")]}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # CREA_TABLE on ELGA fields: the points' coordinates on plane cells and plate layers.
+    seeds.append(Seed("crea_table_elga",
+                      {"case.comm": os.path.join(tables, "crea_table_elga.comm"),
+                       "case.20": os.path.join(tables, "elga_plane.mail"),
+                       "case.21": os.path.join(tables, "elga_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    # MACR_LIGN_COUPE: cut lines across the four cell types, a patch test's SIGM_ELNO.
+    seeds.append(Seed("macr_lign_coupe",
+                      {"case.comm": os.path.join(tables, "macr_lign_coupe.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail")},
+                      ["--unit", "20=case.20"],
+                      dict(comm_targets, **{"case.20": "mail"}), 0.6))
+    # POST_ELEM MASS_INER: a plane rectangle of four cell types, a tilted plate.
+    seeds.append(Seed("post_elem",
+                      {"case.comm": os.path.join(tables, "post_elem.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail"),
+                       "case.21": os.path.join(tables, "post_elem_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
     # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
     seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
                       [], comm_targets, 0.8))
     seeds.append(Seed("check_all", {"case.comm": os.path.join(SOURCE, "tests", "decks",
                                                               "check", "all_commands.comm")},
                       ["--check"], comm_targets, 0.5))
+    # The mesh commands (DEFI_GROUP, MODI_MAILLAGE, CREA_MAILLAGE) on the test plate: every
+    # option of each, their groups used again by later commands.
+    mesh_commands = os.path.join(SOURCE, "tests", "mesh_commands")
+    for name in ("groups_plate", "modify_plate", "create_plate", "deform_plate"):
+        seeds.append(Seed(name, {"case.comm": os.path.join(mesh_commands, name + ".comm"),
+                                 "case.mail": os.path.join(mesh_commands, "plate4.mail")}, [],
+                          dict(comm_targets, **{"case.mail": "mail"}), 0.7))
+    # GIBI meshes (LIRE_MAILLAGE FORMAT='GIBI', PRE_GIBI): the file mutated as text.
+    seeds.append(Seed("gibi_strip", {"case.comm": os.path.join(mesh_commands, "gibi_strip.comm"),
+                                     "case.mgib": os.path.join(mesh_commands, "strip.mgib")},
+                      ["--unit", "19=case.mgib"], dict(comm_targets, **{"case.mgib": "gibi"}),
+                      0.7))
+    # Gmsh's 1.0 format ($NOD, $ELM): the file mutated as text.
+    seeds.append(Seed("gmsh1_strip", {"case.comm": os.path.join(mesh_commands, "gmsh1_strip.comm"),
+                                      "case.msh": os.path.join(mesh_commands, "strip1.msh")},
+                      ["--unit", "19=case.msh"], dict(comm_targets, **{"case.msh": "gmsh1"}),
+                      0.5))
+    # I-DEAS universal files (LIRE_MAILLAGE FORMAT='IDEAS'): the file mutated as text.
+    seeds.append(Seed("ideas_strip", {"case.comm": os.path.join(mesh_commands, "ideas_strip.comm"),
+                                      "case.unv": os.path.join(mesh_commands, "strip.unv")},
+                      ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "ideas"}),
+                      0.7))
     if aster_med:
         read_deck = os.path.join(seeds_dir, "read_med.comm")
         with open(read_deck, "w", encoding="utf-8") as f:

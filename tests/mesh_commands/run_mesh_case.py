@@ -7,6 +7,7 @@ usage: run_mesh_case.py PARASOL DECK WORKDIR [--aster-dir DIR]
 Header lines of the deck (anywhere before the first command):
     # mesh: plate4.mail                  the mesh on unit 20 (relative to the deck; with
                                          {aster} the Code_Aster folder: skipped without it)
+    # unit: 19=strip.mgib                a file on another unit (as mesh:)
     # members: GROUP_NO LOOP = N5 N4 N3  the members of a group made, in order
     # count: GROUP_MA ALL = 36           the number of members of a group made
     # absent: GROUP_MA FACE_UP           a group the deck does not make (empty)
@@ -28,7 +29,8 @@ def header(deck):
     keys = []
     with open(deck, encoding="utf-8") as f:
         for line in f:
-            m = re.match(r"#\s*(mesh|members|count|absent|line|warning):\s*(.*)$", line.rstrip())
+            m = re.match(r"#\s*(mesh|unit|members|count|absent|line|warning):\s*(.*)$",
+                         line.rstrip())
             if m:
                 keys.append((m.group(1), m.group(2).strip()))
     return keys
@@ -63,7 +65,10 @@ def main(argv):
     keys = header(deck)
     cmd = [os.path.abspath(parasol), "--outdir", os.path.abspath(work)]
     for key, value in keys:
-        if key == "mesh":
+        if key in ("mesh", "unit"):
+            unit = "20"
+            if key == "unit":
+                unit, value = value.split("=", 1)
             if "{aster}" in value:
                 if not aster or not os.path.isdir(aster):
                     print("skipped: Code_Aster's test files (%s) are absent" % aster)
@@ -74,7 +79,7 @@ def main(argv):
             if not os.path.exists(value):
                 print("skipped: %s is absent" % value)
                 return SKIP
-            cmd += ["--unit", "20=" + value]
+            cmd += ["--unit", unit + "=" + value]
     os.makedirs(work, exist_ok=True)
     cmd.append(deck)
     run = subprocess.run(cmd, capture_output=True, timeout=120)

@@ -2,7 +2,8 @@
 # SOLVEUR=_F(METHODE='<METHOD>', NPREC=<NPREC>) in a copy (same file name, in OUTDIR/deck),
 # then tests/analysis/run_deck.cmake runs and checks it with the other arguments.
 #
-#   cmake -DMETHOD=MUMPS -DNPREC=9 -DPARASOL=exe -DDECK=x.comm -DOUTDIR=dir [-DMESH=...]
+# (EXTRA: more keywords of SOLVEUR, "RESI_RELA=1e-10").
+#   cmake -DMETHOD=MUMPS -DNPREC=9 [-DEXTRA=...] -DPARASOL=exe -DDECK=x.comm -DOUTDIR=dir [-DMESH=...]
 #         [-DREF=... -DDIFF=... -DRTOL=...] [-DLAUNCHER=mpiexec|-np|2]
 #         -DRUNNER=run_deck.cmake -P with_method.cmake
 get_filename_component(name ${DECK} NAME)
@@ -11,11 +12,15 @@ string(REGEX MATCH "SOLVEUR=_F\\([^)]*\\)" found "${text}")
 if(NOT found)
     message(FATAL_ERROR "${DECK} has no SOLVEUR=_F(...) to replace")
 endif()
-string(REPLACE "${found}" "SOLVEUR=_F(METHODE='${METHOD}', NPREC=${NPREC})" text "${text}")
+set(extra "")
+if(DEFINED EXTRA)
+    set(extra ", ${EXTRA}")
+endif()
+string(REPLACE "${found}" "SOLVEUR=_F(METHODE='${METHOD}', NPREC=${NPREC}${extra})" text "${text}")
 file(MAKE_DIRECTORY ${OUTDIR}/deck)
 file(WRITE ${OUTDIR}/deck/${name} "${text}")
 set(args -DPARASOL=${PARASOL} -DDECK=${OUTDIR}/deck/${name} -DOUTDIR=${OUTDIR}/run)
-foreach(var MESH REF DIFF RTOL LAUNCHER)
+foreach(var MESH REF DIFF RTOL LAUNCHER MESS_REGEX)
     if(DEFINED ${var})
         list(APPEND args -D${var}=${${var}})
     endif()
