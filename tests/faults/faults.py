@@ -19,7 +19,8 @@ usage:
       in place (not replaced by a file). KIND: listings (.mess, .resu), vtk (.pvd, .vtu),
       gmsh (.msh), med (.rmed), unit (a Gmsh file bound with --unit N=PATH), table
       (IMPR_TABLE to a unit), fonction (IMPR_FONCTION TABLEAU and AGRAF, its two units),
-      fields (IMPR_RESU of Gauss-point fields and a CHAM_GD in MED, the CHAM_GD in VTK).
+      fields (IMPR_RESU of Gauss-point fields and a CHAM_GD in MED, the CHAM_GD in VTK),
+      gibi (PRE_GIBI's .mail).
   faults.py sweep PARASOL SOURCE_DIR WORKDIR KIND FIRST_KB LAST_KB STEP_KB
       The output folder is a tmpfs of FIRST_KB, FIRST_KB + STEP_KB, ... LAST_KB kilobytes
       (mount(8): needs root; skipped with exit 77 and a message otherwise), so that each
@@ -97,6 +98,8 @@ def make_deck(source_dir, workdir, kind):
                   "          NOM_CHAM=('SIEF_ELGA', 'VARI_ELGA')))\n"
                   "IMPR_RESU(FORMAT='MED', UNITE=83, RESU=_F(CHAM_GD=TEMP_F))\n"
                   "IMPR_RESU(FORMAT='VTK', RESU=_F(CHAM_GD=TEMP_F))\n",
+        # PRE_GIBI: a GIBI file converted to a .mail on unit 21 (its file STEM.21)
+        "gibi": "PRE_GIBI(UNITE_GIBI=19, UNITE_MAILLAGE=21)\n",
     }[kind]
     at = text.rindex("FIN()")
     deck = os.path.join(workdir, STEM + ".comm")
@@ -112,6 +115,9 @@ def command(parasol, source_dir, deck, outdir, kind):
         cmd += ["--unit", "80=" + os.path.join(outdir, STEM + ".rmed")]
     if kind == "unit":
         cmd += ["--unit", "81=" + os.path.join(outdir, "bound.msh")]
+    if kind == "gibi":
+        cmd += ["--unit", "19=" + os.path.join(source_dir, "tests", "mesh_commands",
+                                               "strip.mgib")]
     if kind == "fields":
         cmd += ["--unit", "82=" + os.path.join(outdir, "elga.rmed"),
                 "--unit", "83=" + os.path.join(outdir, "cham_gd.rmed")]
@@ -237,7 +243,7 @@ def outputs_of(kind, ref):
         return [STEM + ".mess", STEM + ".resu"]
     suffix = {"vtk": (".pvd", ".vtu"), "gmsh": (".msh",), "med": (".rmed",),
               "unit": ("bound.msh",), "table": (".38",), "fonction": (".25", ".26", ".29"),
-              "fields": (".rmed", ".pvd", ".vtu")}[kind]
+              "fields": (".rmed", ".pvd", ".vtu"), "gibi": (".21",)}[kind]
     names = [n for n in ref if n.endswith(suffix)]
     if kind == "vtk":     # the .pvd, the first and the last .vtu
         vtu = [n for n in names if n.endswith(".vtu")]
