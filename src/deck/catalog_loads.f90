@@ -21,14 +21,22 @@ contains
     end subroutine describe_loads
 
     !> AFFE_CHAR_CINE / AFFE_CHAR_CINE_F (Code_Aster U4.44.03): imposed values eliminated
-    !> from the system (no Lagrange multipliers), MECA_IMPO only; NOEUD in the real form only.
+    !> from the system (no Lagrange multipliers), MECA_IMPO; NOEUD and EVOL_IMPO (with
+    !> NOM_CMP) in the real form only.
     subroutine describe_kinematic_load(c, name, vtype)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: name, vtype
         call c%command(name, 'char_cine_meca')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('INFO', 'I', def='1', into='1 2')
-        call c%fact('MECA_IMPO', max=MANY, req=.true.)
+        if (vtype == 'R') then          ! EVOL_IMPO: the displacement of a result in time
+            call c%rule(RULE_UN_PARMI, 'MECA_IMPO EVOL_IMPO')
+            call c%key('EVOL_IMPO', 'evol_elas|evol_noli')
+            call c%key('NOM_CMP', 'TXM', max=MANY, into='DX DY DZ DRX DRY DRZ')
+            call c%fact('MECA_IMPO', max=MANY)
+        else
+            call c%fact('MECA_IMPO', max=MANY, req=.true.)
+        end if
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
@@ -69,6 +77,13 @@ contains
         call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
         call add_components(c, DOFS, vtype, also='BLOCAGE', bound=MAX_LENGTH)  ! lengths, angles
         call c%end_fact()
+        if (vtype == 'R') then          ! values of a field (field's PROJ_CHAMP zooms)
+            call c%fact('CHAMNO_IMPO', max=MANY)
+            call c%key('CHAM_NO', 'cham_no_sdaster', req=.true.)
+            call c%key('COEF_IMPO', 'R', req=.true.)
+            call c%key('NUME_LAGR', 'TXM', def='NORMAL', into='NORMAL APRES', noop=.true.)
+            call c%end_fact()
+        end if
         call describe_face_impo(c, 'FACE_IMPO', DOFS // ' DNOR DRNOR DTAN', vtype)
         if (vtype == 'R') call describe_face_impo(c, 'ARETE_IMPO', 'DX DY DZ DTAN', vtype)
         call describe_relations(c, vtype)

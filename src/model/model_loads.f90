@@ -30,6 +30,8 @@ module model_loads
     use strings, only: to_text
     use number_limits, only: MAX_LENGTH, is_finite, magnitude_fits
     use function_concept, only: function_concept_t, param_binding_t
+    use result_fields, only: result_fields_t, result_field_index
+    use field_types, only: field_component
     implicit none
     private
 
@@ -54,6 +56,11 @@ module model_loads
         real(dp) :: constant = 0.0_dp
         class(function_concept_t), pointer :: func => null()   !< not owned (run context)
         type(param_binding_t) :: binding
+        !> EVOL_IMPO (AFFE_CHAR_CINE): component `evol_cmp` of DEPL at node `evol_node` of
+        !> the result `evol`, interpolated linearly in INST between its stored instants
+        class(result_fields_t), pointer :: evol => null()      !< not owned (run context)
+        integer(i4) :: evol_node = 0
+        character(len=8) :: evol_cmp = ''
     end type load_value_t
 
     !> One occurrence of a load keyword.
@@ -157,6 +164,9 @@ contains
             to%values(k)%given = from%values(k)%given
             to%values(k)%constant = from%values(k)%constant
             to%values(k)%func => from%values(k)%func
+            to%values(k)%evol => from%values(k)%evol
+            to%values(k)%evol_node = from%values(k)%evol_node
+            to%values(k)%evol_cmp = from%values(k)%evol_cmp
             if (allocated(from%values(k)%binding%slot)) &
                 call move_alloc(from%values(k)%binding%slot, to%values(k)%binding%slot)
             if (allocated(from%values(k)%binding%names)) &
@@ -307,7 +317,15 @@ contains
         character(len=*), intent(in), optional :: slot_name
         character(len=:), allocatable :: name
         y = value%constant
-        if (associated(value%func)) then
+        if (associated(value%evol)) then
+            call evol_value(value, t, y, st)
+            if (st%failed()) then
+                call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(kind)) // &
+                    ' (EVOL_IMPO): ' &
+                    // st%message)
+                return
+            end if
+        else if (associated(value%func)) then
             call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
             if (st%failed()) then
                 call set_error(st, STATUS_MODEL_ERROR, LOAD_KIND_NAMES(kind) // ': ' // &
@@ -330,6 +348,90 @@ contains
                 // to_text(t) // ' is too large: the forces formed from it would overflow')
         end if
     end subroutine load_value_at
+
+    !> EVOL_IMPO's value at INST t: DEPL of the result at the stored instant equal to t
+    !> (within 1e-10 relative), else linear between the stored instants around t (Code_Aster
+    !> interpolates the result in time the same way); t outside them is an error.
+    subroutine evol_value(value, t, y, st)
+        type(load_value_t), intent(in) :: value
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, lo, hi
+        real(dp) :: tol, w, y_lo, y_hi
+        y = 0.0_dp
+        associate (r => value%evol)
+            if (r%n_stored == 0) then
+                call set_error(st, STATUS_MODEL_ERROR, 'the result stores no instant')
+                return
+            end if
+            tol = 1.0e-10_dp * max(1.0_dp, maxval(abs(r%inst(1:r%n_stored))))
+            lo = 0
+            hi = 0
+            do k = 1, r%n_stored
+                if (abs(r%inst(k) - t) <= tol) then
+                    lo = k
+                    hi = k
+                    exit
+                end if
+                if (r%inst(k) < t) then
+                    if (lo == 0) then
+                        lo = k
+                    else if (r%inst(k) > r%inst(lo)) then
+                        lo = k
+                    end if
+                else
+                    if (hi == 0) then
+                        hi = k
+                    else if (r%inst(k) < r%inst(hi)) then
+                        hi = k
+                    end if
+                end if
+            end do
+            if (lo == 0 .or. hi == 0) then
+                call set_error(st, STATUS_MODEL_ERROR, 'INST ' // to_text(t) // ' is outside ' &
+                    // 'the instants of ' // r%name // ' (' // &
+                    to_text(minval(r%inst(1:r%n_stored))) // ' to ' // &
+                    to_text(maxval(r%inst(1:r%n_stored))) // ')')
+                return
+            end if
+            call depl_at(lo, y_lo, st)
+            if (st%ok()) call depl_at(hi, y_hi, st)
+            if (st%failed()) return
+            w = 0.0_dp
+            if (hi /= lo) w = (t - r%inst(lo)) / (r%inst(hi) - r%inst(lo))
+            y = (1.0_dp - w) * y_lo + w * y_hi
+        end associate
+    contains
+        subroutine depl_at(at, v, st)
+            integer(i4), intent(in) :: at
+            real(dp), intent(out) :: v
+            type(status_t), intent(out) :: st
+            integer(i4) :: f, i
+            v = 0.0_dp
+            f = result_field_index(value%evol, at, 'DEPL')
+            if (f == 0) then
+                call set_error(st, STATUS_MODEL_ERROR, value%evol%name // ' has no DEPL at ' // &
+                    'INST ' // to_text(value%evol%inst(at)))
+                return
+            end if
+            associate (fd => value%evol%stored(at)%items(f)%field)
+                i = field_component(fd, trim(value%evol_cmp))
+                if (i == 0 .or. value%evol_node > fd%n_nodes) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'DEPL at INST ' // &
+                        to_text(value%evol%inst(at)) // ' has no ' // trim(value%evol_cmp))
+                    return
+                end if
+                if (.not. fd%node_has(i, value%evol_node)) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'DEPL at INST ' // &
+                        to_text(value%evol%inst(at)) // ' has no ' // trim(value%evol_cmp) // &
+                        ' at a node where another instant has it')
+                    return
+                end if
+                v = fd%node_values(i, value%evol_node)
+            end associate
+        end subroutine depl_at
+    end subroutine evol_value
 
     !> True when the set has an item of this kind.
     pure logical function load_has_kind(set, kind)

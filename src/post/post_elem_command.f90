@@ -16,8 +16,8 @@
 !> degrees of the principal frame: its x axis along the first principal axis, its y axis
 !> along the second; each axis signed so that its largest component is positive); with
 !> ORIG_INER the point P (X_P, Y_P, Z_P) and the moments and products about P (IX_P ..).
-!> The options other than MASS_INER, and MASS_INER on a RESULTAT or CHAM_GD (GEOMETRIE
-!> 'DEFORMEE'), are located errors saying they are not built.
+!> ENER_POT and TRAV_EXT are post_elem_energy's, MINMAX post_elem_minmax's. The other options, and MASS_INER on a RESULTAT or
+!> CHAM_GD (GEOMETRIE 'DEFORMEE'), are located errors saying they are not built.
 module post_elem_command
     use kinds, only: dp, i4
     use strings, only: string_t, to_text
@@ -26,7 +26,6 @@ module post_elem_command
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
     use mesh_types, only: mesh_t, find_cell_group, cells_of_group, find_cell, cell_name
-    use mesh_concept, only: mesh_concept_t
     use mesh_cell_shapes, only: cell_shape, CELL_TYPE_NODES, CELL_TRIA3, CELL_TRIA6, &
         MAX_CELL_NODES
     use model_types, only: is_plate, is_plane_solid
@@ -37,12 +36,14 @@ module post_elem_command
     use table_concept, only: table_t, table_init, table_add_column, table_add_rows, &
         table_set_real, table_set_text, TABLE_REAL, TABLE_TEXT
     use table_keywords, only: relocate_at
+    use post_elem_minmax, only: minmax_rows
+    use post_elem_energy, only: ener_pot_rows, trav_ext_rows, mesh_concept_name
     implicit none
     private
     public :: run_post_elem
 
     !> The options of Code_Aster's POST_ELEM other than MASS_INER (not built).
-    character(len=*), parameter :: OTHER_OPTIONS = 'ENER_POT ENER_CIN TRAV_EXT MINMAX ' // &
+    character(len=*), parameter :: OTHER_OPTIONS = 'ENER_CIN ' // &
         'WEIBULL RICE_TRACEY CARA_GEOM CHAR_LIMITE NORME CARA_POUTRE INDIC_ENER ' // &
         'INDIC_SEUIL VOLUMOGRAMME AIRE_INTERNE ENER_ELAS ENER_ELTR ENER_TOTALE ENER_DISS ' // &
         'INTEGRALE'
@@ -89,13 +90,34 @@ contains
             b = index(OTHER_OPTIONS(a:) // ' ', ' ') + a - 2
             if (cmd%count(OTHER_OPTIONS(a:b)) > 0) then
                 call cmd%error_at(OTHER_OPTIONS(a:b), 'POST_ELEM ' // OTHER_OPTIONS(a:b) // &
-                    ' is not built by parasol: MASS_INER is', st, STATUS_NOT_IMPLEMENTED)
+                    ' is not built by parasol: MASS_INER, ENER_POT, TRAV_EXT and MINMAX are', &
+                    st, &
+                    STATUS_NOT_IMPLEMENTED)
                 return
             end if
             a = b + 2
         end do
+        if (cmd%count('ENER_POT') > 0 .or. cmd%count('TRAV_EXT') > 0 .or. &
+            cmd%count('MINMAX') > 0) then
+            allocate (t)
+            call table_init(t)
+            if (cmd%count('ENER_POT') > 0) then
+                call ener_pot_rows(ctx, cmd, t, st)
+            else if (cmd%count('TRAV_EXT') > 0) then
+                call trav_ext_rows(cmd, t, st)
+            else
+                call minmax_rows(cmd, t, st)
+            end if
+            if (st%failed()) return
+            if (cmd%has('TITRE')) call cmd%get_texts('TITRE', t%title, st)
+            if (st%failed()) return
+            call ctx%write_mess('    POST_ELEM: ' // to_text(int(t%n_rows, i4)) // ' rows')
+            call move_alloc(t, result)
+            return
+        end if
         if (cmd%count('MASS_INER') == 0) then
-            call cmd%error_at('MASS_INER', 'give the quantity to compute (MASS_INER)', st)
+            call cmd%error_at('MASS_INER', 'give the quantity to compute (MASS_INER or ' // &
+                'ENER_POT)', st)
             return
         end if
         do k = 1, 2
@@ -156,7 +178,6 @@ contains
         type(inputs_t), intent(out) :: in
         type(status_t), intent(inout) :: st
         class(concept_t), pointer :: p
-        integer :: k
         if (.not. cmd%has('MODELE')) then
             call cmd%error_at('MASS_INER', 'MASS_INER needs MODELE (the elements whose ' // &
                 'mass is summed)', st)
@@ -195,14 +216,7 @@ contains
                 return
             end select
         end if
-        in%mesh_name = 'MAILLAGE'
-        do k = 1, ctx%nsymbol
-            if (.not. associated(ctx%symbols(k)%value%obj)) cycle
-            select type (q => ctx%symbols(k)%value%obj)
-            type is (mesh_concept_t)
-                if (associated(in%mo%mesh, q%mesh)) in%mesh_name = ctx%symbols(k)%name
-            end select
-        end do
+        in%mesh_name = mesh_concept_name(ctx, in%mo%mesh)
     end subroutine read_inputs
 
     !> The mass properties of every cell with mass (plates, plane solids).

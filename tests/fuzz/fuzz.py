@@ -242,11 +242,32 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
                                        "case.mail": os.path.join(verif, "patch_plan.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
-    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH).
+    # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
+    seeds.append(Seed("ideas_mesh",
+                      {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
+                       "case.unv": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.unv")},
+                      ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "mail"}),
+                      0.5))
+    # CALC_ERREUR's Zhu-Zienkiewicz estimators on the plane patch.
+    seeds.append(Seed("fields_error", {"case.comm": os.path.join(fields, "calc_erreur.comm"),
+                                       "case.mail": os.path.join(verif, "patch_plan.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+    # PROJ_CHAMP between two meshes (collocation, VIS_A_VIS, DISTANCE_MAX, MATR_PROJECTION)
+    # and CHAMNO_IMPO of the projected field.
+    seeds.append(Seed("fields_projection",
+                      {"case.comm": os.path.join(fields, "proj_champ.comm"),
+                       "case.mail": os.path.join(verif, "patch_plan.mail"),
+                       "target.mail": os.path.join(fields, "proj_target.mail")},
+                      ["--unit", "20=case.mail", "--unit", "21=target.mail"],
+                      dict(comm_targets, **{"case.mail": "mail", "target.mail": "mail"}), 0.5))
+    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH), and the
+    # MED files read back by LIRE_CHAMP (units 80, 81 written and read by the deck itself).
     seeds.append(Seed("fields_output", {"case.comm": os.path.join(SOURCE, "tests", "output",
                                                                   "field_output.comm"),
                                         "case.mail": os.path.join(verif, "patch_dkq.mail")},
-                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.6))
+                      ["--unit", "20=case.mail", "--unit", "80=all.rmed", "--unit",
+                       "81=cham.rmed", "--unit", "82=mesh.rmed"],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.6))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
@@ -316,6 +337,16 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "case.21": os.path.join(tables, "post_elem_plate.mail")},
                       ["--unit", "20=case.20", "--unit", "21=case.21"],
                       dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    seeds.append(Seed("post_elem_energy",
+                      {"case.comm": os.path.join(tables, "post_elem_energy.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail"),
+                       "case.21": os.path.join(tables, "post_elem_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    seeds.append(Seed("post_elem_minmax",
+                      {"case.comm": os.path.join(tables, "post_elem_minmax.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail")},
+                      ["--unit", "20=case.20"], dict(comm_targets, **{"case.20": "mail"}), 0.6))
     # TAB['PARA', ROW], EXTR_TABLE() and the Python tables' columns, rows and filters.
     seeds.append(Seed("table_methods", {"case.comm": os.path.join(tables, "table_methods.comm")},
                       [], comm_targets, 0.8))
