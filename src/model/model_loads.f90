@@ -3,9 +3,15 @@
 !> A load set is a list of items, each of one kind applied to nodes or cells:
 !>   DDL_IMPO      nodes, imposed components DX..DRZ
 !>   FORCE_NODALE  nodes, FX FY FZ MX MY MZ (added to the equations DX..DRZ)
-!>   FORCE_COQUE   plate cells, PRES (force = -PRES n) or FX/FY/FZ per unit area
-!>   PRES_REP      plate cells, PRES
-!>   FORCE_CONTOUR SEG2 edge cells of plane models, FX FY per unit length (unit depth)
+!>   FORCE_NODALE  (ANGL_NAUT: FX..MZ in the frame of the nautical angles)
+!>   FORCE_COQUE   plate cells, PRES (force = -PRES n), FX..MZ (global) or F1, F2, F3,
+!>                 MF1, MF2 (the plate's user frame) per unit area, on the plane PLAN
+!>   PRES_REP      plate cells, PRES; plane edges (SEG2, SEG3), PRES and CISA_2D
+!>   FORCE_CONTOUR SEG2/SEG3 edge cells of plane models, FX FY per unit length (unit depth)
+!>   FORCE_ARETE   SEG2 edges of a DKT model, FX..MZ per unit length (global)
+!>   FORCE_INTERNE plane solid cells, FX FY per unit volume (unit depth)
+!>   PESANTEUR     cells (all, or GROUP_MA): rho g d per unit volume (plates: rho EPAIS g d
+!>                 per unit area), slots 1..3 = g d (d the unit DIRECTION)
 !>   RELATION      linear relations between components of nodes (LIAISON_DDL,
 !>                 LIAISON_OBLIQUE, LIAISON_UNIF, LIAISON_SOLIDE, LIAISON_GROUP,
 !>                 LIAISON_RBE3, LIAISON_MAIL, FACE_IMPO and ARETE_IMPO DNOR/DTAN): each
@@ -36,16 +42,32 @@ module model_loads
     private
 
     integer(i4), parameter, public :: LOAD_DDL_IMPO = 1, LOAD_FORCE_NODALE = 2, &
-        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6
-    character(len=13), parameter, public :: LOAD_KIND_NAMES(6) = ['DDL_IMPO     ', &
-        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR', 'LIAISON      ']
-    !> Slot of PRES in FORCE_COQUE / PRES_REP items (the FX FY FZ slots are 1..3).
-    integer(i4), parameter, public :: SLOT_PRES = 4
-    !> Names of the six slots of each kind (messages).
-    character(len=4), parameter :: SLOT_NAMES(6, 6) = reshape([character(len=4) :: &
-        'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', 'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', &
-        'FX', 'FY', 'FZ', 'PRES', '', '', 'FX', 'FY', 'FZ', 'PRES', '', '', &
-        'FX', 'FY', '', '', '', '', '', '', '', '', '', ''], [6, 6])
+        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6, &
+        LOAD_FORCE_ARETE = 7, LOAD_FORCE_INTERNE = 8, LOAD_PESANTEUR = 9, N_LOAD_KINDS = 9
+    character(len=13), parameter, public :: LOAD_KIND_NAMES(N_LOAD_KINDS) = [ &
+        'DDL_IMPO     ', 'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', &
+        'FORCE_CONTOUR', 'LIAISON      ', 'FORCE_ARETE  ', 'FORCE_INTERNE', 'PESANTEUR    ']
+    !> Value slots of an item (see load_item_t%values).
+    integer(i4), parameter, public :: MAX_SLOTS = 9
+    !> Slot of PRES in FORCE_COQUE / PRES_REP items, of CISA_2D in PRES_REP items, and the
+    !> first of FORCE_NODALE's three ANGL_NAUT angles (the FX .. MZ slots are 1..6).
+    integer(i4), parameter, public :: SLOT_PRES = 7, SLOT_CISA = 8, SLOT_ANGLES = 7
+    !> FORCE_COQUE/PLAN: the plane the forces act in (Code_Aster te0032: MAIL and MOY the
+    !> mean surface, SUP and INF the faces at +-EPAIS/2, a moment of the in-plane forces).
+    integer(i4), parameter, public :: PLAN_MAIL = 0, PLAN_SUP = 1, PLAN_INF = -1, &
+        PLAN_MOY = 2
+    !> Names of the slots of each kind (messages).
+    character(len=9), parameter :: SLOT_NAMES(MAX_SLOTS, N_LOAD_KINDS) = reshape( &
+        [character(len=9) :: &
+        'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', '', '', '', &
+        'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', 'ANGL_NAUT', 'ANGL_NAUT', 'ANGL_NAUT', &
+        'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', 'PRES', '', '', &
+        '', '', '', '', '', '', 'PRES', 'CISA_2D', '', &
+        'FX', 'FY', 'FZ', '', '', '', '', '', '', &
+        '', '', '', '', '', '', '', '', '', &
+        'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', '', '', '', &
+        'FX', 'FY', 'FZ', '', '', '', '', '', '', &
+        'GRAVITE', 'GRAVITE', 'GRAVITE', '', '', '', '', '', ''], [MAX_SLOTS, N_LOAD_KINDS])
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
@@ -68,13 +90,19 @@ module model_loads
         integer(i4) :: kind = 0                      !< LOAD_*
         integer(i4), allocatable :: nodes(:)         !< DDL_IMPO, FORCE_NODALE
         integer(i4), allocatable :: cells(:)         !< FORCE_COQUE, PRES_REP, FORCE_CONTOUR
-        type(load_value_t) :: values(6)              !< DX..DRZ / FX..MZ / FX,FY,FZ,PRES
+        !> DX..DRZ / FX..MZ (FORCE_NODALE: then ANGL_NAUT) / FORCE_COQUE FX..MZ or F1, F2,
+        !> F3, MF1, MF2 (local_frame), PRES / PRES_REP PRES, CISA_2D / PESANTEUR g d
+        type(load_value_t) :: values(MAX_SLOTS)
         character(len=:), allocatable :: group      !< group name, for messages
         !> where the occurrence is in the deck (errors found while the load is applied are
         !> located there): file, line, column, command (AFFE_CHAR_MECA_F) and keyword
         character(len=:), allocatable :: file, command, keyword
         integer(i4) :: line = 0, col = 0
         logical :: blocage = .false.                 !< DDL_IMPO/BLOCAGE: skip absent components
+        !> FORCE_COQUE F1, F2, F3, MF1, MF2: in the plate's user frame (COQUE/ANGL_REP)
+        logical :: local_frame = .false.
+        integer(i4) :: plan = PLAN_MAIL               !< FORCE_COQUE/PLAN (PLAN_*)
+        logical :: angles = .false.                   !< FORCE_NODALE/ANGL_NAUT given
         !> RELATION items: relation r has the terms rel_ptr(r) .. rel_ptr(r+1)-1 of
         !> (rel_node, rel_comp, rel_coef); its right-hand side is values(rel_slot(r))
         !> evaluated at node rel_at(r) (rel_slot 0: zero)
@@ -85,7 +113,7 @@ module model_loads
         !> LIAISON_SOLIDE: the nodes of the rigid body (its cells store no energy)
         integer(i4), allocatable :: solid_nodes(:)
         !> names of the value slots, for messages (RELATION items: COEF_IMPO, DNOR, ...)
-        character(len=16) :: slot_names(6) = ''
+        character(len=16) :: slot_names(MAX_SLOTS) = ''
     end type load_item_t
 
     !> A char_meca concept's content.
@@ -143,6 +171,9 @@ contains
         integer(i4) :: k
         to%kind = from%kind
         to%blocage = from%blocage
+        to%local_frame = from%local_frame
+        to%plan = from%plan
+        to%angles = from%angles
         call move_alloc(from%nodes, to%nodes)
         call move_alloc(from%cells, to%cells)
         to%n_rel = from%n_rel
@@ -160,7 +191,7 @@ contains
         if (allocated(from%keyword)) call move_alloc(from%keyword, to%keyword)
         to%line = from%line
         to%col = from%col
-        do k = 1, 6
+        do k = 1, MAX_SLOTS
             to%values(k)%given = from%values(k)%given
             to%values(k)%constant = from%values(k)%constant
             to%values(k)%func => from%values(k)%func
@@ -238,7 +269,7 @@ contains
         if (len(name) == 0) name = load_slot_name(item%kind, slot)
     end function item_slot_name
 
-    !> Sets slot `slot` (1..6) of item `index` to a constant.
+    !> Sets slot `slot` (1..MAX_SLOTS) of item `index` to a constant.
     subroutine load_set_constant(set, index, slot, value)
         type(load_set_t), intent(inout) :: set
         integer(i4), intent(in) :: index, slot

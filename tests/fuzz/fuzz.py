@@ -272,10 +272,16 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
-    # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE.
+    # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE,
+    # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE);
+    # the loads' resultants (PESANTEUR, FORCE_ARETE, FORCE_COQUE, FORCE_INTERNE, PRES_REP).
     for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
                        ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
-                       ("ssnl130a_solide", meshes[("a", "aster")])):
+                       ("ssnl130a_solide", meshes[("a", "aster")]),
+                       ("plate_load_resultants", os.path.join(verif, "loaded_plate.mail")),
+                       ("plane_load_resultants", os.path.join(verif, "loaded_block.mail")),
+                       ("glued_plan", os.path.join(verif, "glued_plan.mail")),
+                       ("glued_plate", os.path.join(verif, "glued_plate.mail"))):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": mesh}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
@@ -290,6 +296,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
     seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                             "session_commands.comm")},
+                      [], comm_targets, 0.5))
+    # User macros: MACRO, SIMP, FACT, rules and UserMacro, calls validated then run.
+    seeds.append(Seed("user_macro", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                               "user_macro.comm")},
                       [], comm_targets, 0.5))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),
