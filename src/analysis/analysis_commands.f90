@@ -11,6 +11,7 @@ module analysis_commands
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
     use mesh_command_support, only: group_cells, all_cells
+    use mesh_types, only: cell_name
     use model_types, only: is_discrete
     use model_concept, only: model_concept_t
     use material_concept, only: material_field_concept_t
@@ -404,6 +405,8 @@ contains
             end if
             s%choc(cells) = contact_law
             s%dis_contact(cells) = relation == 'DIS_CONTACT'
+            if (contact_law) call refuse_friction(occ, s, cells, st)
+            if (st%failed()) return
         end do
     end subroutine read_behaviour
 
@@ -493,6 +496,31 @@ contains
             call occ%error_at(key, message, st)
         end subroutine relocate
     end subroutine read_initial_state
+
+    ! DEFI_MATERIAU keeps DIS_CONTACT/COULOMB as data; a contact law on a cell whose material
+    ! has friction is what parasol does not build (frictionless DIS_CHOC, DIS_CONTACT).
+    subroutine refuse_friction(occ, s, cells, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: cells(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, m
+        if (.not. allocated(s%materials%cell_material)) return
+        do k = 1, size(cells)
+            m = s%materials%cell_material(cells(k))
+            if (m <= 0) cycle
+            associate (mat => s%materials%materials(m))
+                if (.not. mat%has_dis_contact) cycle
+                if (.not. abs(mat%dis_contact%coulomb) > 0.0_dp) cycle
+                call occ%error_at('RELATION', 'the material of cell ' // &
+                    cell_name(s%mesh, cells(k)) // ' has DIS_CONTACT COULOMB = ' // &
+                    real_e13(mat%dis_contact%coulomb) // ': friction is not built yet ' // &
+                    '(parasol has frictionless DIS_CHOC and DIS_CONTACT)', st, &
+                    code=STATUS_NOT_IMPLEMENTED)
+                return
+            end associate
+        end do
+    end subroutine refuse_friction
 
     !> INCREMENT: LIST_INST (a DEFI_LIST_REEL, or a DEFI_LIST_INST with what a failed step
     !> does: time_stepping) restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices

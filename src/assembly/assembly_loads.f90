@@ -6,17 +6,26 @@
 !> the caller at the instant).
 module assembly_loads
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: real_e13, to_text
     use mesh_types, only: cell_label, node_name, cell_measure
-    use model_types, only: is_plate, is_plane_edge
+    use model_types, only: is_plate, is_plane_edge, is_plate_edge, is_plane_solid, &
+        is_load_edge, is_discrete, ELEM_NONE
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS
     use model_loads, only: load_set_t, load_item_t, load_value_at, LOAD_DDL_IMPO, &
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
-        LOAD_KIND_NAMES, load_locate, load_slot_name
+        LOAD_FORCE_ARETE, LOAD_FORCE_INTERNE, LOAD_PESANTEUR, SLOT_CISA, SLOT_ANGLES, &
+        PLAN_SUP, PLAN_INF, LOAD_KIND_NAMES, load_locate, load_slot_name, item_slot_name
+    use model_material, only: material_of_cell
+    use model_relations, only: nautical_frame
     use number_limits, only: product_fits
-    use element_loads, only: plate_nodal_pressure, plate_nodal_forces, edge_load_points, &
-        edge_line_forces, edge_points_t, MAX_EDGE_POINTS, MAX_EDGE_NODES
+    use mesh_cell_shapes, only: MAX_CELL_NODES
+    use element_gauss_families, only: MAX_GAUSS_POINTS
+    use element_plate, only: plate_local_frame
+    use element_plate_fields, only: plate_user_turn
+    use element_loads, only: plate_nodal_pressure, plate_nodal_values, edge_load_points, &
+        edge_line_forces, edge_points_t, MAX_EDGE_POINTS, MAX_EDGE_NODES, area_points_t, &
+        plane_load_points, area_forces
     use assembly_system, only: structure_t
     implicit none
     private
@@ -45,7 +54,10 @@ contains
                     do comp = 1, N_COMPONENTS
                         if (.not. item%values(comp)%given) cycle
                         eq = s%dofs%equation(comp, item%nodes(i))
-                        if (eq <= 0 .and. item%blocage) cycle
+                        ! BLOCAGE and AFFE_CHAR_CINE skip a component the node lacks
+                        ! (Code_Aster caddli; charci fills a field of every component, which
+                        ! the numbering then reads where it has the equation)
+                        if (eq <= 0 .and. (item%blocage .or. load%kinematic)) cycle
                         if (eq <= 0) then
                             call set_error(st, STATUS_MODEL_ERROR, 'DDL_IMPO: node ' // &
                                 node_name(s%mesh, item%nodes(i)) // ' has no component ' // &
@@ -207,60 +219,99 @@ contains
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        integer(i4) :: k, i
+        integer(i4) :: k, i, c
         do k = 1, load%n_items
             associate (item => load%items(k))
-                select case (item%kind)
-                case (LOAD_FORCE_NODALE)
+                if (item%kind == LOAD_FORCE_NODALE) then
                     call nodal_forces(s, item, t, factor, fext, st)
-                case (LOAD_FORCE_COQUE, LOAD_PRES_REP)
+                else
                     do i = 1, size(item%cells)
-                        call plate_cell_forces(s, item, item%cells(i), t, factor, fext, st)
+                        c = item%cells(i)
+                        select case (item%kind)
+                        case (LOAD_FORCE_COQUE)
+                            call plate_cell_forces(s, item, c, t, factor, fext, st)
+                        case (LOAD_PRES_REP)
+                            if (is_plate(s%model%element(c))) then
+                                call plate_cell_forces(s, item, c, t, factor, fext, st)
+                            else
+                                call edge_cell_forces(s, item, c, t, factor, fext, st)
+                            end if
+                        case (LOAD_FORCE_CONTOUR)
+                            call edge_cell_forces(s, item, c, t, factor, fext, st)
+                        case (LOAD_FORCE_ARETE)
+                            call plate_edge_forces(s, item, c, t, factor, fext, st)
+                        case (LOAD_FORCE_INTERNE)
+                            call area_cell_forces(s, item, c, t, factor, fext, st)
+                        case (LOAD_PESANTEUR)
+                            call gravity_forces(s, item, c, factor, fext, st)
+                        end select
                         if (st%failed()) exit
                     end do
-                case (LOAD_FORCE_CONTOUR)
-                    do i = 1, size(item%cells)
-                        call edge_cell_forces(s, item, item%cells(i), t, factor, fext, st)
-                        if (st%failed()) exit
-                    end do
-                end select
+                end if
             end associate
             if (st%failed()) return
         end do
     end subroutine add_external_forces
 
+    !> FORCE_NODALE at its nodes; with ANGL_NAUT the forces and moments are components in
+    !> the frame of the angles (evaluated at the node), turned to global ones: f = p^T f'
+    !> (model_relations nautical_frame, Code_Aster's utpvlg).
     subroutine nodal_forces(s, item, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        integer(i4) :: i, comp, eq
-        real(dp) :: v
+        integer(i4) :: i, comp, eq, node
+        real(dp) :: v(N_COMPONENTS), angles(3), p(3, 3)
         do i = 1, size(item%nodes)
+            node = item%nodes(i)
+            v = 0.0_dp
             do comp = 1, N_COMPONENTS
                 if (.not. item%values(comp)%given) cycle
-                eq = s%dofs%equation(comp, item%nodes(i))
-                if (eq <= 0) then
-                    call set_error(st, STATUS_MODEL_ERROR, 'FORCE_NODALE: node ' // &
-                        node_name(s%mesh, item%nodes(i)) // ' has no component ' // &
-                        trim(COMPONENT_NAMES(comp)) // ' in the model')
-                    return
-                end if
                 call load_value_at(item%values(comp), item%kind, comp, t, &
-                    s%mesh%coords(:, item%nodes(i)), v, st)
-                if (st%ok()) call check_factor(factor, v, item%kind, comp, st)
+                    s%mesh%coords(:, node), v(comp), st)
+                if (st%ok()) call check_factor(factor, v(comp), item%kind, comp, st)
                 call load_locate(item, comp, st)
                 if (st%failed()) return
-                fext(eq) = fext(eq) + factor * v
+            end do
+            if (item%angles) then
+                do comp = 1, 3
+                    call load_value_at(item%values(SLOT_ANGLES + comp - 1), item%kind, &
+                        SLOT_ANGLES + comp - 1, t, s%mesh%coords(:, node), angles(comp), st)
+                    call load_locate(item, SLOT_ANGLES + comp - 1, st)
+                    if (st%failed()) return
+                end do
+                call nautical_frame(angles, p)
+                v(1:3) = matmul(transpose(p), v(1:3))
+                v(4:6) = matmul(transpose(p), v(4:6))
+            end if
+            do comp = 1, N_COMPONENTS
+                if (.not. (item%values(comp)%given .or. (item%angles .and. &
+                    abs(v(comp)) > 0.0_dp))) cycle
+                eq = s%dofs%equation(comp, node)
+                if (eq <= 0) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'FORCE_NODALE: node ' // &
+                        node_name(s%mesh, node) // ' has no component ' // &
+                        trim(COMPONENT_NAMES(comp)) // ' in the model' // trim(merge( &
+                        ' (ANGL_NAUT turns the force onto it)', &
+                        '                                    ', item%angles)))
+                    call load_locate(item, comp, st)
+                    return
+                end if
+                fext(eq) = fext(eq) + factor * v(comp)
             end do
         end do
     end subroutine nodal_forces
 
-    !> FORCE_COQUE / PRES_REP on one plate cell: PRES (force = -PRES n) or FX/FY/FZ, known
-    !> at the cell's nodes (element_loads: Code_Aster's DKT/DKQ discretisation). A PRES_REP
-    !> function is refused where it is not zero, as Code_Aster refuses it on plates
-    !> (message ELEMENTS4_92: a pressure function on shells goes through FORCE_COQUE).
+    !> FORCE_COQUE / PRES_REP on one plate cell, known at the cell's nodes (element_loads:
+    !> Code_Aster's DKT/DKQ discretisation, te0032): PRES (force = -PRES n), or FX..MZ
+    !> (global), or F1, F2, F3, MF1, MF2 in the cell's user frame (COQUE/ANGL_REP:
+    !> element_plate_fields plate_user_turn; F3 along the cell's normal); PLAN SUP / INF
+    !> moves the forces to the face at +-EPAIS/2: the moment (+-EPAIS/2) n x F is added. A
+    !> PRES_REP function is refused where it is not zero, as Code_Aster refuses it on
+    !> plates (message ELEMENTS4_92: a pressure function on shells goes through
+    !> FORCE_COQUE).
     subroutine plate_cell_forces(s, item, c, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
@@ -268,7 +319,8 @@ contains
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        real(dp) :: x(3, 4), q(3, 4), pres(4), fe(12), area
+        real(dp) :: x(3, 4), q(6, 4), pres(4), fe(6, 4), area, rot(3, 3), xy(2, 4), cu, su
+        real(dp) :: user(3, 3), dist, fp(12)
         integer(i4) :: nn, a, comp, p0, eq
         logical :: pressure
         if (.not. is_plate(s%model%element(c))) then
@@ -292,10 +344,10 @@ contains
                                                st)
                 call load_locate(item, SLOT_PRES, st)
             else
-                do comp = 1, 3
+                do comp = 1, 6
                     if (item%values(comp)%given) then
                         call load_value_at(item%values(comp), item%kind, comp, t, x(:, a), &
-                            q(comp, a), st)
+                            q(comp, a), st, slot_name=item_slot_name(item, comp))
                         if (st%ok()) call check_factor(area, q(comp, a), item%kind, comp, st)
                         if (st%ok()) call check_factor(factor, q(comp, a) * area, item%kind, &
                                                        comp, st)
@@ -315,9 +367,31 @@ contains
             return
         end if
         if (pressure) then
-            call plate_nodal_pressure(x(:, 1:nn), nn, pres(1:nn), fe(1:3 * nn), st)
+            call plate_nodal_pressure(x(:, 1:nn), nn, pres(1:nn), fp(1:3 * nn), st)
+            fe(1:3, 1:nn) = reshape(fp(1:3 * nn), [3, nn])
+            fe(4:6, 1:nn) = 0.0_dp
         else
-            call plate_nodal_forces(x(:, 1:nn), nn, q(:, 1:nn), fe(1:3 * nn), st)
+            call plate_local_frame(x(:, 1:nn), nn, rot, xy(:, 1:nn), st)
+            if (st%ok() .and. item%local_frame) then
+                ! user frame: x = c x_local + s y_local, y = n x x, the normal n
+                call plate_user_turn(rot, s%cara%coque_direction(:, c), cu, su, st)
+                user(:, 1) = cu * rot(1, :) + su * rot(2, :)
+                user(:, 2) = -su * rot(1, :) + cu * rot(2, :)
+                user(:, 3) = rot(3, :)
+                do a = 1, nn
+                    q(4:6, a) = matmul(user(:, 1:2), q(4:5, a))
+                    q(1:3, a) = matmul(user, q(1:3, a))
+                end do
+            end if
+            if (st%ok() .and. (item%plan == PLAN_SUP .or. item%plan == PLAN_INF)) then
+                dist = 0.5_dp * s%cara%thickness(c) * merge(1.0_dp, -1.0_dp, &
+                    item%plan == PLAN_SUP)
+                user(:, 3) = rot(3, :)
+                do a = 1, nn
+                    q(4:6, a) = q(4:6, a) + dist * cross(user(:, 3), q(1:3, a))
+                end do
+            end if
+            if (st%ok()) call plate_nodal_values(x(:, 1:nn), nn, q(:, 1:nn), fe(:, 1:nn), st)
         end if
         if (st%failed()) then
             call set_error(st, st%code, trim(LOAD_KIND_NAMES(item%kind)) // ' on ' // &
@@ -325,15 +399,23 @@ contains
             return
         end if
         do a = 1, nn
-            do comp = 1, 3
+            do comp = 1, 6
                 eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
-                if (eq > 0) fext(eq) = fext(eq) + factor * fe(3 * (a - 1) + comp)
+                if (eq > 0) fext(eq) = fext(eq) + factor * fe(comp, a)
             end do
         end do
     end subroutine plate_cell_forces
 
-    !> FORCE_CONTOUR FX, FY on one SEG2 / SEG3 edge of a plane model (per unit length, unit
-    !> depth).
+    pure function cross(a, b) result(c)
+        real(dp), intent(in) :: a(3), b(3)
+        real(dp) :: c(3)
+        c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
+    end function cross
+
+    !> FORCE_CONTOUR FX, FY or PRES_REP PRES, CISA_2D on one SEG2 / SEG3 edge of a plane
+    !> model (per unit length, unit depth), evaluated at the edge's load points
+    !> (element_loads): the traction of PRES_REP is -p n + c t, t = (-n_y, n_x) the tangent
+    !> node 1 -> node 2 (Code_Aster nmpr2d_vect).
     subroutine edge_cell_forces(s, item, c, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
@@ -341,13 +423,13 @@ contains
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
-        real(dp) :: x(2, MAX_EDGE_NODES), q(2, MAX_EDGE_POINTS), fe(2 * MAX_EDGE_NODES)
+        real(dp) :: x(2, MAX_EDGE_NODES), q(2, MAX_EDGE_POINTS), fe(2 * MAX_EDGE_NODES), v(2)
         type(edge_points_t) :: pts
-        integer(i4) :: g, a, comp, p0, eq, nn
+        integer(i4) :: g, a, comp, p0, eq, nn, slot
         if (.not. is_plane_edge(s%model%element(c))) then
-            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_CONTOUR applies to SEG2 and SEG3 ' &
-                // 'edges of a D_PLAN/C_PLAN model, not to ' // cell_label(s%mesh, c, &
-                item%group))
+            call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(item%kind)) // &
+                ' applies to SEG2 and SEG3 edges of a D_PLAN/C_PLAN model, not to ' // &
+                cell_label(s%mesh, c, item%group))
             return
         end if
         p0 = s%mesh%cell_ptr(c)
@@ -355,6 +437,95 @@ contains
         x(:, 1:nn) = s%mesh%coords(1:2, s%mesh%cell_nodes(p0:p0 + nn - 1))
         call edge_load_points(s%mesh%cell_type(c), x(:, 1:nn), pts, st)
         if (st%failed()) return
+        q = 0.0_dp
+        do g = 1, pts%n
+            v = 0.0_dp
+            do comp = 1, 2
+                slot = comp
+                if (item%kind == LOAD_PRES_REP) slot = merge(SLOT_PRES, SLOT_CISA, comp == 1)
+                if (.not. item%values(slot)%given) cycle
+                call load_value_at(item%values(slot), item%kind, slot, t, &
+                    [pts%x(1, g), pts%x(2, g), 0.0_dp], v(comp), st)
+                if (st%ok()) call check_factor(pts%w(g), v(comp), item%kind, slot, st)
+                if (st%ok()) call check_factor(factor, v(comp) * pts%w(g), item%kind, &
+                                               slot, st)
+                call load_locate(item, slot, st)
+                if (st%failed()) return
+            end do
+            if (item%kind == LOAD_PRES_REP) then
+                q(1, g) = -pts%normal(1, g) * v(1) - pts%normal(2, g) * v(2)
+                q(2, g) = -pts%normal(2, g) * v(1) + pts%normal(1, g) * v(2)
+            else
+                q(:, g) = v
+            end if
+        end do
+        call edge_line_forces(pts, q(:, 1:pts%n), fe(1:2 * nn))
+        do a = 1, nn
+            do comp = 1, 2
+                eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
+                if (eq > 0) fext(eq) = fext(eq) + factor * fe(2 * (a - 1) + comp)
+            end do
+        end do
+    end subroutine edge_cell_forces
+
+    !> FORCE_ARETE FX..MZ (per unit length, global) on one SEG2 edge of a DKT model: half of
+    !> value x length to each node, a function evaluated at the edge's middle (Code_Aster
+    !> te0034).
+    subroutine plate_edge_forces(s, item, c, t, factor, fext, st)
+        type(structure_t), intent(in) :: s
+        type(load_item_t), intent(in) :: item
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: t, factor
+        real(dp), intent(inout) :: fext(:)
+        type(status_t), intent(out) :: st
+        real(dp) :: x(3, 2), v, length
+        integer(i4) :: a, comp, p0, eq
+        if (.not. is_plate_edge(s%model%element(c))) then
+            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_ARETE applies to SEG2 edges of a ' &
+                // 'DKT model, not to ' // cell_label(s%mesh, c, item%group))
+            return
+        end if
+        p0 = s%mesh%cell_ptr(c)
+        x = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + 1))
+        length = norm2(x(:, 2) - x(:, 1))
+        do comp = 1, 6
+            if (.not. item%values(comp)%given) cycle
+            call load_value_at(item%values(comp), item%kind, comp, t, &
+                0.5_dp * (x(:, 1) + x(:, 2)), v, st)
+            if (st%ok()) call check_factor(length, v, item%kind, comp, st)
+            if (st%ok()) call check_factor(factor, 0.5_dp * v * length, item%kind, comp, st)
+            call load_locate(item, comp, st)
+            if (st%failed()) return
+            do a = 1, 2
+                eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
+                if (eq > 0) fext(eq) = fext(eq) + factor * (0.5_dp * v * length)
+            end do
+        end do
+    end subroutine plate_edge_forces
+
+    !> FORCE_INTERNE FX, FY (per unit volume, unit depth) on one plane solid cell, known at
+    !> the points of its RIGI family (element_loads plane_load_points; te0093 / te0094).
+    subroutine area_cell_forces(s, item, c, t, factor, fext, st)
+        type(structure_t), intent(in) :: s
+        type(load_item_t), intent(in) :: item
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: t, factor
+        real(dp), intent(inout) :: fext(:)
+        type(status_t), intent(out) :: st
+        type(area_points_t) :: pts
+        real(dp) :: q(2, MAX_GAUSS_POINTS)
+        integer(i4) :: g, comp
+        if (.not. is_plane_solid(s%model%element(c))) then
+            call set_error(st, STATUS_MODEL_ERROR, 'FORCE_INTERNE applies to D_PLAN/C_PLAN ' &
+                // 'surface cells, not to ' // cell_label(s%mesh, c, item%group))
+            return
+        end if
+        call cell_area_points(s, c, pts, st)
+        if (st%failed()) then
+            call set_error(st, st%code, 'FORCE_INTERNE on ' // cell_label(s%mesh, c, &
+                item%group) // ': ' // st%message)
+            return
+        end if
         q = 0.0_dp
         do g = 1, pts%n
             do comp = 1, 2
@@ -368,14 +539,111 @@ contains
                 if (st%failed()) return
             end do
         end do
-        call edge_line_forces(pts, q(:, 1:pts%n), fe(1:2 * nn))
-        do a = 1, nn
+        call add_area_forces(s, c, pts, q, factor, fext)
+    end subroutine area_cell_forces
+
+    !> PESANTEUR on one cell: rho g d per unit volume, rho the ELAS RHO of its material
+    !> (Code_Aster te0085 on plane solids, over the RIGI points; te0032 on plates, rho
+    !> EPAIS g d per unit area with the plate's load weights). Cells without a mass take
+    !> none (load edges, discretes without M_*); a discrete with a mass is refused (parasol
+    !> keeps no discrete masses), as is a cell whose material has no RHO.
+    subroutine gravity_forces(s, item, c, factor, fext, st)
+        type(structure_t), intent(in) :: s
+        type(load_item_t), intent(in) :: item
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: factor
+        real(dp), intent(inout) :: fext(:)
+        type(status_t), intent(out) :: st
+        type(area_points_t) :: pts
+        real(dp) :: gd(3), rho, x(3, 4), q(6, 4), fe(6, 4), qa(2, MAX_GAUSS_POINTS)
+        integer(i4) :: kind, m, nn, p0, a, comp, eq
+        kind = s%model%element(c)
+        if (kind == ELEM_NONE .or. is_load_edge(kind)) return
+        if (is_discrete(kind)) then
+            if (s%cara%has_mass(c)) call set_error(st, STATUS_NOT_IMPLEMENTED, &
+                'PESANTEUR on the discrete mass of ' // cell_label(s%mesh, c, item%group) // &
+                ' is not built: parasol keeps no discrete masses (M_*: statics only)')
+            call load_locate(item, 1, st)
+            return
+        end if
+        m = material_of_cell(s%materials, c)
+        if (m > 0) then
+            rho = s%materials%materials(m)%elas%rho
+            if (.not. s%materials%materials(m)%elas%has_rho) m = 0
+        end if
+        if (m == 0) then
+            call set_error(st, STATUS_MODEL_ERROR, 'PESANTEUR needs the density RHO in ' // &
+                'ELAS of the material of ' // cell_label(s%mesh, c, item%group))
+            call load_locate(item, 1, st)
+            return
+        end if
+        gd = [(item%values(comp)%constant, comp = 1, 3)]
+        if (is_plate(kind)) then
+            p0 = s%mesh%cell_ptr(c)
+            nn = s%mesh%cell_ptr(c + 1) - p0
+            x(:, 1:nn) = s%mesh%coords(:, s%mesh%cell_nodes(p0:p0 + nn - 1))
+            q = 0.0_dp
+            do a = 1, nn
+                q(1:3, a) = rho * s%cara%thickness(c) * gd
+            end do
+            call plate_nodal_values(x(:, 1:nn), nn, q(:, 1:nn), fe(:, 1:nn), st)
+            if (st%failed()) then
+                call set_error(st, st%code, 'PESANTEUR on ' // cell_label(s%mesh, c, &
+                    item%group) // ': ' // st%message)
+                return
+            end if
+            do a = 1, nn
+                do comp = 1, 3
+                    eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
+                    if (eq > 0) fext(eq) = fext(eq) + factor * fe(comp, a)
+                end do
+            end do
+        else if (is_plane_solid(kind)) then
+            call cell_area_points(s, c, pts, st)
+            if (st%failed()) then
+                call set_error(st, st%code, 'PESANTEUR on ' // cell_label(s%mesh, c, &
+                    item%group) // ': ' // st%message)
+                return
+            end if
+            ! a plane model has no Z: the Z part of gravity acts on nothing (te0085)
+            do a = 1, pts%n
+                qa(:, a) = rho * gd(1:2)
+            end do
+            call add_area_forces(s, c, pts, qa, factor, fext)
+        end if
+    end subroutine gravity_forces
+
+    ! The load points of plane solid cell c (element_loads plane_load_points).
+    subroutine cell_area_points(s, c, pts, st)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        type(area_points_t), intent(out) :: pts
+        type(status_t), intent(out) :: st
+        integer(i4) :: p0, nn
+        p0 = s%mesh%cell_ptr(c)
+        nn = s%mesh%cell_ptr(c + 1) - p0
+        call plane_load_points(s%mesh%cell_type(c), s%mesh%coords(1:2, &
+            s%mesh%cell_nodes(p0:p0 + nn - 1)), pts, st)
+    end subroutine cell_area_points
+
+    ! fext <- fext + factor times the nodal forces of q(1:2, points) on plane cell c.
+    subroutine add_area_forces(s, c, pts, q, factor, fext)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        type(area_points_t), intent(in) :: pts
+        real(dp), intent(in) :: q(:, :), factor
+        real(dp), intent(inout) :: fext(:)
+        real(dp) :: fe(2 * MAX_CELL_NODES)
+        integer(i4) :: a, comp, eq, p0
+        p0 = s%mesh%cell_ptr(c)
+        call area_forces(pts, q(:, 1:pts%n), fe(1:2 * pts%nn))
+        do a = 1, pts%nn
             do comp = 1, 2
                 eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
                 if (eq > 0) fext(eq) = fext(eq) + factor * fe(2 * (a - 1) + comp)
             end do
         end do
-    end subroutine edge_cell_forces
+    end subroutine add_area_forces
 
     ! A load value times a factor (the FONC_MULT of its EXCIT, an integration weight) must
     ! stay inside the magnitudes products may be formed from (number_limits): decided

@@ -10,7 +10,7 @@ module assembly_system
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: to_text
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, MAX_CELL_NODES
-    use model_types, only: model_t, is_plate, is_plane_solid, is_plane_edge, is_discrete, &
+    use model_types, only: model_t, is_plate, is_plane_solid, is_load_edge, is_discrete, &
         is_discrete_2d, is_plane_strain, is_discrete_rotational, ELEM_NONE, ELEM_DIS_T_SEG2, &
         ELEM_2D_DIS_T_SEG2, &
         ELEM_DIS_T_POI1, ELEM_2D_DIS_T_POI1, ELEMENT_NAMES
@@ -134,7 +134,7 @@ contains
         character(len=:), allocatable :: what, law
         do c = 1, s%mesh%n_cells
             kind = s%model%element(c)
-            if (kind == ELEM_NONE .or. is_plane_edge(kind)) cycle
+            if (kind == ELEM_NONE .or. is_load_edge(kind)) cycle
             m = material_of_cell(s%materials, c)
             what = ''
             if (is_plate(kind) .or. is_plane_solid(kind)) then
@@ -256,7 +256,7 @@ contains
         allocate (map%cells(s%mesh%n_cells), map%springs(s%mesh%n_cells))
         k = 0
         do c = 1, s%mesh%n_cells
-            if (s%model%element(c) == ELEM_NONE .or. is_plane_edge(s%model%element(c))) cycle
+            if (s%model%element(c) == ELEM_NONE .or. is_load_edge(s%model%element(c))) cycle
             if (present(rigid)) then
                 if (rigid(c)) cycle
             end if

@@ -15,7 +15,8 @@
 module assembly_varc
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
-    use strings, only: to_text
+    use strings, only: to_text, real_e13
+    use number_limits, only: product_fits, MAX_LENGTH
     use mesh_types, only: mesh_t, cell_label, CELL_TYPE_NODES, MAX_CELL_NODES, CELL_TRIA3, &
         CELL_QUAD4
     use mesh_cell_shapes, only: cell_shape
@@ -125,8 +126,9 @@ contains
         type(gauss_rule_t) :: rule
         type(plane_law_t) :: law
         real(dp), allocatable :: eps(:, :), xy(:, :)
+        real(dp) :: dmax
         integer(i4) :: m, nn, p0
-        logical :: has
+        logical :: has, fits
         fe = 0.0_dp
         call plane_rigi_rule(s%mesh%cell_type(c), rule, st)
         if (st%failed()) return
@@ -138,6 +140,18 @@ contains
             call plane_law_isotropic(e%e, e%nu, is_plane_strain(s%model%element(c)), law, st)
         end associate
         if (st%failed()) return
+        ! the stress D eps0 and the forces B^T D eps0 |J| w must stay finite (issue 13): a
+        ! strain from a temperature of 1e308 stops here, located, instead of overflowing
+        ! (B |J| w is at most a length, MAX_LENGTH; the moduli at most MAX_MODULUS)
+        dmax = 16.0_dp * max(maxval(abs(law%d4)), maxval(abs(law%d3)))
+        fits = product_fits(maxval(abs(eps)), dmax)
+        if (fits) fits = product_fits(maxval(abs(eps)) * dmax, MAX_LENGTH)
+        if (.not. fits) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': a thermal ' // &
+                'strain of ' // real_e13(maxval(abs(eps))) // ' (AFFE_VARC TEMP, ALPHA) ' // &
+                'gives stresses beyond double precision; check the temperature field')
+            return
+        end if
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
         xy = s%mesh%coords(1:2, s%mesh%cell_nodes(p0:p0 + nn - 1))

@@ -14,6 +14,9 @@ module command_registration
     use crea_resu_command, only: run_crea_resu
     use post_champ_command, only: run_post_champ
     use modi_repere_command, only: run_modi_repere
+    use lire_champ_command, only: run_lire_champ
+    use proj_champ_command, only: run_proj_champ
+    use calc_erreur_command, only: run_calc_erreur
     use mesh_commands, only: run_lire_maillage, run_pre_gibi
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage, set_field_support_resolver
@@ -55,6 +58,7 @@ contains
         call ctx%register('POURSUITE', run_poursuite, at_check=.true.)
         call ctx%register('FIN', run_fin)
         call ctx%register('DEBUG', run_debug)
+        call ctx%register('MAJ_CATA', run_debug)     ! no effect either (field, zzzz230a)
         call ctx%register('DEFI_FICHIER', run_defi_fichier)
         ! DETRUIRE forgets names: the check pass too, so that it sees the names the run sees
         call ctx%register('DETRUIRE', run_detruire, at_check=.true.)
@@ -69,6 +73,9 @@ contains
         call ctx%register('CREA_RESU', run_crea_resu, reuse=.true.)
         call ctx%register('POST_CHAMP', run_post_champ)
         call ctx%register('MODI_REPERE', run_modi_repere, reuse=.true.)
+        call ctx%register('LIRE_CHAMP', run_lire_champ)
+        call ctx%register('PROJ_CHAMP', run_proj_champ, reuse=.true.)
+        call ctx%register('CALC_ERREUR', run_calc_erreur, reuse=.true.)
         call ctx%register('LIRE_MAILLAGE', run_lire_maillage)
         call ctx%register('PRE_GIBI', run_pre_gibi)
         call ctx%register('DEFI_GROUP', run_defi_group, reuse=.true.)

@@ -4,7 +4,7 @@
 module catalog_cara_elem
     use kinds, only: dp
     use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, &
-        RULE_PRESENT_PRESENT
+        RULE_PRESENT_PRESENT, RULE_ENSEMBLE
     use number_limits, only: MAX_LENGTH, MIN_LENGTH, MAX_MODULUS, MIN_MODULUS
     use catalog_common, only: OUI_NON, ANGLE_MAX, RATIO_MAX, WEIGHT_MAX
     implicit none
@@ -40,6 +40,21 @@ contains
         call c%fact('DISCRET_2D', max=MANY)
         call describe_discrete(c, .true.)
         call c%end_fact()
+        ! MASSIF: the material frame of plane (and volume) elements, as data (Code_Aster
+        ! affe_cara_elem.py); only an orthotropic material turns with it.
+        call c%fact('MASSIF', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('CHAM_ORIE', 'cham_no_sdaster|carte_sdaster')
+        call c%key('ANGL_REP', 'R', min=1, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ANGL_EULER', 'R', min=1, max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ANGL_AXE', 'R', min=2, max=2, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('ORIG_AXE', 'R', min=2, max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%rule(RULE_UN_PARMI, 'GROUP_MA TOUT')
+        call c%rule(RULE_UN_PARMI, 'ANGL_REP ORIG_AXE ANGL_EULER CHAM_ORIE')
+        call c%rule(RULE_PRESENT_PRESENT, 'ANGL_AXE ORIG_AXE')
+        call c%rule(RULE_ENSEMBLE, 'TOUT CHAM_ORIE')
+        call c%end_fact()
         call c%fact('ORIENTATION', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call c%key('CARA', 'TXM', req=.true., into='ANGL_VRIL VECT_Y ANGL_NAUT')
@@ -63,7 +78,7 @@ contains
         call c%rule(RULE_UN_PARMI, 'COEF_GROUP FONC_GROUP')
         call c%rule(RULE_EXCLUS, 'GROUP_NO_CENTRE NOEUD_CENTRE COOR_CENTRE')
         call c%end_fact()
-        call c%rule(RULE_AU_MOINS_UN, 'COQUE DISCRET DISCRET_2D ORIENTATION RIGI_PARASOL')
+        call c%rule(RULE_AU_MOINS_UN, 'COQUE DISCRET DISCRET_2D ORIENTATION MASSIF RIGI_PARASOL')
         call c%rule(RULE_EXCLUS, 'DISCRET DISCRET_2D')
     end subroutine describe_cara_elem
 

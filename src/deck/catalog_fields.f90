@@ -142,7 +142,145 @@ contains
         call describe_crea_resu(c)
         call describe_post_champ(c)
         call describe_modi_repere(c)
+        call describe_lire_champ(c)
+        call describe_proj_champ(c)
+        call describe_calc_erreur(c)
     end subroutine describe_fields
+
+    !> CALC_ERREUR (code_aster/Cata/Commands/calc_erreur.py, U4.81.04): the type of
+    !> RESULTAT; OPTION takes Code_Aster's error options (the handler refuses those not built).
+    subroutine describe_calc_erreur(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+        type(catalog_t), intent(inout) :: c
+        call c%command('CALC_ERREUR', '@RESULTAT', reentrant='f:RESULTAT')
+        call c%key('RESULTAT', 'RESU', req=.true.)
+        call c%key('MODELE', 'modele', noop=.true.)
+        call c%key('CHAM_MATER', 'cham_mater', noop=.true.)
+        call c%key('CARA_ELEM', 'cara_elem', noop=.true.)
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('TOUT', 'TXM', def='OUI', into='OUI')
+        call c%key('OPTION', 'TXM', req=.true., max=MANY, into='SIZ1_NOEU ERZ1_ELEM ' // &
+            'SIZ2_NOEU ERZ2_ELEM ERME_ELEM ERME_ELNO ERME_NOEU QIRE_ELEM QIRE_ELNO ' // &
+            'QIRE_NOEU QIZ1_ELEM QIZ2_ELEM SING_ELEM SING_ELNO ERTH_ELEM ERTH_ELNO ERTH_NOEU')
+        call c%key('RESU_DUAL', 'RESU')
+        call c%key('PREC_ERR', 'R', vmin=0.0_dp)
+        call c%key('TYPE_ESTI', 'TXM', into='ERME_ELEM ERZ1_ELEM ERZ2_ELEM QIRE_ELEM ' // &
+            'QIZ1_ELEM QIZ2_ELEM')
+        call c%fact('EXCIT', max=MANY, noop=.true.)
+        call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
+        call c%key('FONC_MULT', 'FUNC')
+        call c%end_fact()
+        call c%fact('SOLVEUR', noop=.true.)
+        call c%key('METHODE', 'TXM', into='LDLT MULT_FRONT MUMPS PETSC GCPC')
+        call c%key('RENUM', 'TXM')
+        call c%key('NPREC', 'I')
+        call c%key('STOP_SINGULIER', 'TXM', into='OUI NON')
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+        call c%key('TITRE', 'TXM', noop=.true.)
+    end subroutine describe_calc_erreur
+
+    !> PROJ_CHAMP (code_aster/Cata/Commands/proj_champ.py, U4.72.05): the type of RESULTAT or
+    !> CHAM_GD, else (PROJECTION='NON') a corresp_2_mailla. The blocks of PROJECTION are
+    !> flattened: METHODE takes every method (the handler refuses those not built; its
+    !> default is AUTO, COLLOCATION with PROJECTION='NON').
+    subroutine describe_proj_champ(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_AU_MOINS_UN
+        type(catalog_t), intent(inout) :: c
+        call c%command('PROJ_CHAMP', '@RESULTAT CHAM_GD corresp_2_mailla', &
+            reentrant='f:RESULTAT')
+        call c%key('PROJECTION', 'TXM', def='OUI', into='OUI NON')
+        call c%key('MATR_PROJECTION', 'corresp_2_mailla')
+        call c%key('METHODE', 'TXM', into='AUTO COLLOCATION NUAGE_DEG_0 NUAGE_DEG_1 ' // &
+            'ECLA_PG SOUS_POINT COUPLAGE')
+        call c%rule(RULE_EXCLUS, 'RESULTAT CHAM_GD')
+        call c%rule(RULE_EXCLUS, 'MODELE_1 MAILLAGE_1')
+        call c%rule(RULE_EXCLUS, 'MODELE_2 MAILLAGE_2')
+        call c%key('RESULTAT', 'RESU')
+        call c%key('CHAM_GD', 'CHAM_GD')
+        call c%key('MODELE_1', 'modele')
+        call c%key('MAILLAGE_1', 'maillage')
+        call c%key('MODELE_2', 'modele')
+        call c%key('MAILLAGE_2', 'maillage')
+        call c%key('CHAM_NO_REFE', 'cham_no_sdaster')
+        call c%key('CARA_ELEM', 'cara_elem')
+        call c%key('CAS_FIGURE', 'TXM', into='2D 3D 2.5D 1.5D')
+        call c%key('DISTANCE_MAX', 'R', vmin=0.0_dp)
+        call c%key('DISTANCE_ALARME', 'R', vmin=0.0_dp)
+        call c%key('TRANSF_GEOM_1', 'FUNC', min=2, max=3)
+        call c%key('TRANSF_GEOM_2', 'FUNC', min=2, max=3)
+        call c%key('ALARME', 'TXM', def='OUI', into='OUI NON')
+        call c%key('TYPE_CHAM', 'TXM', into='NOEU', noop=.true.)
+        call c%key('PROL_VALE', 'R')
+        call c%key('PROL_ZERO', 'TXM', into='OUI NON')
+        call c%rule(RULE_EXCLUS, 'PROL_VALE PROL_ZERO')
+        call c%key('NOM_PARA', 'TXM', max=MANY, noop=.true.)
+        call c%key('TOUT_CHAM', 'TXM', into='OUI')
+        call c%key('NOM_CHAM', 'TXM', max=MANY, into=NOM_CHAM_NAMES)
+        call c%rule(RULE_EXCLUS, 'TOUT_CHAM NOM_CHAM')
+        call c%key('NUME_DDL', 'nume_ddl_sdaster', noop=.true.)
+        call c%key('TOUT_ORDRE', 'TXM', into='OUI')
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('LIST_INST', 'listr8')
+        call c%rule(RULE_EXCLUS, 'TOUT_ORDRE NUME_ORDRE INST LIST_INST')
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%fact('VIS_A_VIS', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT_1 GROUP_MA_1 MAILLE_1 GROUP_NO_1 NOEUD_1')
+        call c%rule(RULE_AU_MOINS_UN, 'TOUT_2 GROUP_MA_2 GROUP_NO_2 NOEUD_2')
+        call c%key('TOUT_1', 'TXM', into='OUI')
+        call c%key('GROUP_MA_1', 'TXM', max=MANY)
+        call c%key('MAILLE_1', 'TXM', max=MANY)
+        call c%key('GROUP_NO_1', 'TXM', max=MANY)
+        call c%key('NOEUD_1', 'TXM', max=MANY)
+        call c%key('TOUT_2', 'TXM', into='OUI')
+        call c%key('GROUP_MA_2', 'TXM', max=MANY)
+        call c%key('GROUP_NO_2', 'TXM', max=MANY)
+        call c%key('NOEUD_2', 'TXM', max=MANY)
+        call c%key('CAS_FIGURE', 'TXM', into='2D 3D 2.5D 1.5D 0D')
+        call c%key('TRANSF_GEOM_1', 'FUNC', min=2, max=3)
+        call c%key('TRANSF_GEOM_2', 'FUNC', min=2, max=3)
+        call c%key('DISTANCE_0D', 'R', vmin=0.0_dp)
+        call c%end_fact()
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+    end subroutine describe_proj_champ
+
+    !> LIRE_CHAMP (code_aster/Cata/Commands/lire_champ.py, U7.02.02): a field of a MED file,
+    !> of the type of TYPE_CHAM.
+    subroutine describe_lire_champ(c)
+        use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, &
+            RULE_PRESENT_PRESENT
+        type(catalog_t), intent(inout) :: c
+        call c%command('LIRE_CHAMP', '@TYPE_CHAM')
+        call c%key('MAILLAGE', 'maillage', req=.true.)
+        call c%key('FORMAT', 'TXM', def='MED', into='MED')
+        call c%key('UNITE', 'I', def='81')
+        call c%rule(RULE_UN_PARMI, 'NOM_CMP_IDEM NOM_CMP')
+        call c%rule(RULE_PRESENT_PRESENT, 'NOM_CMP NOM_CMP_MED')
+        call c%rule(RULE_EXCLUS, 'NUME_ORDRE INST')
+        call c%rule(RULE_EXCLUS, 'NUME_PT INST')
+        call c%key('NOM_MED', 'TXM', req=.true.)
+        call c%key('NOM_CMP_IDEM', 'TXM', into='OUI')
+        call c%key('NOM_CMP', 'TXM', max=MANY)
+        call c%key('NOM_CMP_MED', 'TXM', max=MANY)
+        call c%key('PROL_ZERO', 'TXM', def='NON', into='OUI NON')
+        call c%key('NUME_PT', 'I', max=MANY)
+        call c%key('NUME_ORDRE', 'I', max=MANY)
+        call c%key('INST', 'R', max=MANY)
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%key('NOM_MAIL_MED', 'TXM', noop=.true.)
+        call c%key('TYPE_CHAM', 'TXM', req=.true., into=type_cham_names())
+        call c%key('MODELE', 'modele')
+        call c%key('INFO', 'I', def='1', into='1 2', noop=.true.)
+    end subroutine describe_lire_champ
 
     !> MODI_REPERE (code_aster/Cata/Commands/modi_repere.py, U4.74.01): the type of the
     !> RESULTAT or CHAM_GD given; REPERE UTILISATEUR and CYLINDRIQUE (the others refused by

@@ -3,7 +3,8 @@
 !> cardinality, defaults mirroring Code_Aster's, allowed values and rules, as data.
 module catalog_loads
     use kinds, only: dp
-    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN
+    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_UN_PARMI, RULE_AU_MOINS_UN, &
+        RULE_PRESENT_ABSENT
     use number_limits, only: MAX_LENGTH, MAX_MODULUS, MIN_MODULUS
     use catalog_common, only: OUI_NON, ANGLE_MAX
     implicit none
@@ -21,14 +22,22 @@ contains
     end subroutine describe_loads
 
     !> AFFE_CHAR_CINE / AFFE_CHAR_CINE_F (Code_Aster U4.44.03): imposed values eliminated
-    !> from the system (no Lagrange multipliers), MECA_IMPO only; NOEUD in the real form only.
+    !> from the system (no Lagrange multipliers), MECA_IMPO; NOEUD and EVOL_IMPO (with
+    !> NOM_CMP) in the real form only.
     subroutine describe_kinematic_load(c, name, vtype)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: name, vtype
         call c%command(name, 'char_cine_meca')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('INFO', 'I', def='1', into='1 2')
-        call c%fact('MECA_IMPO', max=MANY, req=.true.)
+        if (vtype == 'R') then          ! EVOL_IMPO: the displacement of a result in time
+            call c%rule(RULE_UN_PARMI, 'MECA_IMPO EVOL_IMPO')
+            call c%key('EVOL_IMPO', 'evol_elas|evol_noli')
+            call c%key('NOM_CMP', 'TXM', max=MANY, into='DX DY DZ DRX DRY DRZ')
+            call c%fact('MECA_IMPO', max=MANY)
+        else
+            call c%fact('MECA_IMPO', max=MANY, req=.true.)
+        end if
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%key('GROUP_NO', 'TXM', max=MANY)
@@ -69,6 +78,13 @@ contains
         call c%key('BLOCAGE', 'TXM', max=2, into='DEPLACEMENT ROTATION')
         call add_components(c, DOFS, vtype, also='BLOCAGE', bound=MAX_LENGTH)  ! lengths, angles
         call c%end_fact()
+        if (vtype == 'R') then          ! values of a field (field's PROJ_CHAMP zooms)
+            call c%fact('CHAMNO_IMPO', max=MANY)
+            call c%key('CHAM_NO', 'cham_no_sdaster', req=.true.)
+            call c%key('COEF_IMPO', 'R', req=.true.)
+            call c%key('NUME_LAGR', 'TXM', def='NORMAL', into='NORMAL APRES', noop=.true.)
+            call c%end_fact()
+        end if
         call describe_face_impo(c, 'FACE_IMPO', DOFS // ' DNOR DRNOR DTAN', vtype)
         if (vtype == 'R') call describe_face_impo(c, 'ARETE_IMPO', 'DX DY DZ DTAN', vtype)
         call describe_relations(c, vtype)
@@ -77,27 +93,80 @@ contains
         call c%key('NOEUD', 'TXM', max=MANY)
         call c%rule(RULE_UN_PARMI, 'GROUP_NO NOEUD')
         call add_components(c, 'FX FY FZ MX MY MZ', vtype)
+        if (vtype == 'R') then
+            call c%key('ANGL_NAUT', 'R', max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        else
+            call c%key('ANGL_NAUT', vtype, max=3)
+        end if
         call c%end_fact()
-        call c%fact('FORCE_COQUE', max=MANY)
-        call c%key('TOUT', 'TXM', into='OUI')
-        call c%key('GROUP_MA', 'TXM', max=MANY)
-        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
-        call add_components(c, 'PRES FX FY FZ', vtype)
-        call c%rule(RULE_EXCLUS, 'PRES FX')
-        call c%rule(RULE_EXCLUS, 'PRES FY')
-        call c%rule(RULE_EXCLUS, 'PRES FZ')
-        call c%end_fact()
+        call describe_force_coque(c, vtype)
         call c%fact('PRES_REP', max=MANY)
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)
         call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
-        call c%key('PRES', vtype, req=.true.)
+        call add_components(c, 'PRES CISA_2D', vtype)
         call c%end_fact()
         call c%fact('FORCE_CONTOUR', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
-        call add_components(c, 'FX FY', vtype)
+        call add_components(c, 'FX FY FZ', vtype)
         call c%end_fact()
+        call c%fact('FORCE_ARETE', max=MANY)
+        call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
+        call add_components(c, 'FX FY FZ MX MY MZ', vtype)
+        call c%end_fact()
+        call c%fact('FORCE_INTERNE', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
+        call add_components(c, 'FX FY FZ', vtype)
+        call c%end_fact()
+        if (vtype /= 'R') return
+        ! gravity: Code_Aster has it in AFFE_CHAR_MECA only (capesa)
+        call c%fact('PESANTEUR', max=1)
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%key('GRAVITE', 'R', req=.true., vmin=-MAX_MODULUS, vmax=MAX_MODULUS)
+        call c%key('DIRECTION', 'R', min=3, max=3, req=.true., vmin=-MAX_MODULUS, &
+                   vmax=MAX_MODULUS)
+        call c%end_fact()
+        ! FORCE_COQUE_FO: a pressure on plates given by a function of space (Code_Aster has
+        ! it in AFFE_CHAR_MECA only), as AFFE_CHAR_MECA_F's FORCE_COQUE PRES
+        call c%fact('FORCE_COQUE_FO', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
+        call c%key('PRES', 'FUNC')
+        call c%end_fact()
+        call c%rule(RULE_EXCLUS, 'FORCE_COQUE FORCE_COQUE_FO')
     end subroutine describe_load_command
+
+    !> FORCE_COQUE (Code_Aster U4.44.01): PRES, or FX..MZ in the global frame, or F1, F2,
+    !> F3, MF1, MF2 in the plate's user frame (COQUE/ANGL_REP), on the plane PLAN.
+    subroutine describe_force_coque(c, vtype)
+        type(catalog_t), intent(inout) :: c
+        character(len=*), intent(in) :: vtype
+        character(len=*), parameter :: GLOBAL = 'FX FY FZ MX MY MZ', LOCAL = 'F1 F2 F3 MF1 MF2'
+        integer :: i, j
+        call c%fact('FORCE_COQUE', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
+        call add_components(c, 'PRES ' // GLOBAL // ' ' // LOCAL, vtype)
+        i = 1
+        do while (i <= len(GLOBAL))
+            j = index(GLOBAL(i:) // ' ', ' ') + i - 1
+            call c%rule(RULE_PRESENT_ABSENT, GLOBAL(i:j - 1) // ' PRES ' // LOCAL)
+            i = j + 1
+        end do
+        i = 1
+        do while (i <= len(LOCAL))
+            j = index(LOCAL(i:) // ' ', ' ') + i - 1
+            call c%rule(RULE_PRESENT_ABSENT, LOCAL(i:j - 1) // ' PRES ' // GLOBAL)
+            i = j + 1
+        end do
+        call c%rule(RULE_PRESENT_ABSENT, 'PRES ' // GLOBAL // ' ' // LOCAL)
+        call c%key('PLAN', 'TXM', def='MAIL', into='SUP INF MOY MAIL')
+        call c%end_fact()
+    end subroutine describe_force_coque
 
     !> FACE_IMPO / ARETE_IMPO: components imposed on the nodes of a face or an edge, and
     !> the normal (DNOR, DRNOR) or tangent (DTAN) component as relations (Code_Aster's
@@ -122,7 +191,7 @@ contains
 
     !> The LIAISON_* keywords (linear relations between components; Code_Aster U4.44.01):
     !> LIAISON_DDL, LIAISON_OBLIQUE, LIAISON_GROUP, LIAISON_UNIF, and in AFFE_CHAR_MECA
-    !> LIAISON_SOLIDE and LIAISON_RBE3.
+    !> LIAISON_SOLIDE, LIAISON_MAIL and LIAISON_RBE3.
     subroutine describe_relations(c, vtype)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: vtype
@@ -184,6 +253,35 @@ contains
         call add_node_keywords(c)
         call c%rule(RULE_UN_PARMI, 'GROUP_NO GROUP_MA')
         call c%key('DIST_MIN', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%end_fact()
+
+        ! LIAISON_MAIL (Code_Aster affe_char_meca.py): slave nodes tied to the master cells'
+        ! shape functions (relation_mail).
+        call c%fact('LIAISON_MAIL', max=MANY)
+        call c%rule(RULE_AU_MOINS_UN, 'GROUP_MA_ESCL GROUP_NO_ESCL')
+        call c%key('GROUP_MA_MAIT', 'TXM', max=MANY)
+        call c%key('GROUP_MA_ESCL', 'TXM', max=MANY)
+        call c%key('GROUP_NO_ESCL', 'TXM', max=MANY)
+        call c%key('DISTANCE_MAX', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('DISTANCE_ALARME', 'R', vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('TYPE_RACCORD', 'TXM', def='MASSIF', &
+                   into='MASSIF COQUE COQUE_MASSIF MASSIF_COQUE')
+        call c%bloc(key='TYPE_RACCORD', equals='COQUE')
+        call c%key('TRANSF_GEOM_MAIT', 'FUNC', min=3, max=3)
+        call c%key('TRANSF_GEOM_ESCL', 'FUNC', min=3, max=3)
+        call c%key('DDL', 'TXM', max=6, into=DOFS)
+        call c%end_bloc()
+        call c%bloc(key='TYPE_RACCORD', equals='MASSIF')
+        call c%key('TRAN', 'R', max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('ANGL_NAUT', 'R', max=3, vmin=-ANGLE_MAX, vmax=ANGLE_MAX)
+        call c%key('CENTRE', 'R', max=3, vmin=-MAX_LENGTH, vmax=MAX_LENGTH)
+        call c%key('DDL', 'TXM', max=MANY, into=DOFS // ' DNOR')
+        call c%end_bloc()
+        call c%bloc(key='TYPE_RACCORD', equals='COQUE_MASSIF')
+        call c%key('EPAIS', 'R', req=.true., vmin=0.0_dp, vmax=MAX_LENGTH)
+        call c%key('CHAM_NORMALE', 'cham_no_sdaster', req=.true.)
+        call c%end_bloc()
+        call c%key('ELIM_MULT', 'TXM', def='OUI', into=OUI_NON)
         call c%end_fact()
 
         call c%fact('LIAISON_RBE3', max=MANY)

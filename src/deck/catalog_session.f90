@@ -43,6 +43,14 @@ contains
         call c%key('JXVERI', 'TXM', into=OUI_NON, noop=.true.)
         call c%key('JEVEUX', 'TXM', into=OUI_NON, noop=.true.)
         call c%key('IMPR_MACRO', 'TXM', into=OUI_NON, noop=.true.)
+        ! MAJ_CATA (maj_cata.py): Code_Aster compiles its element catalogs; nothing to do.
+        call c%command('MAJ_CATA', '')
+        call c%rule(RULE_UN_PARMI, 'ELEMENT TYPE_ELEM')
+        call c%fact('ELEMENT', noop=.true.)
+        call c%end_fact()
+        call c%fact('TYPE_ELEM', noop=.true.)
+        call c%end_fact()
+        call c%key('UNITE', 'I', def='8', noop=.true.)
 
         call describe_defi_fichier(c)
 

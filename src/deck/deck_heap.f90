@@ -578,6 +578,7 @@ contains
                 list%items(k) = one
             end do
             flat = pack_values(v%kind, list)
+            if (allocated(v%s)) flat%s = v%s        ! a tag (SIMP(...), a rule: deck_interp_macros)
         case default
             flat = v
             return
@@ -612,6 +613,7 @@ contains
                 list%items(k) = adopt(self, list%items(k))
             end do
             w = pack_values(v%kind, list)
+            if (allocated(v%s)) w%s = v%s           ! a tag (deck_interp_macros)
         case default
             w = v
             return

@@ -212,6 +212,12 @@ contains
             v%kind = VK_CO
             v%s = args(1)%s
             v%line = ctx%ast%nodes(id)%line; v%col = ctx%ast%nodes(id)%col
+        case ('Cata.SIMP', 'Cata.FACT', 'Cata.MACRO', 'Cata.UserMacro', 'Cata.EXCLUS', &
+              'Cata.UN_PARMI', 'Cata.AU_MOINS_UN', 'Cata.PRESENT_PRESENT', &
+              'Cata.PRESENT_ABSENT', 'Cata.ENSEMBLE')
+            call cata_builtin(ctx, id, name, args, kwargs, v, st)   ! user macros
+        case ('MedUtils.splitMeshAndFieldsFromMedFile')
+            call split_med_file(ctx, id, args, kwargs, v, st)   ! deck_interp_medutils
         case ('TestCase')
             call new_testcase(ctx, id, args, kwargs, v, st)     ! CA.TestCase()
         case ('callable')

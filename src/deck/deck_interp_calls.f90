@@ -223,6 +223,14 @@ contains
         select case (f%kind)
         case (VK_BUILTIN)
             call call_builtin(ctx, id, f%s, args, kwargs, v, st, frame)
+        case (VK_FACTOR)
+            if (allocated(f%s)) then
+                if (f%s == 'UserMacro') then             ! deck_interp_macros
+                    call call_user_macro(ctx, id, f, args, kwargs, v, st, frame)
+                    return
+                end if
+            end if
+            call fail(st, ctx, id, kind_label(f) // ' cannot be called')
         case (VK_CONCEPT)
             call call_concept(ctx, id, f, args, kwargs, v, st)
         case (VK_MODULE)
@@ -644,6 +652,17 @@ contains
     end procedure has_method
 
     ! ---- commands ---------------------------------------------------------------------------
+
+    !> Command `name` of the catalog run from the interpreter itself (a function of
+    !> Code_Aster's library that is a command underneath), located at node id.
+    module procedure run_catalog_command
+        integer :: icmd
+        icmd = ctx%catalog%find_command(name)
+        if (icmd == 0) then
+            call fail(st, ctx, id, 'unknown command ' // name); return
+        end if
+        call run_command(ctx, icmd, id, kwargs, v, st)
+    end procedure run_catalog_command
 
     !> Validates and runs (or, in the check pass, stands in for) catalog command icmd. Its
     !> keyword values are flat copies (a list given to a command is the list as it is now).

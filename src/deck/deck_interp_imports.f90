@@ -17,6 +17,9 @@ submodule(deck_interpreter) deck_interp_imports
     !> VK_MODULE value%i: math, and a module parasol does not provide (a deck module is its
     !> source index, > 0).
     integer(i8), parameter :: MODULE_MATH = -1, MODULE_FOREIGN = 0
+    !> What code_aster.Cata.Syntax gives for user macros (deck_interp_macros).
+    character(len=*), parameter :: CATA_SYNTAX = ' SIMP FACT MACRO EXCLUS UN_PARMI ' // &
+        'AU_MOINS_UN PRESENT_PRESENT PRESENT_ABSENT ENSEMBLE '
 
 contains
 
@@ -163,6 +166,13 @@ contains
                     module == 'code_aster.Utilities')) then
                     x%kind = VK_BUILTIN; x%s = 'TestCase'; x%i = 0   ! deck_interp_testcase
                 end if
+                if (provided_for_macros(module, name)) then          ! deck_interp_macros
+                    x%kind = VK_BUILTIN; x%s = 'Cata.' // name; x%i = 0
+                end if
+                if (module == 'code_aster.MedUtils' .and. &
+                    name == 'splitMeshAndFieldsFromMedFile') then    ! deck_interp_medutils
+                    x%kind = VK_BUILTIN; x%s = 'MedUtils.' // name; x%i = 0
+                end if
                 call bind_name(ctx, n, alias, x, frame)
             end do
         end subroutine from_foreign
@@ -197,11 +207,25 @@ contains
                 if (what == '_F' .or. ctx%catalog%find_command(what) > 0) cycle
                 if (what == 'TestCase' .and. (module == 'code_aster.CA' .or. &
                     module == 'code_aster.Utilities')) cycle
+                if (provided_for_macros(module, what)) cycle
+                if (module == 'code_aster.MedUtils' .and. &
+                    what == 'splitMeshAndFieldsFromMedFile') cycle
+                ! Code_Aster's data structure types: the types of user macros' keywords
+                if (module == 'code_aster.Cata.DataStructure' .and. what /= '*') cycle
                 return
             end do
             everything_provided = .true.
         end function everything_provided
     end procedure exec_import
+
+    !> True for the names of Code_Aster's library that make user macros: SIMP, FACT, MACRO
+    !> and the rules of code_aster.Cata.Syntax, UserMacro of code_aster.Supervis.
+    pure logical function provided_for_macros(module, name)
+        character(len=*), intent(in) :: module, name
+        provided_for_macros = (module == 'code_aster.Cata.Syntax' .and. &
+            index(CATA_SYNTAX, ' ' // name // ' ') > 0) .or. (name == 'UserMacro' .and. &
+            (module == 'code_aster.Supervis.ExecuteCommand' .or. module == 'code_aster.Supervis'))
+    end function provided_for_macros
 
     !> 'a' of 'a.b.c'.
     pure function first_word(dotted) result(word)

@@ -5,6 +5,7 @@
 submodule(deck_interpreter) deck_interp_operators
     use deck_math
     use deck_heap, only: hashable, keys_equal
+    use deck_concept, only: placeholder_concept_t
     implicit none
 
 contains
@@ -57,6 +58,9 @@ contains
         if (present(in_place)) inplace = in_place
         if (a%kind == VK_UNKNOWN .or. b%kind == VK_UNKNOWN) then
             v%kind = VK_UNKNOWN; return
+        end if
+        if (placeholder(a) .or. placeholder(b)) then
+            v%kind = VK_UNKNOWN; return          ! check pass: made when the deck runs
         end if
         if (a%kind == VK_CONCEPT .or. b%kind == VK_CONCEPT) then
             ! a - b on concepts (fields, tables): their __sub__, else b's __rsub__
@@ -335,6 +339,9 @@ contains
             r = bool_value(identical(a, b) .eqv. (op == 'is'))
             return
         end select
+        if (placeholder(a) .or. placeholder(b)) then
+            r%kind = VK_UNKNOWN; return          ! check pass: made when the deck runs
+        end if
         if (a%kind == VK_CONCEPT .or. b%kind == VK_CONCEPT) then
             if (has_method(ctx, a, compare_name(op, .false.))) then
                 call use_attribute(ctx, id, a, compare_name(op, .false.), .true., values_of(b), &
@@ -489,5 +496,16 @@ contains
             name = '__cmp__'
         end select
     end function compare_name
+
+    !> A check-pass placeholder concept (what a command makes when the deck runs).
+    pure logical function placeholder(v)
+        type(value_t), intent(in) :: v
+        placeholder = .false.
+        if (v%kind /= VK_CONCEPT .or. .not. associated(v%obj)) return
+        select type (o => v%obj)
+        type is (placeholder_concept_t)
+            placeholder = .true.
+        end select
+    end function placeholder
 
 end submodule deck_interp_operators

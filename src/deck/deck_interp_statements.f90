@@ -138,6 +138,13 @@ contains
         integer :: k, stmt
         do k = 1, ctx%ast%nkids(ctx%ast%root)
             stmt = ctx%ast%kid(ctx%ast%root, k)
+            if (ctx%finished .and. fin_again(stmt)) then
+                ! Code_Aster's FIN returns at once when the session is already closed
+                ! (Closer.run): a second FIN() has no effect
+                call ctx%write_mess('  -- FIN again (line ' // &
+                    to_text(int(ctx%ast%nodes(stmt)%line, i4)) // '): no effect')
+                cycle
+            end if
             if (ctx%finished) then
                 call set_error(st, STATUS_DECK_ERROR, 'statement after FIN (FIN ends the ' // &
                     'deck; move it before FIN)', file=ctx%deck_name, &
@@ -149,6 +156,19 @@ contains
             if (st%failed() .or. ctx%check_stopped) return
         end do
         call flush_print(ctx)
+    contains
+        !> The statement is `FIN(...)` again.
+        logical function fin_again(id)
+            integer, intent(in) :: id
+            integer :: call_node, callee
+            fin_again = .false.
+            if (ctx%ast%nodes(id)%kind /= N_EXPR .or. ctx%ast%nkids(id) /= 1) return
+            call_node = ctx%ast%kid(id, 1)
+            if (ctx%ast%nodes(call_node)%kind /= N_CALL) return
+            callee = ctx%ast%kid(call_node, 1)
+            fin_again = ctx%ast%nodes(callee)%kind == N_NAME .and. &
+                ctx%ast%nodes(callee)%text == 'FIN'
+        end function fin_again
     end procedure evaluate_deck
 
     !> A print(..., end='') line still open goes to the .mess at the end of a file.

@@ -267,6 +267,15 @@ module deck_interpreter
             character(len=*), intent(in) :: name
         end function has_method
 
+        module recursive subroutine run_catalog_command(ctx, id, name, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: name
+            type(value_t), intent(in) :: kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine run_catalog_command
+
         ! ---- deck_interp_builtins ----
         module recursive subroutine call_builtin(ctx, id, name, args, kwargs, v, st, frame)
             type(run_context_t), intent(inout) :: ctx
@@ -363,6 +372,34 @@ module deck_interpreter
             type(value_t), intent(out) :: v
             type(status_t), intent(inout) :: st
         end subroutine new_testcase
+
+        ! ---- deck_interp_macros ----
+        module subroutine cata_builtin(ctx, id, name, args, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            character(len=*), intent(in) :: name
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine cata_builtin
+        module recursive subroutine call_user_macro(ctx, id, f, args, kwargs, v, st, frame)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: f
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+            type(frame_t), intent(inout), optional, target :: frame
+        end subroutine call_user_macro
+
+        ! ---- deck_interp_medutils ----
+        module subroutine split_med_file(ctx, id, args, kwargs, v, st)
+            type(run_context_t), intent(inout) :: ctx
+            integer, intent(in) :: id
+            type(value_t), intent(in) :: args(:), kwargs
+            type(value_t), intent(out) :: v
+            type(status_t), intent(inout) :: st
+        end subroutine split_med_file
 
         ! ---- deck_interp_imports ----
         module recursive subroutine exec_import(ctx, id, st, frame)

@@ -110,10 +110,16 @@ contains
             end do
         case ('@RESULTAT')
             if (v%kind == VK_CONCEPT) type_name = v%s
-        case ('@RESULTAT CHAM_GD')          ! MODI_REPERE: the type of what it is given
+        case ('@RESULTAT CHAM_GD', '@RESULTAT CHAM_GD corresp_2_mailla')
+            ! MODI_REPERE, PROJ_CHAMP: the type of what it is given; PROJ_CHAMP without
+            ! either: the correspondence (corresp_2_mailla)
             v = cmd%get_value('RESULTAT')
             if (v%kind /= VK_CONCEPT) v = cmd%get_value('CHAM_GD')
-            if (v%kind == VK_CONCEPT) type_name = v%s
+            if (v%kind == VK_CONCEPT) then
+                type_name = v%s
+            else if (len(declared) > 18) then
+                type_name = declared(19:)
+            end if
         end select
     end function call_result_type
 

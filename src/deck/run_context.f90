@@ -102,6 +102,7 @@ module run_context
         type(string_t), allocatable :: lines(:)      !< deck source lines (for the echo)
         type(ast_t) :: ast                           !< the parsed deck
         type(catalog_t) :: catalog
+        type(catalog_t) :: user_macros              !< the deck's own (deck_interp_macros)
         type(handler_entry_t), allocatable :: handlers(:)
         integer :: nhandler = 0
         type(method_entry_t), allocatable :: methods(:)   !< concept methods (register_method)

@@ -22,14 +22,19 @@
 !> plane elements. The edge normal is Code_Aster's (vff2dn): n = (dy/ds, -dx/ds), the
 !> tangent node 1 -> node 2 turned clockwise (outward for a skin that turns
 !> counter-clockwise around its solid); a pressure p gives the traction -p n.
-!> Only translations receive forces: fe = (FX1, FY1, FZ1, FX2, ...) in global components.
+!> Plane solid cells (FORCE_INTERNE, PESANTEUR): the force per unit area is known at the
+!> points of the cell's RIGI family and integrated with its shape functions (te0093,
+!> te0094, te0085), exact for a constant force (the cell's area to round-off).
+!> Plates receive forces and moments (FORCE_COQUE MX..MZ, MF1, MF2) with the same weights.
 module element_loads
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use element_plate, only: plate_local_frame
     use mesh_cell_shapes, only: CELL_SEG2, CELL_SEG3, CELL_TYPE_NODES, CELL_TYPE_NAMES, &
-        cell_shape
-    use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLANE_EDGE
+        MAX_CELL_NODES, cell_shape
+    use element_gauss_families, only: gauss_rule_t, gauss_family, FORMULATION_PLANE_EDGE, &
+        MAX_GAUSS_POINTS
+    use element_plane, only: plane_rigi_rule, plane_derivatives, check_plane_jacobians
     implicit none
     private
 
@@ -46,8 +51,17 @@ module element_loads
         real(dp) :: normal(2, MAX_EDGE_POINTS) = 0.0_dp     !< unit normal (module header)
     end type edge_points_t
 
-    public :: plate_load_weights, plate_nodal_forces, plate_nodal_pressure
-    public :: edge_load_points, edge_line_forces
+    !> The load points of one plane solid cell (plane_load_points).
+    type, public :: area_points_t
+        integer(i4) :: n = 0                                    !< points
+        integer(i4) :: nn = 0                                   !< nodes of the cell
+        real(dp) :: x(2, MAX_GAUSS_POINTS) = 0.0_dp             !< positions
+        real(dp) :: w(MAX_GAUSS_POINTS) = 0.0_dp                !< weight times |det J|
+        real(dp) :: shape(MAX_CELL_NODES, MAX_GAUSS_POINTS) = 0.0_dp   !< N_i at the points
+    end type area_points_t
+
+    public :: plate_load_weights, plate_nodal_forces, plate_nodal_pressure, plate_nodal_values
+    public :: edge_load_points, edge_line_forces, plane_load_points, area_forces
 
 contains
 
@@ -110,6 +124,81 @@ contains
             end do
         end do
     end subroutine plate_nodal_forces
+
+    !> Nodal forces and moments of surface forces and moments known at the nodes
+    !> (FORCE_COQUE FX..MZ, F1..MF2 turned to global components; PESANTEUR): the weights of
+    !> plate_load_weights on each of the six components, as Code_Aster's dxtfor / dxqfor
+    !> apply them to the six components in the cell's frame (a rotation commutes with them).
+    !>  q  : in, q(1:6, nn) force and moment per unit area at each node, global components
+    !>  fe : out, fe(1:6, nn) on (DX, DY, DZ, DRX, DRY, DRZ) node by node
+    subroutine plate_nodal_values(coords, nn, q, fe, st)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: coords(3, nn), q(6, nn)
+        real(dp), intent(out) :: fe(6, nn)
+        type(status_t), intent(out) :: st
+        real(dp) :: w(nn, nn), normal(3)
+        integer(i4) :: i, j
+        fe = 0.0_dp
+        call plate_load_weights(coords, nn, w, normal, st)
+        if (st%failed()) return
+        do i = 1, nn
+            do j = 1, nn
+                fe(:, i) = fe(:, i) + w(i, j) * q(:, j)
+            end do
+        end do
+    end subroutine plate_nodal_values
+
+    !> Load points of a plane solid cell (FORCE_INTERNE, PESANTEUR): the points of its RIGI
+    !> family with the weights w_g |det J|, as Code_Aster's te0093 / te0094 / te0085
+    !> integrate f_i = sum_g N_i(g) q_g |det J| w_g (unit depth).
+    !>  ctype : in, a plane surface type (TRIA3 .. QUAD9)
+    !>  xy    : in, xy(2, nn) node coordinates
+    !>  st    : out, STATUS_MODEL_ERROR for a degenerate cell (element_plane)
+    subroutine plane_load_points(ctype, xy, pts, st)
+        integer(i4), intent(in) :: ctype
+        real(dp), intent(in) :: xy(:, :)
+        type(area_points_t), intent(out) :: pts
+        type(status_t), intent(out) :: st
+        type(gauss_rule_t) :: rule
+        real(dp) :: dxy(2, MAX_CELL_NODES), det(MAX_GAUSS_POINTS)
+        integer(i4) :: g, nn
+        call plane_rigi_rule(ctype, rule, st)
+        if (st%failed()) return
+        nn = CELL_TYPE_NODES(ctype)
+        pts%n = rule%n
+        pts%nn = nn
+        do g = 1, rule%n
+            call plane_derivatives(ctype, xy, rule%xi(1, g), rule%xi(2, g), &
+                pts%shape(1:nn, g), dxy, det(g))
+            pts%x(:, g) = matmul(xy(1:2, 1:nn), pts%shape(1:nn, g))
+            pts%w(g) = rule%w(g) * abs(det(g))
+        end do
+        call check_plane_jacobians(ctype, xy, det(1:rule%n), st)
+    end subroutine plane_load_points
+
+    !> Nodal forces of a force per unit area (unit depth) known at the load points:
+    !> f_i = sum_g N_i(g) q_g w_g.
+    !>  q  : in, q(1:2, pts%n) (FX, FY) at the points
+    !>  fe : out, fe(1:2 pts%nn) = (FX1, FY1, FX2, ...)
+    pure subroutine area_forces(pts, q, fe)
+        type(area_points_t), intent(in) :: pts
+        real(dp), intent(in) :: q(:, :)
+        real(dp), intent(out) :: fe(:)
+        call point_forces(pts%shape, pts%w, q, pts%n, pts%nn, fe)
+    end subroutine area_forces
+
+    ! f_i = sum_g N_i(g) q_g w_g for (FX, FY) known at n points, nn nodes.
+    pure subroutine point_forces(shape, w, q, n, nn, fe)
+        real(dp), intent(in) :: shape(:, :), w(:), q(:, :)
+        integer(i4), intent(in) :: n, nn
+        real(dp), intent(out) :: fe(:)
+        integer(i4) :: i
+        fe = 0.0_dp
+        do i = 1, nn
+            fe(2 * i - 1) = sum(shape(i, 1:n) * w(1:n) * q(1, 1:n))
+            fe(2 * i) = sum(shape(i, 1:n) * w(1:n) * q(2, 1:n))
+        end do
+    end subroutine point_forces
 
     !> Nodal forces of a pressure known at the nodes (FORCE_COQUE / PRES_REP PRES):
     !> q_j = -PRES_j n.
@@ -188,12 +277,7 @@ contains
         type(edge_points_t), intent(in) :: pts
         real(dp), intent(in) :: fline(:, :)
         real(dp), intent(out) :: fe(:)
-        integer(i4) :: i
-        fe = 0.0_dp
-        do i = 1, pts%nn
-            fe(2 * i - 1) = sum(pts%shape(i, 1:pts%n) * pts%w(1:pts%n) * fline(1, 1:pts%n))
-            fe(2 * i) = sum(pts%shape(i, 1:pts%n) * pts%w(1:pts%n) * fline(2, 1:pts%n))
-        end do
+        call point_forces(pts%shape, pts%w, fline, pts%n, pts%nn, fe)
     end subroutine edge_line_forces
 
 end module element_loads

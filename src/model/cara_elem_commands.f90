@@ -13,7 +13,8 @@ module cara_elem_commands
     use model_concept, only: model_concept_t
     use model_types, only: is_plate
     use model_cara_elem, only: cara_elem_init, assign_coque, assign_discrete, &
-        assign_orientation, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N
+        assign_orientation, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N, assign_massif, &
+        MASSIF_ANGL_REP, MASSIF_ANGL_EULER, MASSIF_AXE
     use model_rigi_parasol, only: rigi_parasol_table_t, compute_rigi_parasol, &
         apply_rigi_parasol, rigi_parasol_lines, cell_centre_distances, raft_from_groups, &
         parasol_centre
@@ -27,7 +28,8 @@ module cara_elem_commands
 
 contains
 
-    !> AFFE_CARA_ELEM(MODELE, COQUE, DISCRET, DISCRET_2D, ORIENTATION, RIGI_PARASOL, INFO).
+    !> AFFE_CARA_ELEM(MODELE, COQUE, DISCRET, DISCRET_2D, ORIENTATION, MASSIF, RIGI_PARASOL,
+    !> INFO).
     !> INFO=2 writes the RIGI_PARASOL table to the .mess:
     !> `RIGI_PARASOL <cell> <node> <weight> <k1> <k2> [<k3>]`, then the sum of the weights.
     !>  result : out, a cara_elem_concept_t
@@ -72,6 +74,10 @@ contains
             end do
             do i = 1, cmd%count('ORIENTATION')
                 call orientation_occurrence(cmd%occurrence('ORIENTATION', i), p, cc, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('MASSIF')
+                call massif_occurrence(ctx, cmd%occurrence('MASSIF', i), p, cc, st)
                 if (st%failed()) return
             end do
             cc%n_parasol = cmd%count('RIGI_PARASOL')
@@ -205,6 +211,51 @@ contains
             ': ' // to_text(total) // ' cell(s) of its groups carry no discrete element: ' &
             // 'passed over (VERIF=''MAILLE'' makes that an error)')
     end subroutine discrete_occurrence
+
+    ! MASSIF: the material frame (ANGL_REP, ANGL_EULER, or ANGL_AXE with ORIG_AXE) of the
+    ! plane solid cells of GROUP_MA or of the model (TOUT), kept as data (model_cara_elem);
+    ! other cells passed over, said in the .mess. CHAM_ORIE (a field of frames) is not built.
+    subroutine massif_occurrence(ctx, occ, mc, cc, st)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(cara_elem_concept_t), intent(inout) :: cc
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: cells(:)
+        real(dp), allocatable :: angles(:), origin(:)
+        integer(i4) :: kind, skipped, k
+        if (occ%has('CHAM_ORIE')) then
+            call occ%error_at('CHAM_ORIE', 'a field of material frames is not built in ' // &
+                'parasol: give ANGL_REP, ANGL_EULER or ORIG_AXE / ANGL_AXE', st, &
+                code=STATUS_NOT_IMPLEMENTED)
+            return
+        end if
+        if (occ%has('TOUT')) then
+            cells = [(k, k = 1, mc%mesh%n_cells)]
+        else
+            call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
+            if (st%failed()) return
+        end if
+        if (occ%has('ANGL_REP')) then
+            kind = MASSIF_ANGL_REP
+            call occ%get_reals('ANGL_REP', angles, st)
+        else if (occ%has('ANGL_EULER')) then
+            kind = MASSIF_ANGL_EULER
+            call occ%get_reals('ANGL_EULER', angles, st)
+        else
+            kind = MASSIF_AXE
+            allocate (angles(2), source=0.0_dp)
+            if (occ%has('ANGL_AXE')) call occ%get_reals('ANGL_AXE', angles, st)
+            if (st%ok()) call occ%get_reals('ORIG_AXE', origin, st)
+            if (st%ok()) angles = [angles, origin]
+        end if
+        if (st%failed()) return
+        if (kind /= MASSIF_AXE) angles = [angles, spread(0.0_dp, 1, 3 - size(angles))]
+        call assign_massif(cc%cara, mc%model, cells, kind, angles, skipped)
+        if (skipped > 0 .and. .not. occ%has('TOUT')) call ctx%write_mess('    MASSIF: ' // &
+            to_text(skipped) // ' cell(s) of its groups carry no plane solid element: ' // &
+            'passed over')
+    end subroutine massif_occurrence
 
     ! ORIENTATION: CARA and VALE (count checked at VALE) on the discrete cells of each group.
     subroutine orientation_occurrence(occ, mc, cc, st)

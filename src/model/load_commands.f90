@@ -8,21 +8,23 @@ module load_commands
     use status, only: status_t, STATUS_MODEL_ERROR
     use strings, only: string_t, to_text
     use deck_concept, only: concept_t
-    use deck_command, only: command_t, keyword_set_t
+    use deck_command, only: command_t, keyword_set_t, concept_ref_t
     use run_context, only: run_context_t
     use mesh_types, only: mesh_t, find_node_group, find_node, nodes_of_group, nodes_of_cells, &
         node_name
     use model_dof_numbering, only: COMPONENT_NAMES
-    use mesh_command_support, only: relocate_error, group_cells, all_cells
-    use model_types, only: is_plate, is_plane_edge
+    use mesh_command_support, only: relocate_error, group_cells, all_cells, warn_at
+    use model_types, only: is_plate, is_plane_edge, is_plate_edge, is_plane_solid
     use model_concept, only: model_concept_t
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
         LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
-        LOAD_FORCE_CONTOUR, SLOT_PRES, load_set_location
+        LOAD_FORCE_CONTOUR, LOAD_FORCE_ARETE, LOAD_FORCE_INTERNE, LOAD_PESANTEUR, &
+        SLOT_ANGLES, PLAN_SUP, PLAN_INF, PLAN_MOY, load_set_location
     use function_concept, only: function_concept_t
     use relation_commands, only: select_nodes, face_impo_item, liaison_ddl_item, &
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
         liaison_group_item
+    use relation_mail, only: liaison_mail_item
     implicit none
     private
 
@@ -37,6 +39,16 @@ module load_commands
     end type char_meca_concept_t
 
     public :: run_affe_char_meca, run_affe_char_meca_f, run_affe_char_cine, run_affe_char_cine_f
+
+    !> The value keywords of FORCE_COQUE and PRES_REP by slot (model_loads; '_': none).
+    character(len=4), parameter :: FORCE_COQUE_KEYS(7) = ['FX  ', 'FY  ', 'FZ  ', 'MX  ', &
+        'MY  ', 'MZ  ', 'PRES']
+    character(len=4), parameter :: FORCE_COQUE_FO_KEYS(7) = ['_   ', '_   ', '_   ', &
+        '_   ', '_   ', '_   ', 'PRES']
+    character(len=4), parameter :: FORCE_COQUE_LOCAL_KEYS(5) = ['F1  ', 'F2  ', 'F3  ', &
+        'MF1 ', 'MF2 ']
+    character(len=7), parameter :: PRES_REP_KEYS(8) = ['_      ', '_      ', '_      ', &
+        '_      ', '_      ', '_      ', 'PRES   ', 'CISA_2D']
 
 contains
 
@@ -114,7 +126,10 @@ contains
                 call node_item(cmd%occurrence('MECA_IMPO', i), p, LOAD_DDL_IMPO, &
                     ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
                 if (st%failed()) return
+                call unheld_components(ctx, cmd%occurrence('MECA_IMPO', i), p)
             end do
+            if (cmd%has('EVOL_IMPO')) call evol_impo_items(cmd, p, cm%loads, st)
+            if (st%failed()) return
         class default
             call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
             return
@@ -122,6 +137,30 @@ contains
         call ctx%write_mess('    ' // cm%summary())
         call move_alloc(cm, result)
     end subroutine build_char_cine
+
+    ! AFFE_CHAR_CINE/MECA_IMPO: a component the occurrence's nodes lack is dropped where a
+    ! node lacks it, as Code_Aster's charci (a field of every component, read by the
+    ! numbering where it has the equation); one no node has imposes nothing: a located
+    ! warning says so.
+    subroutine unheld_components(ctx, occ, mc)
+        type(run_context_t), intent(inout) :: ctx
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), allocatable :: nodes(:)
+        character(len=:), allocatable :: label
+        type(status_t) :: st
+        integer(i4) :: comp
+        call select_nodes(occ, mc, nodes, label, st)
+        if (st%failed()) return
+        do comp = 1, size(COMPONENT_NAMES, kind=i4)
+            if (.not. occ%has(trim(COMPONENT_NAMES(comp)))) cycle
+            if (any(mc%dofs%equation(comp, nodes) /= 0)) cycle
+            call warn_at(ctx, occ, trim(COMPONENT_NAMES(comp)), 'none of the ' // &
+                to_text(size(nodes, kind=i4)) // ' node(s) has ' // &
+                trim(COMPONENT_NAMES(comp)) // ' in the model: it imposes nothing ' // &
+                '(Code_Aster drops it)')
+        end do
+    end subroutine unheld_components
 
     subroutine build_char_meca(ctx, cmd, functions, result, st)
         type(run_context_t), intent(inout) :: ctx
@@ -143,7 +182,11 @@ contains
                     ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ'], functions, cm%loads, st)
                 if (st%failed()) return
             end do
-            call relation_items(cmd, p, functions, cm%loads, st)
+            do i = 1, cmd%count('CHAMNO_IMPO')
+                call chamno_impo_item(cmd%occurrence('CHAMNO_IMPO', i), p, cm%loads, st)
+                if (st%failed()) return
+            end do
+            call relation_items(ctx, cmd, p, functions, cm%loads, st)
             if (st%failed()) return
             do i = 1, cmd%count('FORCE_NODALE')
                 call node_item(cmd%occurrence('FORCE_NODALE', i), p, LOAD_FORCE_NODALE, &
@@ -152,19 +195,39 @@ contains
             end do
             do i = 1, cmd%count('FORCE_COQUE')
                 call cell_item(cmd%occurrence('FORCE_COQUE', i), p, LOAD_FORCE_COQUE, &
-                    ['FX  ', 'FY  ', 'FZ  ', 'PRES'], functions, cm%loads, st)
+                    FORCE_COQUE_KEYS, functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            ! FORCE_COQUE_FO (AFFE_CHAR_MECA): its PRES is a function of space
+            do i = 1, cmd%count('FORCE_COQUE_FO')
+                call cell_item(cmd%occurrence('FORCE_COQUE_FO', i), p, LOAD_FORCE_COQUE, &
+                    FORCE_COQUE_FO_KEYS, .true., cm%loads, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('PRES_REP')
                 call cell_item(cmd%occurrence('PRES_REP', i), p, LOAD_PRES_REP, &
-                    ['____', '____', '____', 'PRES'], functions, cm%loads, st)
+                    PRES_REP_KEYS, functions, cm%loads, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('FORCE_CONTOUR')
                 call cell_item(cmd%occurrence('FORCE_CONTOUR', i), p, LOAD_FORCE_CONTOUR, &
-                    ['FX', 'FY'], functions, cm%loads, st)
+                    ['FX', 'FY', 'FZ'], functions, cm%loads, st)
                 if (st%failed()) return
             end do
+            do i = 1, cmd%count('FORCE_ARETE')
+                call cell_item(cmd%occurrence('FORCE_ARETE', i), p, LOAD_FORCE_ARETE, &
+                    ['FX', 'FY', 'FZ', 'MX', 'MY', 'MZ'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('FORCE_INTERNE')
+                call cell_item(cmd%occurrence('FORCE_INTERNE', i), p, LOAD_FORCE_INTERNE, &
+                    ['FX', 'FY', 'FZ'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            if (cmd%count('PESANTEUR') > 0) then
+                call pesanteur_item(cmd%occurrence('PESANTEUR', 1), p, cm%loads, st)
+                if (st%failed()) return
+            end if
         class default
             call cmd%error_at('MODELE', 'expected a model (modele), got ' // p%type_name(), st)
             return
@@ -173,14 +236,16 @@ contains
         call move_alloc(cm, result)
     end subroutine build_char_meca
 
-    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands).
-    subroutine relation_items(cmd, mc, functions, loads, st)
+    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands, relation_mail).
+    subroutine relation_items(ctx, cmd, mc, functions, loads, st)
+        type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
         type(model_concept_t), intent(in) :: mc
         logical, intent(in) :: functions
         type(load_set_t), intent(inout) :: loads
         type(status_t), intent(out) :: st
         integer(i4) :: i
+        logical, allocatable :: elim(:)
         do i = 1, cmd%count('FACE_IMPO')
             call face_impo_item(cmd%occurrence('FACE_IMPO', i), mc, functions, .false., &
                 loads, st)
@@ -217,6 +282,12 @@ contains
             call liaison_rbe3_item(cmd%occurrence('LIAISON_RBE3', i), mc, loads, st)
             if (st%failed()) return
         end do
+        ! ELIM_MULT: the slave nodes of the earlier LIAISON_MAIL occurrences.
+        allocate (elim(mc%mesh%n_nodes), source=.false.)
+        do i = 1, cmd%count('LIAISON_MAIL')
+            call liaison_mail_item(ctx, cmd%occurrence('LIAISON_MAIL', i), mc, elim, loads, st)
+            if (st%failed()) return
+        end do
     end subroutine relation_items
 
     !> DDL_IMPO / FORCE_NODALE occurrence: the nodes of TOUT, GROUP_NO, GROUP_MA and NOEUD
@@ -240,14 +311,56 @@ contains
             do k = 1, size(keys)
                 call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
                 if (st%failed()) return
-                if (occ%has(trim(keys(k)))) then
+                if (occ%has(trim(keys(k))) .and. .not. loads%kinematic) then
                     call check_component(occ, mc, nodes, trim(keys(k)), k, st)
                     if (st%failed()) return
                 end if
             end do
+            if (kind == LOAD_FORCE_NODALE .and. occ%has('ANGL_NAUT')) then
+                call angle_slots(occ, functions, index, loads, st)
+                if (st%failed()) return
+            end if
         end if
         if (occ%has('BLOCAGE')) call blocage_item(occ, mc, nodes, label, keys, loads, st)
     end subroutine node_item
+
+    !> FORCE_NODALE/ANGL_NAUT: the 1 to 3 nautical angles (degrees; reals, or functions
+    !> of INST, X, Y, Z in AFFE_CHAR_MECA_F) into slots SLOT_ANGLES.. (the missing ones 0):
+    !> FX..MZ are then components in that frame (Code_Aster cafono, REP = UTILISAT).
+    subroutine angle_slots(occ, functions, index, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        logical, intent(in) :: functions
+        integer(i4), intent(in) :: index
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: angles(:)
+        type(concept_ref_t), allocatable :: refs(:)
+        integer(i4) :: k
+        loads%items(index)%angles = .true.
+        do k = 0, 2
+            call load_set_constant(loads, index, SLOT_ANGLES + k, 0.0_dp)
+        end do
+        if (.not. functions) then
+            call occ%get_reals('ANGL_NAUT', angles, st)
+            if (st%failed()) return
+            do k = 1, min(3, size(angles, kind=i4))
+                call load_set_constant(loads, index, SLOT_ANGLES + k - 1, angles(k))
+            end do
+            return
+        end if
+        call occ%get_concepts('ANGL_NAUT', refs, st)
+        if (st%failed()) return
+        do k = 1, min(3, size(refs, kind=i4))
+            select type (f => refs(k)%ptr)
+            class is (function_concept_t)
+                call load_set_function(loads, index, SLOT_ANGLES + k - 1, f)
+            class default
+                call occ%error_at('ANGL_NAUT', 'expected functions (DEFI_CONSTANTE, ' // &
+                    'DEFI_FONCTION, FORMULE), got ' // f%type_name(), st)
+                return
+            end select
+        end do
+    end subroutine angle_slots
 
     !> DDL_IMPO/BLOCAGE = 'DEPLACEMENT' (DX DY DZ) and/or 'ROTATION' (DRX DRY DRZ): 0 on the
     !> components each node has, skipping the others (Code_Aster caddli). A component also
@@ -293,6 +406,154 @@ contains
         end do
     end subroutine blocage_item
 
+    !> AFFE_CHAR_CINE EVOL_IMPO (Code_Aster U4.44.03): at every node where the result's DEPL
+    !> has values, each component (those of NOM_CMP, default all DX .. DRZ it has) imposed
+    !> at its value interpolated in time at each instant of the analysis (model_loads
+    !> evol_value). The result must store DEPL at every instant (PROJ_CHAMP's and
+    !> CREA_RESU's results do); a component a node lacks in the model is an error.
+    subroutine evol_impo_items(cmd, mc, loads, st)
+        use field_types, only: FIELD_NOEU, field_component
+        use result_fields, only: result_fields_t, result_field_index
+        type(command_t), intent(in) :: cmd
+        type(model_concept_t), intent(in) :: mc
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        type(string_t), allocatable :: names(:)
+        logical :: wanted(6)
+        integer(i4) :: k, f, n, comp, i, index, n_nodes
+        character(len=:), allocatable :: file
+        integer :: line, col
+        call cmd%get_concept('EVOL_IMPO', p, st)
+        if (st%failed()) return
+        call cmd%location('EVOL_IMPO', file, line, col)
+        wanted = .true.
+        if (cmd%has('NOM_CMP')) then
+            call cmd%get_texts('NOM_CMP', names, st)
+            if (st%failed()) return
+            wanted = .false.
+            do k = 1, size(names)
+                do comp = 1, 6
+                    if (names(k)%s == trim(COMPONENT_NAMES(comp))) wanted(comp) = .true.
+                end do
+            end do
+        end if
+        select type (p)
+        class is (result_fields_t)
+            if (p%n_stored == 0) then
+                call cmd%error_at('EVOL_IMPO', 'the result stores no instant', st, &
+                    code=STATUS_MODEL_ERROR)
+                return
+            end if
+            do k = 1, p%n_stored
+                f = result_field_index(p, k, 'DEPL')
+                if (f == 0) then
+                    call cmd%error_at('EVOL_IMPO', 'EVOL_IMPO reads DEPL stored in the ' // &
+                        'result at every instant (as PROJ_CHAMP and CREA_RESU store it); ' // &
+                        p%name // ' has none at INST ' // to_text(p%inst(k)), st, &
+                        code=STATUS_MODEL_ERROR)
+                    return
+                end if
+            end do
+            f = result_field_index(p, 1_i4, 'DEPL')
+            associate (fd => p%stored(1)%items(f)%field)
+                if (fd%location /= FIELD_NOEU .or. fd%n_nodes /= mc%mesh%n_nodes) then
+                    call cmd%error_at('EVOL_IMPO', 'the result''s DEPL is not a nodal field ' // &
+                        'of the model''s mesh', st, code=STATUS_MODEL_ERROR)
+                    return
+                end if
+                n_nodes = 0
+                do n = 1, fd%n_nodes
+                    if (.not. any(fd%node_has(:, n))) cycle
+                    call load_add_item(loads, LOAD_DDL_IMPO, [n], index, 'EVOL_IMPO')
+                    call load_set_location(loads, index, file, line, col, cmd%command, &
+                        'EVOL_IMPO')
+                    do comp = 1, 6
+                        if (.not. wanted(comp)) cycle
+                        i = field_component(fd, trim(COMPONENT_NAMES(comp)))
+                        if (i == 0) cycle
+                        if (.not. fd%node_has(i, n)) cycle
+                        call check_component(cmd%keyword_set_t, mc, [n], 'EVOL_IMPO', comp, st)
+                        if (st%failed()) return
+                        loads%items(index)%values(comp)%given = .true.
+                        loads%items(index)%values(comp)%evol => p
+                        loads%items(index)%values(comp)%evol_node = n
+                        loads%items(index)%values(comp)%evol_cmp = COMPONENT_NAMES(comp)
+                    end do
+                    n_nodes = n_nodes + 1
+                end do
+                if (n_nodes == 0) call cmd%error_at('EVOL_IMPO', 'the result''s DEPL has ' // &
+                    'no value at any node: it imposes nothing', st, code=STATUS_MODEL_ERROR)
+            end associate
+        class default
+            call cmd%error_at('EVOL_IMPO', 'expected a result, got ' // p%type_name(), st)
+        end select
+    end subroutine evol_impo_items
+
+    !> CHAMNO_IMPO (Code_Aster U4.44.01): every component DX..DRZ a node of the CHAM_NO
+    !> carries is imposed at COEF_IMPO times its value, as a DDL_IMPO of that node (Code_Aster
+    !> writes it as one linear relation per value; the solution is the same). A value on a
+    !> component the node lacks in the model is an error, as for DDL_IMPO.
+    subroutine chamno_impo_item(occ, mc, loads, st)
+        use field_types, only: FIELD_NOEU, field_component
+        use field_concept, only: field_concept_t
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        class(concept_t), pointer :: p
+        real(dp) :: coef
+        integer(i4) :: n, comp, i, index, n_imposed
+        integer(i4) :: at(6)
+        call occ%get_concept('CHAM_NO', p, st)
+        if (st%ok()) call occ%get_real('COEF_IMPO', coef, st)
+        if (st%failed()) return
+        select type (p)
+        type is (field_concept_t)
+            associate (f => p%field)
+                if (f%location /= FIELD_NOEU .or. f%n_nodes /= mc%mesh%n_nodes) then
+                    call occ%error_at('CHAM_NO', 'expected a nodal field of the model''s ' // &
+                        'mesh (' // to_text(mc%mesh%n_nodes) // ' nodes), got a field of ' // &
+                        to_text(merge(f%n_nodes, f%n_cells, f%location == FIELD_NOEU)) // &
+                        ' ' // trim(merge('nodes', 'cells', f%location == FIELD_NOEU)), st, &
+                        code=STATUS_MODEL_ERROR)
+                    return
+                end if
+                do comp = 1, 6
+                    at(comp) = field_component(f, trim(COMPONENT_NAMES(comp)))
+                end do
+                if (all(at == 0)) then
+                    call occ%error_at('CHAM_NO', 'the field has none of the components ' // &
+                        'DX DY DZ DRX DRY DRZ (it is a ' // f%quantity // ')', st, &
+                        code=STATUS_MODEL_ERROR)
+                    return
+                end if
+                n_imposed = 0
+                do n = 1, f%n_nodes
+                    if (.not. any([(at(comp) > 0, comp = 1, 6)])) cycle
+                    if (.not. any([(f%node_has(max(at(comp), 1), n) .and. at(comp) > 0, &
+                        comp = 1, 6)])) cycle
+                    call load_add_item(loads, LOAD_DDL_IMPO, [n], index, 'CHAMNO_IMPO')
+                    call locate_item(occ, loads, index)
+                    do comp = 1, 6
+                        i = at(comp)
+                        if (i == 0) cycle
+                        if (.not. f%node_has(i, n)) cycle
+                        call check_component(occ, mc, [n], 'CHAM_NO', comp, st)
+                        if (st%failed()) return
+                        call load_set_constant(loads, index, comp, coef * f%node_values(i, n))
+                    end do
+                    n_imposed = n_imposed + 1
+                end do
+                if (n_imposed == 0) call occ%error_at('CHAM_NO', 'the field has no value ' // &
+                    'at any node: it imposes nothing', st, code=STATUS_MODEL_ERROR)
+            end associate
+        class default
+            call occ%error_at('CHAM_NO', 'expected a nodal field (cham_no_sdaster), got ' // &
+                p%type_name(), st)
+        end select
+    end subroutine chamno_impo_item
+
     !> A DDL_IMPO or FORCE_NODALE value on a component a node does not have (its elements do
     !> not use it) is an error at the keyword: it would silently do nothing.
     !>  comp : the component (DOF_DX..DOF_DRZ) of the keyword: DX or FX = 1, ..., DRZ or MZ = 6
@@ -320,8 +581,10 @@ contains
         end do
     end subroutine check_component
 
-    !> FORCE_COQUE / PRES_REP / FORCE_CONTOUR occurrence: cells from TOUT or GROUP_MA, of the
-    !> element kind the load needs.
+    !> A cell load occurrence (FORCE_COQUE, PRES_REP, FORCE_CONTOUR, FORCE_ARETE,
+    !> FORCE_INTERNE): cells from GROUP_MA, or TOUT (the model's cells the load fits), of the
+    !> element kinds the load needs (load_fits); keys(k) is read into slot k.
+    !>  st : out, located: a cell the load does not fit, a value the cells cannot carry
     subroutine cell_item(occ, mc, kind, keys, functions, loads, st)
         type(keyword_set_t), intent(in) :: occ
         type(model_concept_t), intent(in) :: mc
@@ -331,39 +594,144 @@ contains
         type(load_set_t), intent(inout) :: loads
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: cells(:)
-        integer(i4) :: k, index, slot
+        integer(i4) :: k, index
         logical, allocatable :: fits(:)
+        type(string_t), allocatable :: plan(:)
         if (occ%has('GROUP_MA')) then
             call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
             if (st%failed()) return
         else
             cells = all_cells(mc%mesh)
         end if
-        if (kind == LOAD_FORCE_CONTOUR) then
-            fits = is_plane_edge(mc%model%element(cells))
-        else
-            fits = is_plate(mc%model%element(cells))
-        end if
-        if (occ%has('TOUT')) cells = pack(cells, fits)
-        if (.not. all(fits) .or. size(cells) == 0) then
+        fits = load_fits(kind, mc%model%element(cells))
+        if (.not. occ%has('GROUP_MA')) cells = pack(cells, fits)
+        if (.not. all(fits) .and. occ%has('GROUP_MA') .or. size(cells) == 0) then
             call occ%error_at(merge('GROUP_MA', 'TOUT    ', occ%has('GROUP_MA')), &
-                merge('the load needs SEG2 edges of a D_PLAN/C_PLAN model', &
-                      'the load needs plate (DKT) cells                  ', &
-                      kind == LOAD_FORCE_CONTOUR) // '; ' // to_text(count(.not. fits)) // &
-                ' cell(s) of ' // to_text(size(fits)) // ' do not fit', st, &
-                code=STATUS_MODEL_ERROR)
+                'the load needs ' // fitting_cells(kind) // '; ' // &
+                to_text(count(.not. fits)) // ' cell(s) of ' // to_text(size(fits)) // &
+                ' do not fit', st, code=STATUS_MODEL_ERROR)
             return
         end if
+        call value_checks(occ, mc, kind, cells, st)
+        if (st%failed()) return
         call load_add_item(loads, kind, cells, index)
         call locate_item(occ, loads, index)
         do k = 1, size(keys)
-            slot = k
-            if (trim(keys(k)) == 'PRES') slot = SLOT_PRES
             if (keys(k)(1:1) == '_') cycle
-            call set_slot(occ, trim(keys(k)), slot, index, functions, loads, st)
+            call set_slot(occ, trim(keys(k)), k, index, functions, loads, st)
             if (st%failed()) return
         end do
+        if (kind /= LOAD_FORCE_COQUE) return
+        ! F1, F2, F3, MF1, MF2: slots 1..5 in the plate's user frame
+        do k = 1, size(FORCE_COQUE_LOCAL_KEYS)
+            if (.not. occ%has(trim(FORCE_COQUE_LOCAL_KEYS(k)))) cycle
+            loads%items(index)%local_frame = .true.
+            call set_slot(occ, trim(FORCE_COQUE_LOCAL_KEYS(k)), k, index, functions, loads, st)
+            if (st%failed()) return
+        end do
+        if (loads%items(index)%local_frame) &
+            loads%items(index)%slot_names(1:5) = FORCE_COQUE_LOCAL_KEYS
+        if (occ%has('PLAN')) then
+            call occ%get_texts('PLAN', plan, st)
+            if (st%failed()) return
+            select case (plan(1)%s)
+            case ('SUP')
+                loads%items(index)%plan = PLAN_SUP
+            case ('INF')
+                loads%items(index)%plan = PLAN_INF
+            case ('MOY')
+                loads%items(index)%plan = PLAN_MOY
+            end select
+        end if
     end subroutine cell_item
+
+    !> The cells a load of `kind` applies to, by element kind.
+    elemental logical function load_fits(kind, element)
+        integer(i4), intent(in) :: kind, element
+        select case (kind)
+        case (LOAD_FORCE_CONTOUR)
+            load_fits = is_plane_edge(element)
+        case (LOAD_PRES_REP)
+            load_fits = is_plate(element) .or. is_plane_edge(element)
+        case (LOAD_FORCE_ARETE)
+            load_fits = is_plate_edge(element)
+        case (LOAD_FORCE_INTERNE)
+            load_fits = is_plane_solid(element)
+        case default
+            load_fits = is_plate(element)
+        end select
+    end function load_fits
+
+    ! The cells a load kind needs, for messages.
+    function fitting_cells(kind) result(text)
+        integer(i4), intent(in) :: kind
+        character(len=:), allocatable :: text
+        select case (kind)
+        case (LOAD_FORCE_CONTOUR)
+            text = 'SEG2/SEG3 edges of a D_PLAN/C_PLAN model'
+        case (LOAD_PRES_REP)
+            text = 'plate (DKT) cells or SEG2/SEG3 edges of a D_PLAN/C_PLAN model'
+        case (LOAD_FORCE_ARETE)
+            text = 'SEG2 edges of a DKT model (the plates'' boundary)'
+        case (LOAD_FORCE_INTERNE)
+            text = 'D_PLAN/C_PLAN surface cells (TRIA3 .. QUAD9)'
+        case default
+            text = 'plate (DKT) cells'
+        end select
+    end function fitting_cells
+
+    ! Values the cells cannot carry: FZ on plane edges and solids (no DZ), CISA_2D on
+    ! plates (a plane edge's shear).
+    subroutine value_checks(occ, mc, kind, cells, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        integer(i4), intent(in) :: kind, cells(:)
+        type(status_t), intent(out) :: st
+        if ((kind == LOAD_FORCE_CONTOUR .or. kind == LOAD_FORCE_INTERNE) .and. &
+            occ%has('FZ')) then
+            call occ%error_at('FZ', 'a D_PLAN/C_PLAN model has no DZ: FZ applies to ' // &
+                'AXIS_FOURIER or 3D models, which parasol does not build', st, &
+                code=STATUS_MODEL_ERROR)
+        else if (kind == LOAD_PRES_REP .and. occ%has('CISA_2D') .and. &
+                 any(is_plate(mc%model%element(cells)))) then
+            call occ%error_at('CISA_2D', 'CISA_2D is the shear on the edges of a 2D model, ' &
+                // 'not on plate (DKT) cells', st, code=STATUS_MODEL_ERROR)
+        end if
+    end subroutine value_checks
+
+    !> PESANTEUR = _F(GRAVITE=g, DIRECTION=d, GROUP_MA): the force rho g d/|d| per unit
+    !> volume on the cells (GROUP_MA, else all: those without a mass take none), as
+    !> Code_Aster's capesa (DIRECTION normalised; a zero one refused, CHARGES2_53).
+    subroutine pesanteur_item(occ, mc, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: cells(:)
+        real(dp), allocatable :: direction(:)
+        real(dp) :: g, length
+        integer(i4) :: k, index
+        call occ%get_real('GRAVITE', g, st)
+        if (st%ok()) call occ%get_reals('DIRECTION', direction, st)
+        if (st%failed()) return
+        length = norm2(direction)
+        if (.not. length > tiny(1.0_dp)) then
+            call occ%error_at('DIRECTION', 'the direction of gravity is zero (Code_Aster ' // &
+                'CHARGES2_53)', st, code=STATUS_MODEL_ERROR)
+            return
+        end if
+        if (occ%has('GROUP_MA')) then
+            call group_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
+            if (st%failed()) return
+        else
+            cells = all_cells(mc%mesh)
+        end if
+        call load_add_item(loads, LOAD_PESANTEUR, cells, index)
+        call locate_item(occ, loads, index)
+        do k = 1, 3
+            call load_set_constant(loads, index, k, g * (direction(k) / length))
+        end do
+    end subroutine pesanteur_item
 
     !> Reads keyword `key` (if given) into slot `slot` of item `index`.
     subroutine set_slot(occ, key, slot, index, functions, loads, st)

@@ -34,8 +34,7 @@ contains
     !> CELE_S and RHO) and DIS_CONTACT are decoded for the elements. MATER (reuse) starts
     !> from an existing material: a behaviour it has already is replaced.
     !>  result : out, a material_concept_t
-    !>  st     : out, located at the keyword: E <= 0, NU outside (-1, 0.5), COULOMB /= 0
-    !>           (friction is not built yet: frictionless DIS_CHOC and DIS_CONTACT only)
+    !>  st     : out, located at the keyword: E <= 0, NU outside (-1, 0.5)
     subroutine run_defi_materiau(ctx, cmd, result, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
@@ -218,14 +217,10 @@ contains
         type(status_t), intent(out) :: st
         mat%has_dis_contact = .true.
         associate (dc => mat%dis_contact)
+            ! COULOMB /= 0 is kept as data: a contact law that uses it stops (STAT_NON_LINE
+            ! COMPORTEMENT, analysis_commands refuse_friction)
             call occ%get_real('COULOMB', dc%coulomb, st)
             if (st%failed()) return
-            if (abs(dc%coulomb) > 0.0_dp) then
-                call occ%error_at('COULOMB', 'friction is not built yet: parasol has ' // &
-                    'frictionless DIS_CHOC and DIS_CONTACT only (COULOMB must be 0, got ' // &
-                    to_text(dc%coulomb) // ')', st, code=STATUS_NOT_IMPLEMENTED)
-                return
-            end if
             dc%has_rigi_nor = occ%has('RIGI_NOR')
             if (dc%has_rigi_nor) call occ%get_real('RIGI_NOR', dc%rigi_nor, st)
             if (st%ok()) call occ%get_real('RIGI_TAN', dc%rigi_tan, st)

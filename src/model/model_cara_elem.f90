@@ -6,7 +6,7 @@ module model_cara_elem
     use strings, only: to_text, to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, &
-        is_discrete_rotational, ELEMENT_NAMES
+        is_discrete_rotational, ELEMENT_NAMES, is_plate_edge, ELEM_NONE, is_plane_solid
     implicit none
     private
 
@@ -52,10 +52,22 @@ module model_cara_elem
         integer(i4), allocatable :: discrete_matrix(:)
         type(discrete_matrix_t), allocatable :: matrices(:)   !< one per DISCRET occurrence
         integer(i4) :: n_matrices = 0
+        !> (n_cells) a discrete mass (M_*) that is not zero: its values are not kept (they
+        !> play no part in statics), PESANTEUR on it is refused
+        logical, allocatable :: has_mass(:)
+        !> MASSIF: the material frame of a plane solid cell, as given (MASSIF_* kind, 0
+        !> none): ANGL_REP or ANGL_EULER (3 angles, degrees; in 2D the first turns about Z),
+        !> or ANGL_AXE (2 angles) and ORIG_AXE (3 coordinates). Only an orthotropic
+        !> material turns with it; an isotropic one is the same in every frame.
+        integer(i4), allocatable :: massif_kind(:)
+        real(dp), allocatable :: massif_values(:, :)   !< (5, n_cells)
     end type cara_elem_t
 
+    integer(i4), parameter, public :: MASSIF_NONE = 0, MASSIF_ANGL_REP = 1, &
+        MASSIF_ANGL_EULER = 2, MASSIF_AXE = 3
+
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
-        discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
+        assign_massif, discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
         cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix
 
 contains
@@ -67,6 +79,8 @@ contains
         integer(i4) :: n
         n = mesh%n_cells
         allocate (cara%has_coque(n), source=.false.)
+        allocate (cara%massif_kind(n), source=MASSIF_NONE)
+        allocate (cara%massif_values(5, n), source=0.0_dp)
         allocate (cara%thickness(n), cara%coef_rigi_drz(n), source=0.0_dp)
         allocate (cara%coque_direction(3, n), source=0.0_dp)
         cara%coque_direction(1, :) = 1.0_dp
@@ -79,21 +93,23 @@ contains
         allocate (cara%orientation_values(3, n), source=0.0_dp)
         allocate (cara%discrete_matrix(n), source=0_i4)
         allocate (cara%matrices(4))
+        allocate (cara%has_mass(n), source=.false.)
     end subroutine cara_elem_init
 
     !> COQUE: thickness (and drilling coefficient) of plate cells.
-    !>  cells : in, cells of the occurrence; each must carry a DKT/DKQ element
+    !>  cells_in : in, cells of the occurrence; each must carry a DKT/DKQ element (or a
+    !>             plate edge, or none: then passed over)
     !>  epais : in, thickness > 0;  coef_rigi_drz : in, optional (default 1e-5)
     !>  st    : out, STATUS_MODEL_ERROR for EPAIS <= 0 or a cell that is not a plate
     !>  direction : in, optional, ANGL_REP / VECTEUR as a direction (default global X)
     !>  layers : in, optional, COQUE_NCOU (default 1)
     !>  offset : in, optional, EXCENTREMENT (default 0)
-    subroutine assign_coque(cara, model, mesh, cells, epais, st, coef_rigi_drz, group, &
+    subroutine assign_coque(cara, model, mesh, cells_in, epais, st, coef_rigi_drz, group, &
                             direction, layers, offset)
         type(cara_elem_t), intent(inout) :: cara
         type(model_t), intent(in) :: model
         type(mesh_t), intent(in) :: mesh
-        integer(i4), intent(in) :: cells(:)
+        integer(i4), intent(in) :: cells_in(:)
         real(dp), intent(in) :: epais
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: coef_rigi_drz
@@ -102,12 +118,17 @@ contains
         integer(i4), intent(in), optional :: layers
         real(dp), intent(in), optional :: offset
         integer(i4) :: i
+        integer(i4), allocatable :: cells(:)
         if (epais <= 0.0_dp) then
             call set_error(st, STATUS_MODEL_ERROR, 'EPAIS must be > 0, got ' // to_text(epais))
             return
         end if
+        ! a cell without an element is passed over (Code_Aster's map covers the mesh); the
+        ! plates' edges (SEG2 of a DKT model) take it too, as Code_Aster's MEBODKT
+        cells = pack(cells_in, model%element(cells_in) /= ELEM_NONE)
         do i = 1, size(cells)
-            if (.not. is_plate(model%element(cells(i)))) then
+            if (.not. (is_plate(model%element(cells(i))) .or. &
+                       is_plate_edge(model%element(cells(i))))) then
                 call set_error(st, STATUS_MODEL_ERROR, 'COQUE on ' // &
                     cell_label(mesh, cells(i), group) // ', which is ' // &
                     trim(ELEMENT_NAMES(model%element(cells(i)))) // ' (COQUE needs DKT)')
@@ -405,6 +426,7 @@ contains
                 call set_error(st, STATUS_MODEL_ERROR, reason)
                 return
             end if
+            if (what == 'M') cara%has_mass(c) = any(abs(values) > 0.0_dp)
             if (what /= 'K') cycle
             if (.not. diagonal .and. matrix == 0) call store_matrix(k, matrix)
             cara%discrete_cara(c) = code
@@ -472,5 +494,30 @@ contains
             cara%orientation_values(1:n, cells(i)) = values
         end do
     end subroutine assign_orientation
+
+    !> MASSIF: the material frame on the plane solid cells among `cells` (the others, edges
+    !> or plates, passed over; their number returned).
+    !>  kind   : in, MASSIF_ANGL_REP, MASSIF_ANGL_EULER or MASSIF_AXE
+    !>  values : in, up to 5 values (angles, then ORIG_AXE for MASSIF_AXE)
+    subroutine assign_massif(cara, model, cells, kind, values, n_skipped)
+        type(cara_elem_t), intent(inout) :: cara
+        type(model_t), intent(in) :: model
+        integer(i4), intent(in) :: cells(:), kind
+        real(dp), intent(in) :: values(:)
+        integer(i4), intent(out) :: n_skipped
+        integer(i4) :: i, c, n
+        n = min(5, size(values))
+        n_skipped = 0
+        do i = 1, size(cells)
+            c = cells(i)
+            if (.not. is_plane_solid(model%element(c))) then
+                n_skipped = n_skipped + 1
+                cycle
+            end if
+            cara%massif_kind(c) = kind
+            cara%massif_values(:, c) = 0.0_dp
+            cara%massif_values(1:n, c) = values(1:n)
+        end do
+    end subroutine assign_massif
 
 end module model_cara_elem

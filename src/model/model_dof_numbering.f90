@@ -7,7 +7,7 @@ module model_dof_numbering
     use model_types, only: model_t, ELEM_NONE, ELEM_DKQ, ELEM_DKT, ELEM_DIS_T_SEG2, &
         ELEM_DIS_T_POI1, ELEM_2D_DIS_T_SEG2, ELEM_2D_DIS_T_POI1, ELEM_DIS_TR_SEG2, &
         ELEM_DIS_TR_POI1, ELEM_2D_DIS_TR_SEG2, ELEM_2D_DIS_TR_POI1, is_plane_solid, &
-        is_plane_edge
+        is_plane_edge, ELEM_DKT_SEG2
     implicit none
     private
 
@@ -41,7 +41,7 @@ contains
             return
         end if
         select case (kind)
-        case (ELEM_DKQ, ELEM_DKT, ELEM_DIS_TR_SEG2, ELEM_DIS_TR_POI1)
+        case (ELEM_DKQ, ELEM_DKT, ELEM_DKT_SEG2, ELEM_DIS_TR_SEG2, ELEM_DIS_TR_POI1)
             mask = .true.
         case (ELEM_2D_DIS_TR_SEG2, ELEM_2D_DIS_TR_POI1)
             mask([DOF_DX, DOF_DY, DOF_DRZ]) = .true.

@@ -3,9 +3,15 @@
 !> A load set is a list of items, each of one kind applied to nodes or cells:
 !>   DDL_IMPO      nodes, imposed components DX..DRZ
 !>   FORCE_NODALE  nodes, FX FY FZ MX MY MZ (added to the equations DX..DRZ)
-!>   FORCE_COQUE   plate cells, PRES (force = -PRES n) or FX/FY/FZ per unit area
-!>   PRES_REP      plate cells, PRES
-!>   FORCE_CONTOUR SEG2 edge cells of plane models, FX FY per unit length (unit depth)
+!>   FORCE_NODALE  (ANGL_NAUT: FX..MZ in the frame of the nautical angles)
+!>   FORCE_COQUE   plate cells, PRES (force = -PRES n), FX..MZ (global) or F1, F2, F3,
+!>                 MF1, MF2 (the plate's user frame) per unit area, on the plane PLAN
+!>   PRES_REP      plate cells, PRES; plane edges (SEG2, SEG3), PRES and CISA_2D
+!>   FORCE_CONTOUR SEG2/SEG3 edge cells of plane models, FX FY per unit length (unit depth)
+!>   FORCE_ARETE   SEG2 edges of a DKT model, FX..MZ per unit length (global)
+!>   FORCE_INTERNE plane solid cells, FX FY per unit volume (unit depth)
+!>   PESANTEUR     cells (all, or GROUP_MA): rho g d per unit volume (plates: rho EPAIS g d
+!>                 per unit area), slots 1..3 = g d (d the unit DIRECTION)
 !>   RELATION      linear relations between components of nodes (LIAISON_DDL,
 !>                 LIAISON_OBLIQUE, LIAISON_UNIF, LIAISON_SOLIDE, LIAISON_GROUP,
 !>                 LIAISON_RBE3, LIAISON_MAIL, FACE_IMPO and ARETE_IMPO DNOR/DTAN): each
@@ -30,20 +36,38 @@ module model_loads
     use strings, only: to_text
     use number_limits, only: MAX_LENGTH, is_finite, magnitude_fits
     use function_concept, only: function_concept_t, param_binding_t
+    use result_fields, only: result_fields_t, result_field_index
+    use field_types, only: field_component
     implicit none
     private
 
     integer(i4), parameter, public :: LOAD_DDL_IMPO = 1, LOAD_FORCE_NODALE = 2, &
-        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6
-    character(len=13), parameter, public :: LOAD_KIND_NAMES(6) = ['DDL_IMPO     ', &
-        'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', 'FORCE_CONTOUR', 'LIAISON      ']
-    !> Slot of PRES in FORCE_COQUE / PRES_REP items (the FX FY FZ slots are 1..3).
-    integer(i4), parameter, public :: SLOT_PRES = 4
-    !> Names of the six slots of each kind (messages).
-    character(len=4), parameter :: SLOT_NAMES(6, 6) = reshape([character(len=4) :: &
-        'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', 'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', &
-        'FX', 'FY', 'FZ', 'PRES', '', '', 'FX', 'FY', 'FZ', 'PRES', '', '', &
-        'FX', 'FY', '', '', '', '', '', '', '', '', '', ''], [6, 6])
+        LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6, &
+        LOAD_FORCE_ARETE = 7, LOAD_FORCE_INTERNE = 8, LOAD_PESANTEUR = 9, N_LOAD_KINDS = 9
+    character(len=13), parameter, public :: LOAD_KIND_NAMES(N_LOAD_KINDS) = [ &
+        'DDL_IMPO     ', 'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', &
+        'FORCE_CONTOUR', 'LIAISON      ', 'FORCE_ARETE  ', 'FORCE_INTERNE', 'PESANTEUR    ']
+    !> Value slots of an item (see load_item_t%values).
+    integer(i4), parameter, public :: MAX_SLOTS = 9
+    !> Slot of PRES in FORCE_COQUE / PRES_REP items, of CISA_2D in PRES_REP items, and the
+    !> first of FORCE_NODALE's three ANGL_NAUT angles (the FX .. MZ slots are 1..6).
+    integer(i4), parameter, public :: SLOT_PRES = 7, SLOT_CISA = 8, SLOT_ANGLES = 7
+    !> FORCE_COQUE/PLAN: the plane the forces act in (Code_Aster te0032: MAIL and MOY the
+    !> mean surface, SUP and INF the faces at +-EPAIS/2, a moment of the in-plane forces).
+    integer(i4), parameter, public :: PLAN_MAIL = 0, PLAN_SUP = 1, PLAN_INF = -1, &
+        PLAN_MOY = 2
+    !> Names of the slots of each kind (messages).
+    character(len=9), parameter :: SLOT_NAMES(MAX_SLOTS, N_LOAD_KINDS) = reshape( &
+        [character(len=9) :: &
+        'DX', 'DY', 'DZ', 'DRX', 'DRY', 'DRZ', '', '', '', &
+        'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', 'ANGL_NAUT', 'ANGL_NAUT', 'ANGL_NAUT', &
+        'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', 'PRES', '', '', &
+        '', '', '', '', '', '', 'PRES', 'CISA_2D', '', &
+        'FX', 'FY', 'FZ', '', '', '', '', '', '', &
+        '', '', '', '', '', '', '', '', '', &
+        'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', '', '', '', &
+        'FX', 'FY', 'FZ', '', '', '', '', '', '', &
+        'GRAVITE', 'GRAVITE', 'GRAVITE', '', '', '', '', '', ''], [MAX_SLOTS, N_LOAD_KINDS])
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
@@ -54,6 +78,11 @@ module model_loads
         real(dp) :: constant = 0.0_dp
         class(function_concept_t), pointer :: func => null()   !< not owned (run context)
         type(param_binding_t) :: binding
+        !> EVOL_IMPO (AFFE_CHAR_CINE): component `evol_cmp` of DEPL at node `evol_node` of
+        !> the result `evol`, interpolated linearly in INST between its stored instants
+        class(result_fields_t), pointer :: evol => null()      !< not owned (run context)
+        integer(i4) :: evol_node = 0
+        character(len=8) :: evol_cmp = ''
     end type load_value_t
 
     !> One occurrence of a load keyword.
@@ -61,13 +90,19 @@ module model_loads
         integer(i4) :: kind = 0                      !< LOAD_*
         integer(i4), allocatable :: nodes(:)         !< DDL_IMPO, FORCE_NODALE
         integer(i4), allocatable :: cells(:)         !< FORCE_COQUE, PRES_REP, FORCE_CONTOUR
-        type(load_value_t) :: values(6)              !< DX..DRZ / FX..MZ / FX,FY,FZ,PRES
+        !> DX..DRZ / FX..MZ (FORCE_NODALE: then ANGL_NAUT) / FORCE_COQUE FX..MZ or F1, F2,
+        !> F3, MF1, MF2 (local_frame), PRES / PRES_REP PRES, CISA_2D / PESANTEUR g d
+        type(load_value_t) :: values(MAX_SLOTS)
         character(len=:), allocatable :: group      !< group name, for messages
         !> where the occurrence is in the deck (errors found while the load is applied are
         !> located there): file, line, column, command (AFFE_CHAR_MECA_F) and keyword
         character(len=:), allocatable :: file, command, keyword
         integer(i4) :: line = 0, col = 0
         logical :: blocage = .false.                 !< DDL_IMPO/BLOCAGE: skip absent components
+        !> FORCE_COQUE F1, F2, F3, MF1, MF2: in the plate's user frame (COQUE/ANGL_REP)
+        logical :: local_frame = .false.
+        integer(i4) :: plan = PLAN_MAIL               !< FORCE_COQUE/PLAN (PLAN_*)
+        logical :: angles = .false.                   !< FORCE_NODALE/ANGL_NAUT given
         !> RELATION items: relation r has the terms rel_ptr(r) .. rel_ptr(r+1)-1 of
         !> (rel_node, rel_comp, rel_coef); its right-hand side is values(rel_slot(r))
         !> evaluated at node rel_at(r) (rel_slot 0: zero)
@@ -78,7 +113,7 @@ module model_loads
         !> LIAISON_SOLIDE: the nodes of the rigid body (its cells store no energy)
         integer(i4), allocatable :: solid_nodes(:)
         !> names of the value slots, for messages (RELATION items: COEF_IMPO, DNOR, ...)
-        character(len=16) :: slot_names(6) = ''
+        character(len=16) :: slot_names(MAX_SLOTS) = ''
     end type load_item_t
 
     !> A char_meca concept's content.
@@ -136,6 +171,9 @@ contains
         integer(i4) :: k
         to%kind = from%kind
         to%blocage = from%blocage
+        to%local_frame = from%local_frame
+        to%plan = from%plan
+        to%angles = from%angles
         call move_alloc(from%nodes, to%nodes)
         call move_alloc(from%cells, to%cells)
         to%n_rel = from%n_rel
@@ -153,10 +191,13 @@ contains
         if (allocated(from%keyword)) call move_alloc(from%keyword, to%keyword)
         to%line = from%line
         to%col = from%col
-        do k = 1, 6
+        do k = 1, MAX_SLOTS
             to%values(k)%given = from%values(k)%given
             to%values(k)%constant = from%values(k)%constant
             to%values(k)%func => from%values(k)%func
+            to%values(k)%evol => from%values(k)%evol
+            to%values(k)%evol_node = from%values(k)%evol_node
+            to%values(k)%evol_cmp = from%values(k)%evol_cmp
             if (allocated(from%values(k)%binding%slot)) &
                 call move_alloc(from%values(k)%binding%slot, to%values(k)%binding%slot)
             if (allocated(from%values(k)%binding%names)) &
@@ -228,7 +269,7 @@ contains
         if (len(name) == 0) name = load_slot_name(item%kind, slot)
     end function item_slot_name
 
-    !> Sets slot `slot` (1..6) of item `index` to a constant.
+    !> Sets slot `slot` (1..MAX_SLOTS) of item `index` to a constant.
     subroutine load_set_constant(set, index, slot, value)
         type(load_set_t), intent(inout) :: set
         integer(i4), intent(in) :: index, slot
@@ -307,7 +348,15 @@ contains
         character(len=*), intent(in), optional :: slot_name
         character(len=:), allocatable :: name
         y = value%constant
-        if (associated(value%func)) then
+        if (associated(value%evol)) then
+            call evol_value(value, t, y, st)
+            if (st%failed()) then
+                call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(kind)) // &
+                    ' (EVOL_IMPO): ' &
+                    // st%message)
+                return
+            end if
+        else if (associated(value%func)) then
             call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
             if (st%failed()) then
                 call set_error(st, STATUS_MODEL_ERROR, LOAD_KIND_NAMES(kind) // ': ' // &
@@ -330,6 +379,90 @@ contains
                 // to_text(t) // ' is too large: the forces formed from it would overflow')
         end if
     end subroutine load_value_at
+
+    !> EVOL_IMPO's value at INST t: DEPL of the result at the stored instant equal to t
+    !> (within 1e-10 relative), else linear between the stored instants around t (Code_Aster
+    !> interpolates the result in time the same way); t outside them is an error.
+    subroutine evol_value(value, t, y, st)
+        type(load_value_t), intent(in) :: value
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, lo, hi
+        real(dp) :: tol, w, y_lo, y_hi
+        y = 0.0_dp
+        associate (r => value%evol)
+            if (r%n_stored == 0) then
+                call set_error(st, STATUS_MODEL_ERROR, 'the result stores no instant')
+                return
+            end if
+            tol = 1.0e-10_dp * max(1.0_dp, maxval(abs(r%inst(1:r%n_stored))))
+            lo = 0
+            hi = 0
+            do k = 1, r%n_stored
+                if (abs(r%inst(k) - t) <= tol) then
+                    lo = k
+                    hi = k
+                    exit
+                end if
+                if (r%inst(k) < t) then
+                    if (lo == 0) then
+                        lo = k
+                    else if (r%inst(k) > r%inst(lo)) then
+                        lo = k
+                    end if
+                else
+                    if (hi == 0) then
+                        hi = k
+                    else if (r%inst(k) < r%inst(hi)) then
+                        hi = k
+                    end if
+                end if
+            end do
+            if (lo == 0 .or. hi == 0) then
+                call set_error(st, STATUS_MODEL_ERROR, 'INST ' // to_text(t) // ' is outside ' &
+                    // 'the instants of ' // r%name // ' (' // &
+                    to_text(minval(r%inst(1:r%n_stored))) // ' to ' // &
+                    to_text(maxval(r%inst(1:r%n_stored))) // ')')
+                return
+            end if
+            call depl_at(lo, y_lo, st)
+            if (st%ok()) call depl_at(hi, y_hi, st)
+            if (st%failed()) return
+            w = 0.0_dp
+            if (hi /= lo) w = (t - r%inst(lo)) / (r%inst(hi) - r%inst(lo))
+            y = (1.0_dp - w) * y_lo + w * y_hi
+        end associate
+    contains
+        subroutine depl_at(at, v, st)
+            integer(i4), intent(in) :: at
+            real(dp), intent(out) :: v
+            type(status_t), intent(out) :: st
+            integer(i4) :: f, i
+            v = 0.0_dp
+            f = result_field_index(value%evol, at, 'DEPL')
+            if (f == 0) then
+                call set_error(st, STATUS_MODEL_ERROR, value%evol%name // ' has no DEPL at ' // &
+                    'INST ' // to_text(value%evol%inst(at)))
+                return
+            end if
+            associate (fd => value%evol%stored(at)%items(f)%field)
+                i = field_component(fd, trim(value%evol_cmp))
+                if (i == 0 .or. value%evol_node > fd%n_nodes) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'DEPL at INST ' // &
+                        to_text(value%evol%inst(at)) // ' has no ' // trim(value%evol_cmp))
+                    return
+                end if
+                if (.not. fd%node_has(i, value%evol_node)) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'DEPL at INST ' // &
+                        to_text(value%evol%inst(at)) // ' has no ' // trim(value%evol_cmp) // &
+                        ' at a node where another instant has it')
+                    return
+                end if
+                v = fd%node_values(i, value%evol_node)
+            end associate
+        end subroutine depl_at
+    end subroutine evol_value
 
     !> True when the set has an item of this kind.
     pure logical function load_has_kind(set, kind)

@@ -1,7 +1,8 @@
 !> The model (AFFE_MODELE): which finite element, if any, each mesh cell carries.
 !>
 !> An element kind combines the modelisation and the cell type (Code_Aster's "type
-!> element"): 'DKT' on QUAD4 is the DKQ quadrilateral, on TRIA3 the DKT triangle;
+!> element"): 'DKT' on QUAD4 is the DKQ quadrilateral, on TRIA3 the DKT triangle, on SEG2
+!> a load-carrying plate edge (Code_Aster's MEBODKT: no stiffness, FORCE_ARETE);
 !> 'D_PLAN'/'C_PLAN' on TRIA3, TRIA6, QUAD4, QUAD8, QUAD9 are plane strain/stress solids
 !> (Code_Aster's MEDPTR3 ... MECPQU9) and on SEG2, SEG3 load-carrying edges (no stiffness:
 !> FORCE_CONTOUR, PRES_REP); 'DIS_T' and '2D_DIS_T' are translational discrete springs on
@@ -25,7 +26,7 @@ module model_types
         ELEM_D_PLAN_QUAD8 = 15, ELEM_C_PLAN_QUAD8 = 16, ELEM_D_PLAN_QUAD9 = 17, &
         ELEM_C_PLAN_QUAD9 = 18, ELEM_D_PLAN_SEG3 = 19, ELEM_C_PLAN_SEG3 = 20, &
         ELEM_DIS_TR_SEG2 = 21, ELEM_DIS_TR_POI1 = 22, ELEM_2D_DIS_TR_SEG2 = 23, &
-        ELEM_2D_DIS_TR_POI1 = 24, N_ELEMENT_KINDS = 24
+        ELEM_2D_DIS_TR_POI1 = 24, ELEM_DKT_SEG2 = 25, N_ELEMENT_KINDS = 25
     !> Names of the element kinds (for the .mess model summary).
     character(len=14), parameter, public :: ELEMENT_NAMES(0:N_ELEMENT_KINDS) = [ &
         'NONE          ', 'DKQ           ', 'DKT           ', 'D_PLAN_QUAD4  ', &
@@ -34,7 +35,7 @@ module model_types
         'C_PLAN_TRIA3  ', 'D_PLAN_TRIA6  ', 'C_PLAN_TRIA6  ', 'D_PLAN_QUAD8  ', &
         'C_PLAN_QUAD8  ', 'D_PLAN_QUAD9  ', 'C_PLAN_QUAD9  ', 'D_PLAN_SEG3   ', &
         'C_PLAN_SEG3   ', 'DIS_TR_SEG2   ', 'DIS_TR_POI1   ', '2D_DIS_TR_SEG2', &
-        '2D_DIS_TR_POI1']
+        '2D_DIS_TR_POI1', 'DKT_SEG2      ']
     !> Modelisations accepted by AFFE_MODELE.
     character(len=9), parameter, public :: MODELISATIONS(7) = ['DKT      ', 'D_PLAN   ', &
         'C_PLAN   ', 'DIS_T    ', '2D_DIS_T ', 'DIS_TR   ', '2D_DIS_TR']
@@ -54,7 +55,7 @@ module model_types
     end type model_t
 
     public :: model_init, assign_modelisation, element_for, is_plate, is_plane_solid, &
-        is_plane_edge, is_plane_strain, is_discrete, is_discrete_2d, is_discrete_rotational, &
+        is_plane_edge, is_plate_edge, is_load_edge, is_plane_strain, is_discrete, is_discrete_2d, is_discrete_rotational, &
         n_modelled_cells
 
 contains
@@ -77,6 +78,7 @@ contains
         case ('DKT')
             if (cell_type == CELL_QUAD4) kind = ELEM_DKQ
             if (cell_type == CELL_TRIA3) kind = ELEM_DKT
+            if (cell_type == CELL_SEG2) kind = ELEM_DKT_SEG2
         case ('D_PLAN')
             if (cell_type >= 1 .and. cell_type <= N_CELL_TYPES) kind = D_PLAN_KINDS(cell_type)
         case ('C_PLAN')
@@ -180,6 +182,18 @@ contains
         is_plane_edge = kind == ELEM_D_PLAN_SEG2 .or. kind == ELEM_C_PLAN_SEG2 .or. &
             kind == ELEM_D_PLAN_SEG3 .or. kind == ELEM_C_PLAN_SEG3
     end function is_plane_edge
+
+    !> DKT edges (SEG2 of a DKT model, MEBODKT).
+    elemental logical function is_plate_edge(kind)
+        integer(i4), intent(in) :: kind
+        is_plate_edge = kind == ELEM_DKT_SEG2
+    end function is_plate_edge
+
+    !> Edges that carry loads only (no stiffness): plane edges and plate edges.
+    elemental logical function is_load_edge(kind)
+        integer(i4), intent(in) :: kind
+        is_load_edge = is_plane_edge(kind) .or. is_plate_edge(kind)
+    end function is_load_edge
 
     !> D_PLAN kinds (plane strain), solids and edges.
     elemental logical function is_plane_strain(kind)

@@ -210,8 +210,8 @@ contains
             'relation cannot hold it', st, code=STATUS_MODEL_ERROR)
     end subroutine need_component
 
-    !> FACE_IMPO (GROUP_MA less SANS_GROUP_MA, SANS_GROUP_NO) and ARETE_IMPO: DX .. DRZ
-    !> imposed on the face's nodes that have them (a component no node has is an error,
+    !> FACE_IMPO (GROUP_MA's nodes less those of SANS_GROUP_MA's cells and SANS_GROUP_NO)
+    !> and ARETE_IMPO: DX .. DRZ imposed on the face's nodes that have them (a component no node has is an error,
     !> Code_Aster CHARGES2_45); DNOR (u . n), DTAN (2D face or 3D edge: u . t) and DRNOR
     !> (3D: theta . n) as one relation per node, n and t the face's mean normal and tangent
     !> there (model_relations node_directions, Code_Aster cafaci, canort).
@@ -222,7 +222,7 @@ contains
         logical, intent(in) :: functions, edge
         type(load_set_t), intent(inout) :: loads
         type(status_t), intent(out) :: st
-        integer(i4), allocatable :: cells(:), nodes(:), kept(:)
+        integer(i4), allocatable :: cells(:), nodes(:)
         character(len=:), allocatable :: label
         character(len=3), parameter :: DOFS(6) = ['DX ', 'DY ', 'DZ ', 'DRX', 'DRY', 'DRZ']
         integer(i4) :: k, index
@@ -232,15 +232,12 @@ contains
                 trim(merge('edge', 'face', edge)) // ')', st, code=STATUS_MODEL_ERROR)
             return
         end if
+        ! the normals from GROUP_MA less SANS_GROUP_MA's cells (Code_Aster getelem), the
+        ! nodes GROUP_MA's less those of SANS_GROUP_MA's cells and SANS_GROUP_NO (getnode)
         call face_cells(occ, 'GROUP_MA', mc%mesh, cells, st)
         if (st%failed()) return
-        call first_name(occ, 'GROUP_MA', label)
-        nodes = nodes_of_cells(mc%mesh, cells)
-        if (occ%has('SANS_GROUP_NO')) then
-            call node_list(occ, 'SANS_GROUP_NO', mc%mesh, kept, st)
-            if (st%failed()) return
-            nodes = pack(nodes, [(.not. any(kept == nodes(k)), k = 1, size(nodes))])
-        end if
+        call select_nodes(occ, mc, nodes, label, st)
+        if (st%failed()) return
         any_value = .false.
         do k = 1, 6
             if (occ%has(trim(DOFS(k)))) any_value = .true.

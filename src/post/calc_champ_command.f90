@@ -15,7 +15,7 @@
 !> stresses/strains point by point. A field an option needs is taken as the result stores
 !> it (a POST_CHAMP layer), else computed on the way (and not stored).
 module calc_champ_command
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, &
         STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text
@@ -73,6 +73,7 @@ contains
         type(string_t), allocatable :: options(:)
         integer(i4), allocatable :: indices(:)
         integer(i4) :: k, i
+        integer(i8) :: start, finish, rate
         call cmd%get_concept('RESULTAT', p, st)
         if (st%failed()) return
         select type (p)
@@ -87,6 +88,7 @@ contains
             call cmd%error_at('RESULTAT', 'expected a result, got ' // p%type_name(), st)
             return
         end select
+        call system_clock(start)
         job%linear = job%res%type_name() /= 'evol_noli'
         call read_options(cmd, job, options, st)
         if (st%ok()) call read_instants(cmd, job%res, indices, st)
@@ -103,10 +105,21 @@ contains
                 end if
             end do
         end do
+        call system_clock(finish, rate)
         call ctx%write_mess('    CALC_CHAMP: ' // join(options) // ' at ' // &
-            to_text(size(indices)) // ' instant(s)')
+            to_text(size(indices)) // ' instant(s), ' // seconds(finish - start, rate) // ' s')
         if (allocated(copy)) call move_alloc(copy, result)
     end subroutine run_calc_champ
+
+    ! Elapsed clock ticks as seconds with 3 decimals (for the .mess).
+    function seconds(ticks, rate) result(text)
+        integer(i8), intent(in) :: ticks, rate
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        write (buf, '(f0.3)') real(ticks, dp) / real(max(rate, 1_i8), dp)
+        text = trim(buf)
+        if (text(1:1) == '.') text = '0' // text
+    end function seconds
 
     !> The options of CONTRAINTE, DEFORMATION, ENERGIE, CRITERES, FORCE, VARI_INTERNE in the
     !> order given; each must be built, and for the result's kind.

@@ -249,6 +249,18 @@ contains
         call load_plugin(self, st)
         if (st%failed()) return
         if (c_associated(self%handle)) call self%c_destroy(self%handle)
+        self%handle = c_null_ptr
+        ! no equation (every one imposed or a slave: zzzz219a): nothing for MUMPS, which
+        ! refuses N = 0 (INFOG(1) = -16); the factor and the solves are empty
+        if (a%n == 0) then
+            self%n = 0
+            self%factor_entries = 0
+            self%factor_terms = 0
+            self%factor_flops = 0.0_dp
+            self%analysed = .true.
+            self%factored = .false.
+            return
+        end if
         self%handle = self%c_create(ordering_code(trim(self%options%renum)))
         if (.not. c_associated(self%handle)) then
             call set_error(st, STATUS_INTERNAL, 'MUMPS: the instance could not start')
@@ -287,6 +299,10 @@ contains
         if (.not. self%analysed .or. a%n /= self%n) then
             call set_error(st, STATUS_INTERNAL, 'MUMPS: factor before analyse, or another ' &
                 // 'pattern')
+            return
+        end if
+        if (a%n == 0) then
+            self%factored = .true.
             return
         end if
         call system_clock(t0, rate)

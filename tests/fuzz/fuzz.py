@@ -242,19 +242,46 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
                                        "case.mail": os.path.join(verif, "patch_plan.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
-    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH).
+    # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
+    seeds.append(Seed("ideas_mesh",
+                      {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
+                       "case.unv": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.unv")},
+                      ["--unit", "19=case.unv"], dict(comm_targets, **{"case.unv": "mail"}),
+                      0.5))
+    # CALC_ERREUR's Zhu-Zienkiewicz estimators on the plane patch.
+    seeds.append(Seed("fields_error", {"case.comm": os.path.join(fields, "calc_erreur.comm"),
+                                       "case.mail": os.path.join(verif, "patch_plan.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+    # PROJ_CHAMP between two meshes (collocation, VIS_A_VIS, DISTANCE_MAX, MATR_PROJECTION)
+    # and CHAMNO_IMPO of the projected field.
+    seeds.append(Seed("fields_projection",
+                      {"case.comm": os.path.join(fields, "proj_champ.comm"),
+                       "case.mail": os.path.join(verif, "patch_plan.mail"),
+                       "target.mail": os.path.join(fields, "proj_target.mail")},
+                      ["--unit", "20=case.mail", "--unit", "21=target.mail"],
+                      dict(comm_targets, **{"case.mail": "mail", "target.mail": "mail"}), 0.5))
+    # IMPR_RESU of every kind of field in every format (RESULTAT, MED, VTK, GMSH), and the
+    # MED files read back by LIRE_CHAMP (units 80, 81 written and read by the deck itself).
     seeds.append(Seed("fields_output", {"case.comm": os.path.join(SOURCE, "tests", "output",
                                                                   "field_output.comm"),
                                         "case.mail": os.path.join(verif, "patch_dkq.mail")},
-                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.6))
+                      ["--unit", "20=case.mail", "--unit", "80=all.rmed", "--unit",
+                       "81=cham.rmed", "--unit", "82=mesh.rmed"],
+                      dict(comm_targets, **{"case.mail": "mail"}), 0.6))
     # Materials as data (every DEFI_MATERIAU behaviour, ELAS three ways).
     seeds.append(Seed("materials", {"case.comm": os.path.join(verif, "materials_as_data.comm"),
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
-    # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE.
+    # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE,
+    # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE);
+    # the loads' resultants (PESANTEUR, FORCE_ARETE, FORCE_COQUE, FORCE_INTERNE, PRES_REP).
     for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
                        ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
-                       ("ssnl130a_solide", meshes[("a", "aster")])):
+                       ("ssnl130a_solide", meshes[("a", "aster")]),
+                       ("plate_load_resultants", os.path.join(verif, "loaded_plate.mail")),
+                       ("plane_load_resultants", os.path.join(verif, "loaded_block.mail")),
+                       ("glued_plan", os.path.join(verif, "glued_plan.mail")),
+                       ("glued_plate", os.path.join(verif, "glued_plate.mail"))):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": mesh}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
@@ -269,6 +296,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     # Session commands: DEBUT's keywords, DEFI_FICHIER's units, DETRUIRE, CO.
     seeds.append(Seed("session", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
                                                             "session_commands.comm")},
+                      [], comm_targets, 0.5))
+    # User macros: MACRO, SIMP, FACT, rules and UserMacro, calls validated then run.
+    seeds.append(Seed("user_macro", {"case.comm": os.path.join(SOURCE, "tests", "decks", "good",
+                                                               "user_macro.comm")},
                       [], comm_targets, 0.5))
     # DEFI_LIST_INST and the cutting of a failed step.
     seeds.append(Seed("list_inst", {"case.comm": os.path.join(verif, "list_inst_cutting.comm"),

@@ -8,6 +8,8 @@ patch of tests/verification under a uniform moment, two layers, so every value i
    (Code_Aster's names, the FPG4 points and weights in Code_Aster's order, the sub-points
    as points), ELGA and ELNO values equal to the .resu tables to 1e-12, ELNO without
    sub-points on MED_NODE_ELEMENT; the CHAM_GD (one step -1, -1); the mesh alone;
+ - LIRE_CHAMP: the deck reads the ELGA, ELNO and CHAM_GD fields back and tests them
+   (TEST_RESU); a field the file lacks is a located error naming those it has;
  - VTK (meshio): the cell data of an ELNO field with sub-points (the top face's stress on
    every cell) and the node field; Gmsh (gmsh22.py): the $ElementData of EFGE_ELNO MXX.
 Usage: check_field_output.py PARASOL SOURCE_DIR WORKDIR"""
@@ -183,6 +185,19 @@ for name in units.values():
     if name == "all.rmed":
         check("MED_NOEUD_MAILLE de type geometrique MED_QUAD4" in text and
               "|RES_____SIGM_ELNO|" in text, "mdump: the ELNO fields")
+
+# ---- LIRE_CHAMP of a field the file does not have: a located error listing what it has
+bad_deck = os.path.join(work, "bad_read.comm")
+open(bad_deck, "w").write("DEBUT()\nm = LIRE_MAILLAGE(FORMAT='ASTER')\n"
+                          "f = LIRE_CHAMP(MAILLAGE=m, UNITE=80, NOM_MED='RES_____NOPE',\n"
+                          "               TYPE_CHAM='NOEU_DEPL_R', NOM_CMP_IDEM='OUI')\nFIN()\n")
+bad = subprocess.run([parasol, "--outdir", work, "--unit", "20=" + mail, "--unit",
+                      "80=" + os.path.join(work, "all.rmed"), bad_deck], capture_output=True,
+                     text=True, timeout=60)
+check(bad.returncode == 1 and "bad_read.comm:3:" in bad.stderr and
+      "LIRE_CHAMP/NOM_MED: the file has no field RES_____NOPE (it has RES_____DEPL" in bad.stderr
+      and "Fortran runtime" not in bad.stderr, "LIRE_CHAMP of a missing field: exit %d %s" % (
+          bad.returncode, bad.stderr))
 
 # ---- viewers
 vtu = meshio.read(os.path.join(work, "field_output_RES_0001.vtu"))

@@ -26,10 +26,25 @@ Meshes (node names N1.., cell names M1.., in the order written):
                    node), MDROITE (the middle of DROITE), COIN_A (0,0), COIN_B (2,0).
   list_inst_cutting.mail three 2D nodes N0 (0,0) N1 (1,0) N2 (2,0), SEG2 LIN (N0 N1) in
                    GLIN and CHOC (N1 N2) in GCHOC; GROUP_NO SOL (N0 N2), NOEUD (N1).
+  loaded_plate.mail 3D plate [0,2] x [0,1] in z = 0, 4 x 2 cells: QUAD4 on x < 1, TRIA3
+                   (each square cut along n1-n3) on x > 1, GROUP_MA PLAQUE; its edges
+                   as SEG2: HAUT (y = 1, running from x = 2 to 0), DROITE (x = 2, from
+                   y = 0 to 1); GROUP_NO A (0,0), B (2,0), C (1,1) (an isostatic support).
+  loaded_block.mail 2D block [0,2] x [0,1] in quadratic cells: QUAD8 on x < 1, two TRIA6
+                   on x > 1 (GROUP_MA BLOC); SEG3 sides HAUT (y = 1, from x = 2 to 0:
+                   counter-clockwise, outward normal +y) and DROITE (x = 2, from y = 0 to
+                   1); GROUP_NO A (0,0), B (2,0).
   cantilever_NXxNY.mail plane-strain cantilever L = 10 x h = 1 (2D), NX x NY QUAD4
                    (20x2, 40x4, 80x8, 160x16): GROUP_MA POUTRE (QUAD4), EXTREM (the NY
                    SEG2 of the tip edge x = L); GROUP_NO ENCAST (x = 0), PTIP (L, h/2),
                    PTIP_B (L, 0).
+  glued_plan.mail  2D blocks meeting on x = 1 with non-matching nodes (LIAISON_MAIL):
+                   GAUCHE [0,1]^2 in 2 x 2 QUAD4 (inside node at (9/20, 11/20)), DROITE
+                   [1,2] x [0,1] in 3 x 4 rectangles cut into TRIA3; SEG2 BORD_D (x = 2),
+                   INTERF (DROITE's side on x = 1); GROUP_NO X0 (x = 0), A (0,0), B (2,0),
+                   ESCL (DROITE's nodes on x = 1), ESCL_BAS (its lower two), S1 S2 S3
+                   (1, 1/4 .. 3/4), M1 (the inside node), M2 (1, 1/2), C (2,1), D (4/3, 1/2).
+  glued_plate.mail the same in 3D (z = 0) for plates.
 
 usage: make_meshes.py [--outdir DIR] [--check]
 """
@@ -158,6 +173,100 @@ def cantilever(nx, ny, length=CANTILEVER_L, h=CANTILEVER_H):
     return mesh
 
 
+def loaded_plate():
+    mesh = Mesh(3, "Plate [0,2] x [0,1], QUAD4 and TRIA3, with its edges (load resultants)")
+    grid = [[mesh.node(Fraction(i, 2), Fraction(j, 2), 0) for i in range(5)]
+            for j in range(3)]
+    for j in range(2):
+        for i in range(4):
+            n1, n2, n3, n4 = grid[j][i], grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]
+            if i < 2:
+                mesh.cell("QUAD4", (n1, n2, n3, n4), "PLAQUE")
+            else:
+                mesh.cell("TRIA3", (n1, n2, n3), "PLAQUE")
+                mesh.cell("TRIA3", (n1, n3, n4), "PLAQUE")
+    for i in range(4, 0, -1):
+        mesh.cell("SEG2", (grid[2][i], grid[2][i - 1]), "HAUT")
+    for j in range(2):
+        mesh.cell("SEG2", (grid[j][4], grid[j + 1][4]), "DROITE")
+    mesh.node_groups = {"A": [grid[0][0]], "B": [grid[0][4]], "C": [grid[2][2]]}
+    return mesh
+
+
+def loaded_block():
+    mesh = Mesh(2, "Block [0,2] x [0,1] in QUAD8 and TRIA6, SEG3 sides (load resultants)")
+    node = {}
+
+    def at(x, y):
+        key = (Fraction(x), Fraction(y))
+        if key not in node:
+            node[key] = mesh.node(*key)
+        return node[key]
+
+    def mid(a, b):
+        return at((Fraction(a[0]) + Fraction(b[0])) / 2, (Fraction(a[1]) + Fraction(b[1])) / 2)
+
+    def quadratic(ctype, corners, group):
+        ends = [at(*c) for c in corners]
+        k = len(corners)
+        mids = [mid(corners[i], corners[(i + 1) % k]) for i in range(k if k > 2 else 1)]
+        mesh.cell(ctype, ends + mids, group)
+    quadratic("QUAD8", [(0, 0), (1, 0), (1, 1), (0, 1)], "BLOC")
+    quadratic("TRIA6", [(1, 0), (2, 0), (2, 1)], "BLOC")
+    quadratic("TRIA6", [(1, 0), (2, 1), (1, 1)], "BLOC")
+    quadratic("SEG3", [(2, 1), (1, 1)], "HAUT")
+    quadratic("SEG3", [(1, 1), (0, 1)], "HAUT")
+    quadratic("SEG3", [(2, 0), (2, 1)], "DROITE")
+    mesh.node_groups = {"A": [at(0, 0)], "B": [at(2, 0)]}
+    return mesh
+
+
+def glued_blocks(dim):
+    """Two blocks glued by LIAISON_MAIL across x = 1 with non-matching nodes: GAUCHE
+    [0,1]^2 in 2 x 2 QUAD4 (its inside node moved off the grid so the quadrangles are
+    general), DROITE [1,2] x [0,1] in 3 x 4 rectangles cut into TRIA3. ESCL: DROITE's
+    nodes on x = 1 (y = 0, 1/4, 1/2, 3/4, 1: two of them inside GAUCHE's edges, three
+    beside its nodes: GAUCHE's nodes on the side are slave nodes' places, so that the
+    tie transmits a uniform stress exactly), INTERF its SEG2 there, BORD_D the SEG2 of
+    x = 2."""
+    title = ("Blocks [0,1]^2 (QUAD4) and [1,2] x [0,1] (TRIA3) meeting on x = 1 with "
+             "non-matching nodes (LIAISON_MAIL)")
+    mesh = Mesh(dim, title)
+
+    def node(x, y):
+        return mesh.node(x, y, 0) if dim == 3 else mesh.node(x, y)
+    left = {}
+    for j in range(3):
+        for i in range(3):
+            xy = (Fraction(i, 2), Fraction(j, 2))
+            if (i, j) == (1, 1):
+                xy = (Fraction(9, 20), Fraction(11, 20))
+            left[i, j] = node(*xy)
+    for j in range(2):
+        for i in range(2):
+            mesh.cell("QUAD4", (left[i, j], left[i + 1, j], left[i + 1, j + 1],
+                                left[i, j + 1]), "GAUCHE")
+    right = {(i, j): node(1 + Fraction(i, 3), Fraction(j, 4))
+             for j in range(5) for i in range(4)}
+    for j in range(4):
+        for i in range(3):
+            n1, n2 = right[i, j], right[i + 1, j]
+            n3, n4 = right[i + 1, j + 1], right[i, j + 1]
+            mesh.cell("TRIA3", (n1, n2, n3), "DROITE")
+            mesh.cell("TRIA3", (n1, n3, n4), "DROITE")
+    for j in range(4):
+        mesh.cell("SEG2", (right[3, j], right[3, j + 1]), "BORD_D")
+    for j in range(4, 0, -1):
+        mesh.cell("SEG2", (right[0, j], right[0, j - 1]), "INTERF")
+    mesh.node_groups = {"X0": [left[0, j] for j in range(3)], "A": [left[0, 0]],
+                        "B": [right[3, 0]], "ESCL": [right[0, j] for j in range(5)],
+                        "ESCL_BAS": [right[0, 0], right[0, 1]],
+                        "S1": [right[0, 1]], "S2": [right[0, 2]], "S3": [right[0, 3]],
+                        "M1": [left[1, 1]], "M2": [left[2, 1]], "C": [right[3, 4]],
+                        "D": [right[1, 2]]}
+    return mesh
+
+
 def number(x):
     return repr(float(x))
 
@@ -202,6 +311,10 @@ def all_meshes():
         meshes[f"cantilever_{nx}x{ny}.mail"] = cantilever(nx, ny)
     meshes["slanted_block.mail"] = slanted_block()
     meshes["list_inst_cutting.mail"] = pulled_node()
+    meshes["loaded_plate.mail"] = loaded_plate()
+    meshes["loaded_block.mail"] = loaded_block()
+    meshes["glued_plan.mail"] = glued_blocks(2)
+    meshes["glued_plate.mail"] = glued_blocks(3)
     return {name: to_aster(mesh) for name, mesh in meshes.items()}
 
 
