@@ -33,7 +33,8 @@ module analysis_commands
     use contact_newton, only: stat_non_line, newton_options_t, excitation_t, &
         newton_summary_t, solver_diagnostics_line
     use linear_static, only: meca_statique
-    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION, result_set_structure
+    use analysis_result, only: result_concept_t, RESULT_INST_PRECISION, result_set_structure, &
+        result_continue, result_find
     use analysis_log, only: analysis_log_t, log_stream, log_flush
     implicit none
     private
@@ -65,10 +66,21 @@ contains
         type(newton_summary_t) :: summary
         type(step_cutting_t) :: cutting
         real(dp), allocatable :: times(:)
+        type(result_concept_t), pointer :: earlier
+        integer(i4) :: k_init
+        type(keyword_set_t) :: occ
+        character(len=:), allocatable :: message
         call gather_structure(cmd, s, st)
         if (st%ok()) call gather_excitations(cmd, s, excit, st)
         if (st%ok()) call read_behaviour(cmd, s, st)
-        if (st%ok()) call read_increment(cmd, times, cutting, st)
+        if (st%ok()) call read_initial_state(cmd, s, earlier, k_init, st)
+        if (st%ok()) then
+            if (associated(earlier)) then
+                call read_increment(cmd, times, cutting, st, earlier%inst(k_init))
+            else
+                call read_increment(cmd, times, cutting, st)
+            end if
+        end if
         if (st%ok()) call read_newton(ctx, cmd, options, st)
         if (st%failed()) return
         options%cutting = cutting
@@ -84,9 +96,26 @@ contains
             // to_text(size(times) - 1) // ' step(s) from INST ' // real_e13(times(1)))
         allocate (res)
         call log_stream(log, ctx%mess, '    ')   ! the .mess grows step by step
-        call stat_non_line(s, excit, times, options, res, log, summary, st)
+        if (associated(earlier)) then
+            call ctx%write_mess('    initial state: ' // earlier%type_name() // ' NUME_ORDRE ' &
+                // to_text(earlier%nume_ordre(k_init)) // ' at INST ' // &
+                real_e13(earlier%inst(k_init)))
+            call stat_non_line(s, excit, times, options, res, log, summary, st, &
+                earlier%depl(:, k_init))
+        else
+            call stat_non_line(s, excit, times, options, res, log, summary, st)
+        end if
         call log_flush(log)
         if (st%failed()) return
+        if (associated(cmd%reuse)) then   ! reuse: earlier is cmd%reuse, changed in place
+            call result_continue(earlier, k_init, res, st)
+            if (st%failed()) then
+                occ = cmd%occurrence('ETAT_INIT', 1)
+                message = st%message
+                call occ%error_at('EVOL_NOLI', message, st)
+            end if
+            return                        ! no result: the name stays bound to cmd%reuse
+        end if
         call ctx%write_mess('    STAT_NON_LINE: ' // to_text(sum(summary%iterations)) // &
             ' iteration(s), ' // to_text(sum(summary%factorizations)) // &
             ' factorization(s) in ' // to_text(summary%n_steps) // ' step(s)')
@@ -381,6 +410,93 @@ contains
         end do
     end subroutine read_behaviour
 
+    !> ETAT_INIT (Code_Aster's U4.51.03): the stored instant of an EVOL_NOLI made by
+    !> STAT_NON_LINE on the same equations, NUME_ORDRE or INST (PRECISION, CRITERE), by
+    !> default its last. The fields DEPL, SIGM, VARI are refused at their keyword (parasol
+    !> has no field concept to start from). reuse= must name the ETAT_INIT result
+    !> (Code_Aster's reentrant='f:ETAT_INIT/EVOL_NOLI'), which the new instants continue.
+    !>  earlier : out, the result (null without ETAT_INIT); k : its stored instant
+    subroutine read_initial_state(cmd, s, earlier, k, st)
+        type(command_t), intent(in) :: cmd
+        type(structure_t), intent(in) :: s
+        type(result_concept_t), pointer, intent(out) :: earlier
+        integer(i4), intent(out) :: k
+        type(status_t), intent(out) :: st
+        type(keyword_set_t) :: occ
+        class(concept_t), pointer :: p
+        character(len=:), allocatable :: criterion
+        real(dp) :: inst, precision
+        integer(i4) :: order
+        character(len=*), parameter :: FIELDS(3) = ['DEPL', 'SIGM', 'VARI']
+        integer :: i
+        earlier => null()
+        k = 0
+        call clear_status(st)
+        if (cmd%count('ETAT_INIT') == 0) then
+            if (associated(cmd%reuse)) call cmd%error_at('reuse', 'STAT_NON_LINE continues ' &
+                // 'the result it reuses from its state: give it as ETAT_INIT=_F(EVOL_NOLI=' &
+                // '...), or leave reuse out for a new result', st)
+            return
+        end if
+        occ = cmd%occurrence('ETAT_INIT', 1)
+        do i = 1, size(FIELDS)
+            if (occ%has(trim(FIELDS(i)))) then
+                call occ%error_at(trim(FIELDS(i)), 'an initial state from a field is not ' // &
+                    'built in parasol: give the result it comes from as EVOL_NOLI', st, &
+                    code=STATUS_NOT_IMPLEMENTED)
+                return
+            end if
+        end do
+        call occ%get_concept('EVOL_NOLI', p, st)
+        if (st%failed()) return
+        select type (p)
+        type is (result_concept_t)
+            earlier => p
+        end select
+        if (.not. associated(earlier)) then
+            call occ%error_at('EVOL_NOLI', 'expected a result of STAT_NON_LINE (its ' // &
+                'displacements at an instant), got ' // p%type_name(), st)
+            return
+        end if
+        if (associated(cmd%reuse)) then
+            if (.not. associated(cmd%reuse, p)) then
+                call cmd%error_at('reuse', 'reuse names another result than ' // &
+                    'ETAT_INIT/EVOL_NOLI: STAT_NON_LINE continues the result it starts ' // &
+                    'from (write reuse= the EVOL_NOLI result, or leave reuse out)', st)
+                earlier => null()
+                return
+            end if
+        end if
+        if (.not. earlier%has_state .or. earlier%n_stored < 1) then
+            call occ%error_at('EVOL_NOLI', 'the result holds no displacements to start from', st)
+        else if (earlier%dofs%n_equations /= s%dofs%n_equations) then
+            call occ%error_at('EVOL_NOLI', 'the result is on ' // &
+                to_text(earlier%dofs%n_equations) // ' equations, this analysis on ' // &
+                to_text(s%dofs%n_equations) // ': ETAT_INIT must come from the same model', st)
+        else if (occ%has('NUME_ORDRE')) then
+            call occ%get_int('NUME_ORDRE', order, st)
+            if (st%ok()) call result_find(earlier, k, st, nume_ordre=order)
+            if (st%failed()) call relocate('NUME_ORDRE')
+        else if (occ%has('INST')) then
+            call occ%get_real('INST', inst, st)
+            if (st%ok()) call occ%get_real('PRECISION', precision, st)
+            if (st%ok()) call occ%get_text('CRITERE', criterion, st)
+            if (st%ok()) call result_find(earlier, k, st, inst=inst, precision=precision, &
+                criterion=criterion)
+            if (st%failed()) call relocate('INST')
+        else
+            k = earlier%n_stored           ! Code_Aster: the last stored instant
+        end if
+        if (st%failed()) earlier => null()
+    contains
+        subroutine relocate(key)
+            character(len=*), intent(in) :: key
+            character(len=:), allocatable :: message
+            message = st%message
+            call occ%error_at(key, message, st)
+        end subroutine relocate
+    end subroutine read_initial_state
+
     ! DEFI_MATERIAU keeps DIS_CONTACT/COULOMB as data; a contact law on a cell whose material
     ! has friction is what parasol does not build (frictionless DIS_CHOC, DIS_CONTACT).
     subroutine refuse_friction(occ, s, cells, st)
@@ -408,15 +524,18 @@ contains
 
     !> INCREMENT: LIST_INST (a DEFI_LIST_REEL, or a DEFI_LIST_INST with what a failed step
     !> does: time_stepping) restricted to [INST_INIT, INST_FIN] (NUME_INST_INIT/FIN: indices
-    !> from 0). times(1) is the initial instant.
+    !> from 0). times(1) is the initial instant: without INST_INIT and NUME_INST_INIT, the
+    !> instant of the initial state t_state when there is one (ETAT_INIT), which must then be
+    !> an instant of the list, else the list's first.
     !>  cutting : out, the list's ECHEC policy (off for a DEFI_LIST_REEL)
     !>  st      : out, located at INCREMENT/LIST_INST: an empty selection; what the
     !>            DEFI_LIST_INST asks for that parasol does not build
-    subroutine read_increment(cmd, times, cutting, st)
+    subroutine read_increment(cmd, times, cutting, st, t_state)
         type(command_t), intent(in) :: cmd
         real(dp), allocatable, intent(out) :: times(:)
         type(step_cutting_t), intent(out) :: cutting
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: t_state
         type(keyword_set_t) :: occ
         class(concept_t), pointer :: p
         real(dp) :: t0, t1
@@ -448,6 +567,14 @@ contains
         if (occ%has('INST_INIT')) then
             call occ%get_real('INST_INIT', t0, st)
             i0 = instant_index(times, t0)
+        else if (present(t_state) .and. .not. occ%has('NUME_INST_INIT')) then
+            i0 = instant_index(times, t_state)
+            if (i0 == 0) then
+                call occ%error_at('LIST_INST', 'the instant of the initial state (ETAT_INIT), '&
+                    // real_e13(t_state) // ', is not in the list: give INST_INIT', st, &
+                    code=STATUS_MODEL_ERROR)
+                return
+            end if
         end if
         if (occ%has('INST_FIN')) then
             call occ%get_real('INST_FIN', t1, st)

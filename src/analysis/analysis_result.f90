@@ -23,7 +23,7 @@
 !> a copy, kept so that CALC_CHAMP computes on what the analysis used.
 module analysis_result
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
     use mesh_types, only: mesh_t, mesh_release
     use model_dof_numbering, only: dof_numbering_t, component_index
@@ -67,7 +67,8 @@ module analysis_result
     end type result_concept_t
 
     public :: result_init, result_reserve, result_store, result_node_value, &
-        result_store_spring_fields, result_cell_value, is_cell_field, result_set_structure
+        result_store_spring_fields, result_cell_value, is_cell_field, result_set_structure, &
+        result_continue
 
 contains
 
@@ -107,6 +108,56 @@ contains
         res%choc = choc
         res%model_name = model_name
     end subroutine result_set_structure
+
+    !> STAT_NON_LINE(reuse=R, ETAT_INIT=_F(EVOL_NOLI=R)) changes R in place: the new run
+    !> `later`, whose first instant is the state of R's stored instant k, continues R
+    !> (Code_Aster keeps the instants before the initial state and numbers the new ones
+    !> after it: later's NUME_ORDRE i becomes R's NUME_ORDRE of k plus i; R's instants after
+    !> k are dropped). The raw state and the stored fields of both are kept.
+    !>  st : STATUS_MODEL_ERROR when the two are not on the same equations and springs
+    subroutine result_continue(res, k, later, st)
+        type(result_concept_t), intent(inout) :: res
+        integer(i4), intent(in) :: k
+        type(result_concept_t), intent(in) :: later
+        type(status_t), intent(out) :: st
+        integer(i4) :: n, m, shift
+        call clear_status(st)
+        if (.not. res%has_state .or. later%dofs%n_equations /= res%dofs%n_equations &
+            .or. size(later%spring_cell) /= size(res%spring_cell)) then
+            call set_error(st, STATUS_MODEL_ERROR, 'the result of ETAT_INIT is not on the ' // &
+                'equations and springs of this analysis (' // &
+                to_text(res%dofs%n_equations) // ' equations, ' // &
+                to_text(size(res%spring_cell)) // ' springs; here ' // &
+                to_text(later%dofs%n_equations) // ', ' // to_text(size(later%spring_cell)) &
+                // ')')
+            return
+        end if
+        if (any(later%spring_cell /= res%spring_cell)) then
+            call set_error(st, STATUS_MODEL_ERROR, 'the result of ETAT_INIT has other ' // &
+                'contact springs than this analysis')
+            return
+        end if
+        m = k - 1
+        n = later%n_stored
+        shift = res%nume_ordre(k)
+        res%nume_ordre = [res%nume_ordre(1:m), later%nume_ordre(1:n) + shift]
+        res%inst = [res%inst(1:m), later%inst(1:n)]
+        res%stored = [res%stored(1:m), later%stored(1:n)]
+        res%n_stored = m + n
+        res%depl = reshape([res%depl(:, 1:m), later%depl(:, 1:n)], [size(res%depl, 1), m + n])
+        res%forc_noda = reshape([res%forc_noda(:, 1:m), later%forc_noda(:, 1:n)], &
+            [size(res%forc_noda, 1), m + n])
+        res%reac_noda = reshape([res%reac_noda(:, 1:m), later%reac_noda(:, 1:n)], &
+            [size(res%reac_noda, 1), m + n])
+        res%spring_closed = reshape([res%spring_closed(:, 1:m), &
+            later%spring_closed(:, 1:n)], [size(res%spring_closed, 1), m + n])
+        res%spring_force = reshape([res%spring_force(:, 1:m), later%spring_force(:, 1:n)], &
+            [size(res%spring_force, 1), m + n])
+        res%spring_sief = reshape([res%spring_sief(:, :, 1:m), later%spring_sief(:, :, 1:n)], &
+            [size(res%spring_sief, 1), size(res%spring_sief, 2), m + n])
+        res%spring_vari = reshape([res%spring_vari(:, :, 1:m), later%spring_vari(:, :, 1:n)], &
+            [size(res%spring_vari, 1), size(res%spring_vari, 2), m + n])
+    end subroutine result_continue
 
     !> Prepares an empty result for `capacity` instants.
     !>  res      : out, the result

@@ -110,11 +110,13 @@ contains
     !>  excit    : in, the EXCIT occurrences
     !>  times    : in, times(1) = INST_INIT, times(2:) the ends of the steps (increasing)
     !>  options  : in, NEWTON/CONVERGENCE/SOLVEUR
-    !>  res      : out, evol_noli: NUME_ORDRE 0 = zero state at INST_INIT, then each step
+    !>  res      : out, evol_noli: NUME_ORDRE 0 = the state at INST_INIT (zero, or u0),
+    !>             then each step
     !>  log      : inout, .mess lines (renumbering, Newton table per step)
     !>  summary  : out, iterations and factorizations per step
     !>  st       : out, see the module header; the result holds the converged steps
-    subroutine stat_non_line(s, excit, times, options, res, log, summary, st)
+    !>  u0       : in, optional, the initial displacements (ETAT_INIT), imposed values included
+    subroutine stat_non_line(s, excit, times, options, res, log, summary, st, u0)
         type(structure_t), intent(in) :: s
         type(excitation_t), intent(in) :: excit(:)
         real(dp), intent(in) :: times(:)
@@ -123,6 +125,7 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(newton_summary_t), intent(out) :: summary
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: u0(:)   !< (n_equations) ETAT_INIT's displacements
         type(assembly_map_t) :: map
         type(newton_state_t) :: state
         logical, allocatable :: imposed(:), rigid(:)
@@ -181,9 +184,20 @@ contains
         ! the state at u = 0: K_lin 0 = 0 exactly, so the incremental form (which builds the
         ! linear cells' cache the steps need anyway) gives internal_forces' values without
         ! rebuilding every plate stiffness (0.2 s at 64 x 256)
+        ! ETAT_INIT (Code_Aster's initial state): u = u0, so the same call with du = u0 gives
+        ! f_lin = K_lin u0 and the springs' forces and statuses at u0, which then start the
+        ! DIS_CONTACT history as the end of a converged step would
+        if (present(u0)) then
+            state%u = u0
+            state%du = u0
+        end if
         call internal_forces_incremental(s, map, state%u, state%du, state%flin, state%fint, &
             state%closed, state%fn, st, state%linear, history=state%history)
         if (st%failed()) return
+        if (present(u0)) then
+            call contact_history_update(s, map, state%u, state%fn, state%history)
+            state%du = 0.0_dp
+        end if
         call result_init(res, 'evol_noli', s%mesh, s%dofs, int(size(times), i4), map%springs)
         call result_store(res, 0_i4, times(1), state%u, state%fint, 0.0_dp * state%u, &
             state%closed, state%fn)

@@ -281,6 +281,7 @@ contains
             if (io%ok()) call open_atomic(ctx%resu, resu_path, io)
             if (io%failed()) then
                 call ctx%mess%discard()
+                call blame_outdir(io%message)
                 write (error_unit, '(a)') 'parasol: ' // format_status(io)
                 exit_status = EXIT_ERROR
                 call stop_reporter(ctx)
@@ -314,6 +315,21 @@ contains
     end subroutine run_deck
 
     !> --check found the command files valid: one line on standard output.
+    ! The listings go to the output folder: when their folder is missing or not writable,
+    ! the hint names --outdir (atomic_file names the folder alone).
+    subroutine blame_outdir(message)
+        character(len=:), allocatable, intent(inout) :: message
+        integer :: k
+        k = index(message, ' (its folder ', back=.true.)
+        if (k == 0) return
+        if (index(message(k:), ' does not exist)') > 0) then
+            message = message(1:k - 1) // ' (the output folder must exist: create it or ' // &
+                'give another --outdir)'
+        else if (index(message(k:), ' must be writable)') > 0) then
+            message = message(1:k - 1) // ' (the output folder must be writable)'
+        end if
+    end subroutine blame_outdir
+
     subroutine say_valid(ctx)
         type(run_context_t), intent(in) :: ctx
         if (ctx%ncommand_file == 1) then

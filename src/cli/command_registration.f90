@@ -92,7 +92,7 @@ contains
         call ctx%register('AFFE_CHAR_CINE', run_affe_char_cine)
         call ctx%register('AFFE_CHAR_CINE_F', run_affe_char_cine_f)
         call ctx%register('MECA_STATIQUE', run_meca_statique)
-        call ctx%register('STAT_NON_LINE', run_stat_non_line)
+        call ctx%register('STAT_NON_LINE', run_stat_non_line, reuse=.true.)
         call ctx%register('DEFI_LIST_INST', run_defi_list_inst)
         ! tables (issue 20)
         call ctx%register('CREA_TABLE', run_crea_table)

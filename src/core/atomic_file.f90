@@ -26,8 +26,8 @@ module atomic_file
     use kinds, only: i4, i8
     use status, only: status_t, set_error, STATUS_IO_ERROR
     use strings, only: to_text
-    use system_error, only: last_errno, errno_text, process_id, path_kind, PATH_FOLDER, &
-        PATH_DEVICE
+    use system_error, only: last_errno, errno_text, process_id, path_kind, folder_of, &
+        PATH_FOLDER, PATH_DEVICE
     implicit none
     private
 
@@ -101,6 +101,11 @@ module atomic_file
             integer(c_int), value :: fd
             integer(c_int) :: rc
         end function c_close
+        function c_rmdir(pathname) result(rc) bind(c, name='rmdir')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: pathname(*)
+            integer(c_int) :: rc
+        end function c_rmdir
         function c_unlink(pathname) result(rc) bind(c, name='unlink')
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: pathname(*)
@@ -175,7 +180,7 @@ contains
         if (fd < 0) then
             code = last_errno()
             call set_error(st, STATUS_IO_ERROR, 'cannot create ' // path // ': ' // &
-                errno_text(code) // folder_hint(code))
+                errno_text(code) // folder_hint(code, path))
             return
         end if
         if (.not. direct) call track_temporary(file%temp_path)
@@ -255,15 +260,18 @@ contains
         call out%commit(st)
     end subroutine copy_file
 
-    !> What to check for the usual errno values of a file creation.
-    function folder_hint(code) result(text)
+    !> What to check for the usual errno values of a file creation: the folder named (it
+    !> may be a folder of the deck's own, DEFI_FICHIER(FICHIER='sub/x.txt'), not the output
+    !> folder; cli says "--outdir" for the listings).
+    function folder_hint(code, path) result(text)
         integer, intent(in) :: code
+        character(len=*), intent(in) :: path
         character(len=:), allocatable :: text
         select case (code)
         case (ENOENT, ENOTDIR)
-            text = ' (the output folder must exist: create it or give another --outdir)'
+            text = ' (its folder ' // folder_of(path) // ' does not exist)'
         case (EACCES, EROFS)
-            text = ' (the output folder must be writable)'
+            text = ' (its folder ' // folder_of(path) // ' must be writable)'
         case default
             text = ''
         end select
@@ -445,7 +453,8 @@ contains
 
     ! ---- interrupts ----
 
-    !> Records a temporary file to remove if the process is interrupted before it is
+    !> Records a temporary file (or an empty-by-then folder of them, removed after the
+    !> files) to remove if the process is interrupted before it is
     !> published or discarded (a path longer than MAX_PATH_BYTES, or more than MAX_TRACKED
     !> at once, is not tracked: the file then stays behind after an interrupt).
     subroutine track_temporary(temp)
@@ -504,6 +513,9 @@ contains
         integer :: k
         do k = 1, MAX_TRACKED
             if (tracked(k)) rc = c_unlink(tracked_paths(1, k))
+        end do
+        do k = 1, MAX_TRACKED        ! tracked folders (med_import's), empty by now
+            if (tracked(k)) rc = c_rmdir(tracked_paths(1, k))
         end do
         previous = c_signal(sig, transfer(0_c_intptr_t, previous))           ! SIG_DFL
         rc = c_raise(sig)

@@ -49,6 +49,20 @@ module child_process
             integer(c_int), intent(out) :: sv(2)
             integer(c_int) :: rc
         end function c_socketpair
+        function c_prctl(option, arg2) result(rc) bind(c, name='prctl')
+            import :: c_int, c_long
+            integer(c_int), value :: option
+            integer(c_long), value :: arg2
+            integer(c_int) :: rc
+        end function c_prctl
+        function c_getpid_here() result(pid) bind(c, name='getpid')
+            import :: c_int
+            integer(c_int) :: pid
+        end function c_getpid_here
+        function c_getppid() result(pid) bind(c, name='getppid')
+            import :: c_int
+            integer(c_int) :: pid
+        end function c_getppid
         function c_fork() result(pid) bind(c, name='fork')
             import :: c_int
             integer(c_int) :: pid
@@ -108,7 +122,8 @@ contains
         logical, intent(out) :: in_child
         character(len=*), intent(in) :: what
         type(status_t), intent(out) :: st
-        integer(c_int) :: sv(2), pid, rc, null
+        integer(c_int) :: sv(2), pid, rc, null, parent
+        integer(c_int), parameter :: PR_SET_PDEATHSIG = 1
         integer :: k, code
         integer(c_int), parameter :: O_WRONLY = 1, STDERR = 2
         in_child = .false.
@@ -118,6 +133,7 @@ contains
                 ': ' // errno_text(code))
             return
         end if
+        parent = c_getpid_here()
         pid = c_fork()
         if (pid < 0) then
             code = last_errno()
@@ -129,6 +145,11 @@ contains
         end if
         if (pid == 0) then
             in_child = .true.
+            ! The child ends with parasol (SIGKILL when its parent dies, Linux prctl(2)
+            ! PR_SET_PDEATHSIG): a library call that never returns (MEDimport looping on a
+            ! damaged file) never outlives a run that was stopped.
+            rc = c_prctl(PR_SET_PDEATHSIG, 9_c_long)
+            if (c_getppid() /= parent) call c_exit_now(1_c_int)
             rc = c_close(sv(1))
             do k = 1, MAX_CHILDREN
                 if (child_fds(k) >= 0) rc = c_close(child_fds(k))
@@ -294,6 +315,7 @@ contains
         case (9); name = 'SIGKILL'
         case (11); name = 'SIGSEGV'
         case (13); name = 'SIGPIPE'
+        case (14); name = 'SIGALRM'
         case (15); name = 'SIGTERM'
         case (24); name = 'SIGXCPU'
         case (25); name = 'SIGXFSZ'

@@ -7,7 +7,7 @@ module system_error
     implicit none
     private
     public :: last_errno, clear_errno, errno_text, process_id, readable_errno, c_text, path_kind, &
-        folder_of, canonical_path
+        folder_of, canonical_path, make_folder
 
     !> What a path names (path_kind).
     integer, parameter, public :: PATH_MISSING = 0   !< nothing (or it cannot be looked at)
@@ -54,6 +54,12 @@ module system_error
             integer(c_int16_t), intent(out) :: buf(*)
             integer(c_int) :: rc
         end function c_statx
+        function c_mkdir(path, mode) result(rc) bind(c, name='mkdir')
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int), value :: mode
+            integer(c_int) :: rc
+        end function c_mkdir
         function c_realpath(path, resolved) result(p) bind(c, name='realpath')
             import :: c_char, c_ptr
             character(kind=c_char), intent(in) :: path(*)
@@ -191,6 +197,19 @@ contains
         canonical = c_text(p) // '/' // path(index(path, '/', back=.true.) + 1:)
         call c_free(p)
     end function canonical_path
+
+    !> Makes folder `path` (mode 0777 less the umask) unless it exists; returns 0 or the
+    !> errno of mkdir(2) (EEXIST for an existing folder counts as success).
+    integer function make_folder(path) result(code)
+        use, intrinsic :: iso_c_binding, only: c_null_char
+        character(len=*), intent(in) :: path
+        integer, parameter :: EEXIST = 17
+        code = 0
+        if (c_mkdir(path // c_null_char, int(o'777', c_int)) == 0) return
+        code = last_errno()
+        if (code /= EEXIST) return
+        if (path_kind(path) == PATH_FOLDER) code = 0
+    end function make_folder
 
     !> The process identifier (getpid), e.g. to make temporary names unique per process.
     integer function process_id()

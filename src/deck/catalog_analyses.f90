@@ -3,7 +3,7 @@
 !> cardinality, defaults mirroring Code_Aster's, allowed values and rules, as data.
 module catalog_analyses
     use kinds, only: dp
-    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS
+    use deck_catalog, only: catalog_t, MANY, RULE_EXCLUS, RULE_AU_MOINS_UN
     use number_limits, only: MAX_INSTANT
     use catalog_common, only: OUI_NON
     implicit none
@@ -30,7 +30,9 @@ contains
         call c%key('OPTION', 'TXM', noop=.true.)
         call c%key('TITRE', 'TXM', max=MANY, noop=.true.)
 
-        call c%command('STAT_NON_LINE', 'evol_noli', reentrant='f:RESULTAT')
+        ! reentrant 'f' (Code_Aster: 'f:ETAT_INIT/EVOL_NOLI'): the reused result must be the
+        ! ETAT_INIT one, checked by the handler (run_stat_non_line), the new instants appended
+        call c%command('STAT_NON_LINE', 'evol_noli', reentrant='f')
         call c%key('MODELE', 'modele', req=.true.)
         call c%key('CHAM_MATER', 'cham_mater', req=.true.)
         call c%key('CARA_ELEM', 'cara_elem')
@@ -38,6 +40,24 @@ contains
         call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
         call c%key('FONC_MULT', 'FUNC')
         call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
+        call c%end_fact()
+        ! Code_Aster's ETAT_INIT (stat_non_line.py): a state of an EVOL_NOLI (NUME_ORDRE or
+        ! INST, default its last) or fields DEPL, SIGM, VARI (refused by the handler: parasol
+        ! has no field concept to start from yet)
+        call c%fact('ETAT_INIT')
+        call c%key('EVOL_NOLI', 'evol_noli')
+        call c%key('DEPL', 'cham_no_sdaster')
+        call c%key('SIGM', 'cham_no_sdaster')
+        call c%key('VARI', 'cham_no_sdaster')
+        call c%key('NUME_ORDRE', 'I', vmin=0.0_dp)
+        call c%key('INST', 'R', vmin=-MAX_INSTANT, vmax=MAX_INSTANT)
+        call c%key('CRITERE', 'TXM', def='RELATIF', into='RELATIF ABSOLU')
+        call c%key('PRECISION', 'R', def='1.0E-6', vmin=0.0_dp)
+        call c%rule(RULE_EXCLUS, 'NUME_ORDRE INST')
+        call c%rule(RULE_EXCLUS, 'EVOL_NOLI DEPL')
+        call c%rule(RULE_EXCLUS, 'EVOL_NOLI SIGM')
+        call c%rule(RULE_EXCLUS, 'EVOL_NOLI VARI')
+        call c%rule(RULE_AU_MOINS_UN, 'EVOL_NOLI DEPL SIGM VARI')
         call c%end_fact()
         call c%fact('COMPORTEMENT', max=MANY)   ! statut 'd': absent = ELAS, PETIT on every cell
         call c%key('RELATION', 'TXM', def='ELAS', into='ELAS DIS_CHOC DIS_CONTACT')

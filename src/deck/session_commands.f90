@@ -10,7 +10,8 @@
 !> (at_check), so that the check pass sees the same names as the run.
 module session_commands
     use kinds, only: i4, i8
-    use strings, only: string_t, to_text
+    use strings, only: string_t, to_text, starts_with
+    use system_error, only: make_folder, errno_text
     use status, only: status_t, set_error, STATUS_DECK_ERROR
     use deck_value, only: value_t, int_value, append_string, VK_CONCEPT
     use deck_concept, only: concept_t, concept_display_name
@@ -175,6 +176,19 @@ contains
                 call cmd%error_at('FICHIER', 'file not found: ' // path // ' (ACCES=''OLD'' ' // &
                     'reads an existing file; a relative name is beside the deck or in the ' // &
                     'output folder)', st); return
+            end if
+        end if
+        ! Code_Aster's runner (run_aster) makes REPE_IN and REPE_OUT in the working
+        ! directory of every run, so decks write to REPE_OUT/... without making it: the
+        ! output folder is parasol's working directory, so REPE_OUT is made there when a
+        ! deck names a file in it.
+        if (.not. ctx%checking .and. access /= 'OLD' .and. &
+            (starts_with(name, 'REPE_OUT/') .or. starts_with(name, './REPE_OUT/'))) then
+            k = make_folder(ctx%in_outdir('REPE_OUT'))
+            if (k /= 0) then
+                call cmd%error_at('FICHIER', 'cannot make the folder ' // &
+                    ctx%in_outdir('REPE_OUT') // ' for ' // name // ': ' // errno_text(k), st)
+                return
             end if
         end if
         call ctx%release_unit(unit, found)

@@ -31,7 +31,9 @@ module med_file
         OP_CREATE_FAMILY, OP_FIELD_COUNT, OP_FIELD_INFO, OP_CREATE_FIELD, OP_PROFILE_COUNT, &
         OP_WRITE_PROFILE, OP_WRITE_FIELD_VALUES, OP_LOCALIZATION_COUNT, OP_LOCALIZATION_NAME, &
         OP_WRITE_LOCALIZATION, OP_WRITE_ENTITY_VALUES, OP_FIELD_STEP_COUNT, OP_FIELD_STEP_INFO, &
-        OP_FIELD_PART_COUNT, OP_FIELD_PART_INFO, OP_READ_ENTITY_VALUES, OP_READ_PROFILE
+        OP_FIELD_PART_COUNT, OP_FIELD_PART_INFO, OP_READ_ENTITY_VALUES, OP_READ_PROFILE, OP_IMPORT
+    use med_import, only: make_import_folder, remove_import_folder, IMPORT_TIME_BASE
+    use atomic_file, only: track_temporary, untrack_temporary
     implicit none
     private
 
@@ -49,11 +51,14 @@ module med_file
         MED_ENTITY_NODE_ELEMENT = 4
     !> MED string sizes (med.h): object names, entity names, group names.
     integer, parameter, public :: MED_NAME_LEN = 64, MED_SNAME_LEN = 16, MED_LNAME_LEN = 80
-    !> MED versions this build reads: major 3 and 4 (MED-fichier 4.x reads 3.x files; 2.x
-    !> files need MED's own converter, medimport).
-    integer, parameter :: OLDEST_MAJOR = 3
+    !> MED versions this build reads: major 3 and 4 (MED-fichier 4.x reads 3.x files); 2.x
+    !> files (MED 2.1 to 2.3.6) are read through a copy converted by MED's MEDimport
+    !> (med_import).
+    integer, parameter :: OLDEST_MAJOR = 3, CONVERTED_MAJOR = 2
     !> errno values that mean the disk (or a limit) refused the data: said in the message.
     integer, parameter :: EIO = 5, EFBIG = 27, ENOSPC = 28, EROFS = 30, EDQUOT = 122
+    !> The signal that ends a conversion past its time limit (med_import).
+    integer, parameter :: SIGALRM = 14
 
     !> The server of an open file (med_server) and, once it died, how.
     type :: med_link_t
@@ -67,6 +72,10 @@ module med_file
         character(len=:), allocatable :: path     !< the name messages give
         integer :: mode = MED_READ
         type(med_link_t), pointer :: link => null()
+        !> The version of a 2.x file read through a converted copy ("2.3.6"), else ''
+        character(len=:), allocatable :: converted_from
+        !> The version of that copy ("4.1.0")
+        character(len=:), allocatable :: converted_to
     contains
         procedure :: is_open => med_file_is_open
     end type med_file_t
@@ -106,10 +115,13 @@ contains
         type(status_t), intent(out) :: st
         type(message_t) :: q, r
         integer(c_int) :: rc, hdf_ok, med_ok, major, minor, release
+        integer(c_int) :: r_major, r_minor, r_release
         integer(i4) :: lib_major, lib_minor, lib_release
         logical :: exists, in_child
         file%path = path
         file%mode = mode
+        file%converted_from = ''
+        file%converted_to = ''
         call med_load(st)
         if (st%failed()) return
         if (mode == MED_READ) then
@@ -188,6 +200,23 @@ contains
         release = r%get_int()
         call med_library_version(lib_major, lib_minor, lib_release, st)
         if (st%failed()) return
+        if (rc >= 0 .and. major == CONVERTED_MAJOR) then
+            call read_converted(file, r_major, r_minor, r_release, st)
+            if (st%failed()) then
+                call set_error(st, STATUS_IO_ERROR, 'MED file ' // path // ' was written by ' &
+                    // 'MED ' // version_text(major, minor, release, rc) // ', which this ' &
+                    // 'parasol cannot read: MED''s converter (MEDimport) could not convert ' &
+                    // 'it: ' // st%message)
+                call med_close(file)
+                return
+            end if
+            file%converted_from = version_text(major, minor, release, rc)
+            rc = 0
+            major = r_major
+            minor = r_minor
+            release = r_release
+            med_ok = 1
+        end if
         if (rc < 0 .or. major < OLDEST_MAJOR .or. major > lib_major .or. &
             (major == lib_major .and. minor > lib_minor) .or. med_ok == 0) then
             call set_error(st, STATUS_IO_ERROR, 'MED file ' // path // ' was written by MED ' &
@@ -199,6 +228,79 @@ contains
             call med_close(file)
         end if
     end subroutine med_open
+
+    ! A 2.x file: its server converts it with MEDimport into a private temporary folder and
+    ! reads the copy from then on (med_import); the folder is removed here once the server
+    ! has the copy open, or died. major, minor, release: the copy's version. st: why not
+    ! (what MEDimport or the system said, or how the server died).
+    subroutine read_converted(file, major, minor, release, st)
+        type(med_file_t), intent(inout) :: file
+        integer(c_int), intent(out) :: major, minor, release
+        type(status_t), intent(out) :: st
+        type(message_t) :: q, r
+        character(len=:), allocatable :: folder, reason
+        integer(c_int) :: rc, stage
+        major = -1
+        minor = -1
+        release = -1
+        call make_import_folder(folder, st)
+        if (st%failed()) return
+        ! an interrupt removes the copy, the link and the folder (atomic_file's handler)
+        call track_temporary(folder // '/out.med')
+        call track_temporary(folder // '/in.med')
+        call track_temporary(folder)
+        call q%put_int(OP_IMPORT)
+        call q%put_text(file%path)
+        call q%put_text(folder)
+        rc = exchange(file, q, r, 'convert', 'it', st, check=.false.)
+        call remove_import_folder(folder)
+        call untrack_temporary(folder // '/out.med')
+        call untrack_temporary(folder // '/in.med')
+        call untrack_temporary(folder)
+        if (st%failed()) then
+            if (file%link%lost) then
+                if (file%link%server%signal == SIGALRM) then
+                    call set_error(st, STATUS_IO_ERROR, 'MEDimport did not finish within ' &
+                        // 'its time limit (' // to_text(int(IMPORT_TIME_BASE, i4)) // &
+                        ' s plus 1 s per MB of the file): it is damaged')
+                else
+                    call set_error(st, STATUS_IO_ERROR, 'the converter ended (' // &
+                        file%link%lost_how // ')')
+                end if
+            end if
+            return
+        end if
+        stage = r%get_int()
+        reason = r%get_text()
+        major = r%get_int()
+        minor = r%get_int()
+        release = r%get_int()
+        if (rc >= 0) then
+            file%converted_to = version_text(major, minor, release, rc)
+            return
+        end if
+        if (stage == 2) reason = 'the MED library cannot open its converted copy ' // &
+            '(MED error ' // to_text(int(rc, i4)) // ')'
+        if (len(reason) == 0) reason = 'MED error ' // to_text(int(rc, i4))
+        call set_error(st, STATUS_IO_ERROR, reason)
+    end subroutine read_converted
+
+    ! Makes every signaling NaN read from a file a quiet one (its bit 51 set): a damaged
+    ! file may hold any bit pattern, and the mere test of a signaling NaN (ieee_is_finite,
+    ! a comparison) raises IEEE invalid, which the checked build traps (SIGFPE; the fuzzer
+    ! found it in a damaged MED 2.3.6 mesh). The readers then refuse it as not finite.
+    subroutine quiet_signaling_nans(values)
+        real(dp), intent(inout) :: values(:)
+        integer(i8), parameter :: EXPONENT = int(z'7FF0000000000000', i8), &
+            MANTISSA = int(z'000FFFFFFFFFFFFF', i8), QUIET = int(z'0008000000000000', i8)
+        integer(i8) :: bits
+        integer :: k
+        do k = 1, size(values)
+            bits = transfer(values(k), bits)
+            if (iand(bits, EXPONENT) == EXPONENT .and. iand(bits, MANTISSA) /= 0 .and. &
+                iand(bits, QUIET) == 0) values(k) = transfer(ior(bits, QUIET), values(k))
+        end do
+    end subroutine quiet_signaling_nans
 
     ! "2.3.6", or "an unknown version" when it could not be read.
     function version_text(major, minor, release, rc) result(text)
@@ -456,6 +558,7 @@ contains
                       writing=.false.)
         if (st%failed()) return
         call r%get_reals(values)
+        call quiet_signaling_nans(values)
         call take_size(st, file, r, size(values), size(coords))
         if (st%ok()) coords = values
     end subroutine med_read_coordinates
@@ -1014,6 +1117,7 @@ contains
         rc = exchange(file, q, r, 'read', 'the values of field ' // field, st, writing=.false.)
         if (st%failed()) return
         call r%get_reals(got)
+        call quiet_signaling_nans(got)
         if (size(got) /= size(values)) then
             call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': field ' // &
                 field // ': ' // to_text(size(got)) // ' values read, ' // &

@@ -18,6 +18,7 @@ module med_server
     use child_process, only: send_message, receive_message, end_child
     use system_error, only: last_errno, clear_errno
     use med_plugin, only: plugin, fp_state_t, fp_begin, PLUGIN_BAD_SIZE
+    use med_import, only: convert_to_current, import_copy_path
     implicit none
     private
 
@@ -32,7 +33,8 @@ module med_server
         OP_WRITE_PROFILE = 27, OP_WRITE_FIELD_VALUES = 28, OP_LOCALIZATION_COUNT = 29, &
         OP_LOCALIZATION_NAME = 30, OP_WRITE_LOCALIZATION = 31, OP_WRITE_ENTITY_VALUES = 32, &
         OP_FIELD_STEP_COUNT = 33, OP_FIELD_STEP_INFO = 34, OP_FIELD_PART_COUNT = 35, &
-        OP_FIELD_PART_INFO = 36, OP_READ_ENTITY_VALUES = 37, OP_READ_PROFILE = 38
+        OP_FIELD_PART_INFO = 36, OP_READ_ENTITY_VALUES = 37, OP_READ_PROFILE = 38, &
+        OP_IMPORT = 39
     !> Returned for a request the server does not know (a bug: client and server disagree).
     integer(c_int), parameter, public :: SERVER_BAD_REQUEST = -900100
 
@@ -98,6 +100,27 @@ contains
         case (OP_FILE_VERSION)
             rc = plugin%file_version(fid, i1, i2, i3)
             call head(r, rc)
+            call r%put_int(int(i1))
+            call r%put_int(int(i2))
+            call r%put_int(int(i3))
+        case (OP_IMPORT)                              ! path, folder (med_import)
+            ! A 2.x file: closed, converted into the folder by MEDimport, the copy opened
+            ! for reading (mode 0, MED_READ) and its version read. Replies the stage that
+            ! failed (1 converting, 2 opening the copy), the reason, the copy's version.
+            a = q%get_text()
+            b = q%get_text()
+            if (fid >= 0) rc = plugin%close(fid)
+            fid = -1
+            i1 = -1; i2 = -1; i3 = -1; i4_ = 1
+            rc = convert_to_current(a, b, c)
+            if (rc >= 0) then
+                i4_ = 2
+                rc = plugin%open(import_copy_path(b) // c_null_char, 0_c_int, fid)
+                if (rc >= 0) rc = plugin%file_version(fid, i1, i2, i3)
+            end if
+            call head(r, rc)
+            call r%put_int(int(i4_))
+            call r%put_text(c)
             call r%put_int(int(i1))
             call r%put_int(int(i2))
             call r%put_int(int(i3))

@@ -99,7 +99,15 @@ contains
         call med_load(st)   ! its errors are about parasol's install, not about the file
         if (st%failed()) return
         call med_open(file, path, MED_READ, st)
-        if (st%ok()) call read_open_file(file, wanted, mesh, lines, st)
+        if (st%ok()) then
+            if (len(file%converted_from) > 0) then
+                lines = [lines, string_t('MED file ' // path // ' was written by MED ' // &
+                    file%converted_from // ': read from a copy converted to MED ' // &
+                    file%converted_to // ' by the MED library''s MEDimport (a temporary ' // &
+                    'file, removed after)')]
+            end if
+            call read_open_file(file, wanted, mesh, lines, st)
+        end if
         call med_close(file)
         if (st%failed()) then
             prefix = 'MED file ' // path

@@ -24,7 +24,7 @@ module result_med
     use strings, only: string_t, to_text
     use atomic_file, only: delete_file, temporary_path, track_temporary, untrack_temporary, &
         publish_file, scratch_path, copy_file
-    use system_error, only: path_kind, PATH_FOLDER, PATH_DEVICE
+    use system_error, only: path_kind, folder_of, PATH_FOLDER, PATH_DEVICE
     use mesh_types, only: mesh_t, node_name, cell_name, n_node_groups, n_cell_groups, &
         nodes_of_group, cells_of_group, node_group_name, cell_group_name, N_CELL_TYPES, &
         CELL_TYPE_ORDER, CELL_TYPE_NODES
@@ -97,8 +97,14 @@ contains
         character(len=*), intent(in) :: path
         logical, intent(in) :: append
         type(status_t), intent(out) :: st
+        integer :: k
         out%path = path
         allocate (out%profile_names(0), out%profile_nodes(0))
+        if (path_kind(folder_of(path)) /= PATH_FOLDER) then
+            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // path // ': No such file ' &
+                // 'or directory (its folder ' // folder_of(path) // ' does not exist)')
+            return
+        end if
         select case (path_kind(path))
         case (PATH_FOLDER)
             call set_error(st, STATUS_IO_ERROR, 'cannot write ' // path // ': it is a folder ' &
@@ -126,6 +132,10 @@ contains
         if (st%failed()) then
             call untrack_temporary(out%temp_path)
             call delete_file(out%temp_path)
+            ! messages name the file the user asked for, not its temporary
+            k = index(st%message, out%temp_path)
+            if (k > 0) st%message = st%message(1:k - 1) // path // &
+                st%message(k + len(out%temp_path):)
             return
         end if
         out%file%path = path   ! messages name the file the user asked for

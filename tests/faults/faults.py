@@ -17,7 +17,10 @@ usage:
       Each output of KIND in turn is a symbolic link to /dev/full (ENOSPC on the first
       write): exit 1, one line "cannot write PATH: No space left on device", the link left
       in place (not replaced by a file). KIND: listings (.mess, .resu), vtk (.pvd, .vtu),
-      gmsh (.msh), med (.rmed), unit (a Gmsh file bound with --unit N=PATH).
+      gmsh (.msh), med (.rmed), unit (a Gmsh file bound with --unit N=PATH), table
+      (IMPR_TABLE to a unit), fonction (IMPR_FONCTION TABLEAU and AGRAF, its two units),
+      fields (IMPR_RESU of Gauss-point fields and a CHAM_GD in MED, the CHAM_GD in VTK),
+      gibi (PRE_GIBI's .mail).
   faults.py sweep PARASOL SOURCE_DIR WORKDIR KIND FIRST_KB LAST_KB STEP_KB
       The output folder is a tmpfs of FIRST_KB, FIRST_KB + STEP_KB, ... LAST_KB kilobytes
       (mount(8): needs root; skipped with exit 77 and a message otherwise), so that each
@@ -37,6 +40,10 @@ usage:
       before the run, its .mess kept: a result in a folder that does not exist (the .mess
       then goes to the output folder), a result line naming a folder, the .mess and the
       .resu on one file (the .mess holds the error there).
+  faults.py folders PARASOL SOURCE_DIR WORKDIR
+      DEFI_FICHIER into REPE_OUT/ (made in the output folder, as Code_Aster's runner makes
+      it in its working directory) is written there; MED and IMPR_TABLE into a folder that
+      does not exist stop with one line naming the file and the folder.
   faults.py interrupt PARASOL SOURCE_DIR WORKDIR
       SIGINT and SIGTERM during a run (a 32 x 128 plate caught in its first step): the
       listings of an earlier run stay byte for byte, no `.partial` is left, and the process
@@ -74,6 +81,25 @@ def make_deck(source_dir, workdir, kind):
         "unit": "IMPR_RESU(FORMAT='GMSH', UNITE=81, RESU=_F(RESULTAT=RESU))\n",
         "all": "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=RESU))\n"
                "IMPR_RESU(FORMAT='VTK', RESU=_F(RESULTAT=RESU))\n",
+        # IMPR_TABLE to an unbound unit (its file STEM.38 in the output folder)
+        "table": "TAB_F = CREA_TABLE(LISTE=(_F(PARA='INST', LISTE_R=(0.0, 1.0)),\n"
+                 "                          _F(PARA='DX', LISTE_R=(1.5, -2.5))))\n"
+                 "IMPR_TABLE(TABLE=TAB_F, UNITE=38)\n",
+        # IMPR_FONCTION: TABLEAU to unit 29, AGRAF to units 25 and 26 (values, directives)
+        "fonction": "FON_F = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 2.0))\n"
+                    "IMPR_FONCTION(FORMAT='TABLEAU', UNITE=29, COURBE=_F(FONCTION=FON_F))\n"
+                    "IMPR_FONCTION(FORMAT='AGRAF', UNITE=25, UNITE_DIGR=26,\n"
+                    "              COURBE=_F(FONCTION=FON_F))\n",
+        # IMPR_RESU of fields: element fields at Gauss points in MED (unit 82), a CHAM_GD
+        # in MED (83) and in VTK
+        "fields": "TEMP_F = CREA_CHAMP(OPERATION='AFFE', TYPE_CHAM='NOEU_TEMP_R', MAILLAGE=MAIL,\n"
+                  "                    AFFE=_F(TOUT='OUI', NOM_CMP='TEMP', VALE=20.0))\n"
+                  "IMPR_RESU(FORMAT='MED', UNITE=82, RESU=_F(RESULTAT=RESU,\n"
+                  "          NOM_CHAM=('SIEF_ELGA', 'VARI_ELGA')))\n"
+                  "IMPR_RESU(FORMAT='MED', UNITE=83, RESU=_F(CHAM_GD=TEMP_F))\n"
+                  "IMPR_RESU(FORMAT='VTK', RESU=_F(CHAM_GD=TEMP_F))\n",
+        # PRE_GIBI: a GIBI file converted to a .mail on unit 21 (its file STEM.21)
+        "gibi": "PRE_GIBI(UNITE_GIBI=19, UNITE_MAILLAGE=21)\n",
     }[kind]
     at = text.rindex("FIN()")
     deck = os.path.join(workdir, STEM + ".comm")
@@ -89,6 +115,12 @@ def command(parasol, source_dir, deck, outdir, kind):
         cmd += ["--unit", "80=" + os.path.join(outdir, STEM + ".rmed")]
     if kind == "unit":
         cmd += ["--unit", "81=" + os.path.join(outdir, "bound.msh")]
+    if kind == "gibi":
+        cmd += ["--unit", "19=" + os.path.join(source_dir, "tests", "mesh_commands",
+                                               "strip.mgib")]
+    if kind == "fields":
+        cmd += ["--unit", "82=" + os.path.join(outdir, "elga.rmed"),
+                "--unit", "83=" + os.path.join(outdir, "cham_gd.rmed")]
     return cmd + [deck]
 
 
@@ -174,7 +206,7 @@ def check_run(label, rc, out, err, outdir, ref, older, forced=None, writing=True
             fail("%s: a summary of success on stdout: %s" % (label, out))
     for n in names:
         path = os.path.join(outdir, n)
-        if os.path.islink(path) and n == forced:
+        if (os.path.islink(path) and n == forced) or os.path.isdir(path):
             continue
         data = read(path)
         if n.endswith(".mess"):
@@ -210,7 +242,8 @@ def outputs_of(kind, ref):
     if kind == "listings":
         return [STEM + ".mess", STEM + ".resu"]
     suffix = {"vtk": (".pvd", ".vtu"), "gmsh": (".msh",), "med": (".rmed",),
-              "unit": ("bound.msh",)}[kind]
+              "unit": ("bound.msh",), "table": (".38",), "fonction": (".25", ".26", ".29"),
+              "fields": (".rmed", ".pvd", ".vtu"), "gibi": (".21",)}[kind]
     names = [n for n in ref if n.endswith(suffix)]
     if kind == "vtk":     # the .pvd, the first and the last .vtu
         vtu = [n for n in names if n.endswith(".vtu")]
@@ -419,6 +452,51 @@ def export_lines(parasol, workdir):
     return 0
 
 
+def folders(parasol, source_dir, workdir):
+    """Files of a deck in folders: DEFI_FICHIER into REPE_OUT/ (which Code_Aster's runner
+    makes in every working directory) is written there; into a folder that does not exist,
+    MED and text outputs stop with one line naming the file and the missing folder."""
+    mesh = os.path.join(source_dir, "decks", "ssnl130a.mail")
+    shutil.rmtree(workdir, ignore_errors=True)
+    os.makedirs(workdir)
+    base = ("DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
+            "TA = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))\n")
+    cases = [
+        ("repe_out", "DEFI_FICHIER(UNITE=80, TYPE='BINARY', FICHIER='./REPE_OUT/m.med')\n"
+         "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))\n"
+         "DEFI_FICHIER(UNITE=38, FICHIER='REPE_OUT/t.txt')\n"
+         "IMPR_TABLE(TABLE=TA, UNITE=38)\n", 0, ["REPE_OUT/m.med", "REPE_OUT/t.txt"]),
+        ("med_nodir", "DEFI_FICHIER(UNITE=80, TYPE='BINARY', FICHIER='NODIR/m.med')\n"
+         "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))\n", 1,
+         "IMPR_RESU: cannot write %s/NODIR/m.med: No such file or directory (its folder "
+         "%s/NODIR does not exist)"),
+        ("table_nodir", "DEFI_FICHIER(UNITE=38, FICHIER='NODIR/t.txt')\n"
+         "IMPR_TABLE(TABLE=TA, UNITE=38)\n", 1,
+         "IMPR_TABLE/UNITE: cannot create %s/NODIR/t.txt: No such file or directory"),
+    ]
+    for name, body, rc_wanted, want in cases:
+        deck = os.path.join(workdir, name + ".comm")
+        with open(deck, "w") as f:
+            f.write(base + body + "FIN()\n")
+        out = os.path.join(workdir, name)
+        os.makedirs(out)
+        rc, so, se = run([parasol, "--quiet", "--outdir", out, "--unit", "20=" + mesh, deck])
+        check_run(name, rc, so, se, out, None, {}, writing=False)
+        if rc != rc_wanted:
+            fail("%s: exit %d, wanted %d: %s" % (name, rc, rc_wanted, se))
+        if rc == 0:
+            for f in want:
+                if not os.path.isfile(os.path.join(out, f)):
+                    fail("%s: %s was not written" % (name, f))
+            print("%s: exit 0, %s written" % (name, ", ".join(want)))
+        else:
+            text = want % ((out,) * want.count("%s"))
+            if text not in se:
+                fail("%s: stderr lacks %r: %r" % (name, text, se))
+            print("%s: %s" % (name, se.strip()))
+    return 0
+
+
 def main(argv):
     if len(argv) < 5:
         print(__doc__)
@@ -440,6 +518,8 @@ def main(argv):
               "tmpfs" if what == "sweep" else "ulimit")
     elif what == "export-lines":
         return export_lines(parasol, workdir)
+    elif what == "folders":
+        return folders(parasol, source_dir, workdir)
     elif what == "med-flip":
         return med_flip(parasol, workdir, argv[5])
     elif what == "interrupt":

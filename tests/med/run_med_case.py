@@ -25,6 +25,14 @@ usage:
   run_med_case.py aster-mesh PARASOL ASTER_DIR MMED WORKDIR NODES CELLS GROUPS...
       Reads ASTER_DIR/MMED alone: NODES nodes, CELLS cells, each GROUP=SIZE in the .mess.
       Skipped (exit 77) when ASTER_DIR does not exist.
+  run_med_case.py import-2x PARASOL ASTER_DIR WORKDIR MMED...
+      Code_Aster's meshes ASTER_DIR/MMED written by MED 2.3.6, read through MED's converter
+      (MEDimport, in the MED server): exit 0, the .mess says the file was converted, the
+      mesh printed (IMPR_RESU FORMAT='RESULTAT') equals that of a copy converted beforehand
+      by MED's own medimport tool, and the private temporary folder is gone ($TMPDIR empty).
+      A 2.3.6 file that MEDimport cannot convert (its version header made 2.1.0), and a
+      $TMPDIR that does not exist, stop at LIRE_MAILLAGE/UNITE with one line, nothing left
+      in $TMPDIR. Skipped (exit 77) when ASTER_DIR does not exist.
   run_med_case.py missing-plugin PARASOL DECK MESH WORKDIR WRONG_ABI_SO
       A copy of PARASOL outside the build tree finds no plug-in: a MED deck stops with exit 1
       and the loader's reason, located at LIRE_MAILLAGE/UNITE; a deck reading MESH (.mail)
@@ -47,6 +55,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 
 CRASH_SIGNS = ("Fortran runtime", "Backtrace", "ERROR STOP", "Segmentation", "double free",
                "Program received signal", "HDF5-DIAG", "../src/", "Erreur")
@@ -542,6 +551,129 @@ def case_aster_mesh(argv):
     return problems
 
 
+IMPORT_DECK = ("DEBUT()\nMAIL = LIRE_MAILLAGE(FORMAT='MED', UNITE=20)\n"
+               "IMPR_RESU(FORMAT='RESULTAT', RESU=_F(MAILLAGE=MAIL))\nFIN()\n")
+
+
+def case_import_2x(argv):
+    parasol, aster_dir, workdir = argv[:3]
+    meshes = argv[3:]
+    if not os.path.isdir(aster_dir):
+        print("skipped: %s does not exist (Code_Aster's meshes of MED 2.3.6)" % aster_dir)
+        return None
+    import h5py
+    shutil.rmtree(workdir, ignore_errors=True)
+    os.makedirs(workdir)
+    tmp = os.path.join(workdir, "tmp")
+    os.makedirs(tmp)
+    env = dict(os.environ, TMPDIR=tmp)
+    deck = os.path.join(workdir, "import.comm")
+    write(deck, IMPORT_DECK)
+
+    def read_mesh(path, out):
+        os.makedirs(out, exist_ok=True)
+        proc = subprocess.run([os.path.abspath(parasol), "--outdir", out, "--unit",
+                               "20=" + path, deck], cwd=out, env=env, capture_output=True,
+                              timeout=120)
+        return proc.returncode, proc.stderr.decode("utf-8", "replace")
+
+    problems = []
+    for mmed in meshes:
+        source = os.path.join(aster_dir, "astest", mmed)
+        with h5py.File(source, "r") as f:
+            version = tuple(int(f["INFOS_GENERALES"].attrs[k]) for k in ("MAJ", "MIN", "REL"))
+        if version[0] != 2:
+            problems.append("%s is MED %s, not 2.x: the test has no case" % (mmed, version))
+            continue
+        out = os.path.join(workdir, mmed + ".out")
+        rc, err = read_mesh(source, out)
+        if rc != 0:
+            problems.append("%s: exit %d: %s" % (mmed, rc, err))
+            continue
+        mess = open(os.path.join(out, "import.mess"), encoding="utf-8").read()
+        said = "was written by MED 2.3.6: read from a copy converted to MED 4."
+        if said not in mess:
+            problems.append("%s: the .mess lacks %r" % (mmed, said))
+        if os.listdir(tmp):
+            problems.append("%s: left in $TMPDIR: %s" % (mmed, os.listdir(tmp)))
+        tool = shutil.which("medimport")
+        if tool:
+            converted = os.path.join(workdir, mmed + ".converted.med")
+            subprocess.run([tool, source, converted], capture_output=True, timeout=120,
+                           check=True)
+            rc, err = read_mesh(converted, out + ".tool")
+            if rc != 0:
+                problems.append("%s converted by medimport: exit %d: %s" % (mmed, rc, err))
+            elif open(os.path.join(out, "import.resu"), "rb").read() != \
+                    open(os.path.join(out + ".tool", "import.resu"), "rb").read():
+                problems.append("%s: the mesh read differs from medimport's copy" % mmed)
+        else:
+            print("note: MED's medimport tool not found: the comparison was skipped")
+        # A file MEDimport cannot convert: a 2.3.6 file that says it is 2.1.0 (MEDimport
+        # applies the 2.1 to 2.2 conversion to it, fails and exits).
+        bad = os.path.join(workdir, mmed + ".v210.med")
+        shutil.copy(source, bad)
+        os.chmod(bad, 0o644)
+        with h5py.File(bad, "r+") as f:
+            for k, v in (("MIN", 1), ("REL", 0)):
+                f["INFOS_GENERALES"].attrs.modify(k, v)
+        rc, err = read_mesh(bad, out + ".bad")
+        lines = [l for l in err.splitlines() if l.strip()]
+        where = "import.comm:2:36: error: LIRE_MAILLAGE/UNITE: MED file " + bad
+        said = "was written by MED 2.1.0, which this parasol cannot read: MED's converter " \
+            "(MEDimport) could not convert it"
+        if rc != 1 or len(lines) != 1 or where not in lines[0] or said not in lines[0]:
+            problems.append("%s made 2.1.0: expected exit 1 and one line %r ... %r, got exit "
+                            "%d: %r" % (mmed, where, said, rc, err))
+        if os.listdir(tmp):
+            problems.append("%s made 2.1.0: left in $TMPDIR: %s" % (mmed, os.listdir(tmp)))
+        print("%s: read through MEDimport; as 2.1.0: %s" % (mmed, lines[0] if lines else rc))
+        # The fuzzer's case (seed 1202, case 585): one byte of zzzz136d.mmed, 45 661 0x00 ->
+        # 0x27, makes MEDimport write its copy without end (9.7 GB in 10 s before its size
+        # limit), then crash: exit 1, one line, nothing left, in seconds.
+        if mmed == "zzzz136d.mmed":
+            looping = os.path.join(workdir, mmed + ".loops.med")
+            data = bytearray(open(source, "rb").read())
+            data[45661] = 0x27
+            with open(looping, "wb") as f:
+                f.write(bytes(data))
+            started = time.time()
+            rc, err = read_mesh(looping, out + ".loops")
+            took = time.time() - started
+            said = "could not convert it: "
+            if rc != 1 or len(err.strip().splitlines()) != 1 or said not in err or \
+                    took > 30:
+                problems.append("%s byte 45661 0x27: expected exit 1 and one line with %r "
+                                "within 30 s, got exit %d after %.1f s: %r" % (
+                                    mmed, said, rc, took, err))
+            if os.listdir(tmp):
+                problems.append("%s byte 45661: left in $TMPDIR: %s" % (mmed, os.listdir(tmp)))
+            print("%s byte 45661 0x27: %.1f s, %s" % (mmed, took, err.strip()))
+        # The fuzzer's case (seed 2026, case 1449): 110 bytes of zzzz136d.mmed at 59 494
+        # duplicated convert into coordinates with a signaling NaN, whose mere test raised
+        # IEEE invalid (SIGFPE in the checked build): one line naming the node.
+        if mmed == "zzzz136d.mmed":
+            snan = os.path.join(workdir, mmed + ".snan.med")
+            data = open(source, "rb").read()
+            with open(snan, "wb") as f:
+                f.write(data[:59494 + 110] + data[59494:59494 + 110] + data[59494 + 110:])
+            rc, err = read_mesh(snan, out + ".snan")
+            said = "node 96 has a coordinate that is not a finite number"
+            if rc != 1 or len(err.strip().splitlines()) != 1 or said not in err:
+                problems.append("%s with 110 bytes duplicated at 59494: expected exit 1 and "
+                                "one line with %r, got exit %d: %r" % (mmed, said, rc, err))
+        # No room for the copy: $TMPDIR a folder that does not exist.
+        env["TMPDIR"] = os.path.join(workdir, "no_such_folder")
+        rc, err = read_mesh(source, out + ".notmp")
+        env["TMPDIR"] = tmp
+        said = "could not convert it: cannot make a temporary folder in %s for the " \
+            "conversion: No such file or directory" % os.path.join(workdir, "no_such_folder")
+        if rc != 1 or len(err.strip().splitlines()) != 1 or said not in err:
+            problems.append("%s with no $TMPDIR: expected exit 1 and one line with %r, got "
+                            "exit %d: %r" % (mmed, said, rc, err))
+    return problems
+
+
 def case_missing_plugin(argv):
     parasol, deck, mesh, workdir, wrong_abi = argv[:5]
     shutil.rmtree(workdir, ignore_errors=True)
@@ -645,7 +777,7 @@ def case_installed(argv):
 
 
 CASES = {"fields": case_fields, "bad": case_bad, "default-unit": case_default_unit,
-         "aster": case_aster, "aster-mesh": case_aster_mesh,
+         "aster": case_aster, "aster-mesh": case_aster_mesh, "import-2x": case_import_2x,
          "missing-plugin": case_missing_plugin, "not-linked": case_not_linked,
          "installed": case_installed, "export": case_export}
 
