@@ -15,7 +15,9 @@ module assembly_loads
     use model_loads, only: load_set_t, load_item_t, load_value_at, LOAD_DDL_IMPO, &
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
         LOAD_FORCE_ARETE, LOAD_FORCE_INTERNE, LOAD_PESANTEUR, SLOT_CISA, SLOT_ANGLES, &
-        PLAN_SUP, PLAN_INF, LOAD_KIND_NAMES, load_locate, load_slot_name, item_slot_name
+        PLAN_SUP, PLAN_INF, LOAD_KIND_NAMES, load_locate, load_slot_name, item_slot_name, &
+        LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE
+    use assembly_pre_epsi, only: add_pre_epsi_forces
     use model_material, only: material_of_cell
     use model_relations, only: nautical_frame
     use number_limits, only: product_fits
@@ -244,6 +246,8 @@ contains
                             call area_cell_forces(s, item, c, t, factor, fext, st)
                         case (LOAD_PESANTEUR)
                             call gravity_forces(s, item, c, factor, fext, st)
+                        case (LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE)
+                            call add_pre_epsi_forces(s, item, c, t, factor, fext, st)
                         end select
                         if (st%failed()) exit
                     end do

@@ -110,6 +110,14 @@ contains
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call add_components(c, 'FX FY FZ', vtype)
         call c%end_fact()
+        ! initial strains of the plane (EPXX .. EPXY) and plate (EXX .. KXY) elements; the
+        ! 3D, beam and field forms (EPXZ, EPYZ, EPX, KY, KZ, VECT_N, EPSI) have no element
+        call c%fact('PRE_EPSI', max=MANY)
+        call c%key('TOUT', 'TXM', into='OUI')
+        call c%key('GROUP_MA', 'TXM', max=MANY)
+        call c%rule(RULE_UN_PARMI, 'TOUT GROUP_MA')
+        call add_components(c, 'EPXX EPYY EPZZ EPXY EXX EYY EXY KXX KYY KXY', vtype)
+        call c%end_fact()
         call c%fact('FORCE_ARETE', max=MANY)
         call c%key('GROUP_MA', 'TXM', max=MANY, req=.true.)
         call add_components(c, 'FX FY FZ MX MY MZ', vtype)

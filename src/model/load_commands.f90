@@ -19,7 +19,8 @@ module load_commands
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
         LOAD_DDL_IMPO, LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, &
         LOAD_FORCE_CONTOUR, LOAD_FORCE_ARETE, LOAD_FORCE_INTERNE, LOAD_PESANTEUR, &
-        SLOT_ANGLES, PLAN_SUP, PLAN_INF, PLAN_MOY, load_set_location
+        SLOT_ANGLES, PLAN_SUP, PLAN_INF, PLAN_MOY, load_set_location, LOAD_PRE_EPSI, &
+        LOAD_PRE_EPSI_PLATE
     use function_concept, only: function_concept_t
     use relation_commands, only: select_nodes, face_impo_item, liaison_ddl_item, &
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
@@ -212,6 +213,10 @@ contains
             do i = 1, cmd%count('FORCE_CONTOUR')
                 call cell_item(cmd%occurrence('FORCE_CONTOUR', i), p, LOAD_FORCE_CONTOUR, &
                     ['FX', 'FY', 'FZ'], functions, cm%loads, st)
+                if (st%failed()) return
+            end do
+            do i = 1, cmd%count('PRE_EPSI')
+                call pre_epsi_item(cmd%occurrence('PRE_EPSI', i), p, functions, cm%loads, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('FORCE_ARETE')
@@ -645,6 +650,32 @@ contains
         end if
     end subroutine cell_item
 
+    !> PRE_EPSI occurrence: EPXX .. EPXY on plane cells or EXX .. KXY on plate cells (both in
+    !> one occurrence refused: each element reads its own).
+    subroutine pre_epsi_item(occ, mc, functions, loads, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(model_concept_t), intent(in) :: mc
+        logical, intent(in) :: functions
+        type(load_set_t), intent(inout) :: loads
+        type(status_t), intent(out) :: st
+        character(len=4), parameter :: PLANE(4) = ['EPXX', 'EPYY', 'EPZZ', 'EPXY']
+        character(len=3), parameter :: PLATE(6) = ['EXX', 'EYY', 'EXY', 'KXX', 'KYY', 'KXY']
+        integer(i4) :: k
+        if (any([(occ%has(trim(PLANE(k))), k = 1, 4)])) then
+            do k = 1, 6
+                if (occ%has(PLATE(k))) then
+                    call occ%error_at(PLATE(k), 'plate strains (EXX .. KXY) and plane ' // &
+                        'ones (EPXX .. EPXY) in one occurrence: give each its own, on its ' // &
+                        'cells', st, code=STATUS_MODEL_ERROR)
+                    return
+                end if
+            end do
+            call cell_item(occ, mc, LOAD_PRE_EPSI, PLANE, functions, loads, st)
+        else
+            call cell_item(occ, mc, LOAD_PRE_EPSI_PLATE, PLATE, functions, loads, st)
+        end if
+    end subroutine pre_epsi_item
+
     !> The cells a load of `kind` applies to, by element kind.
     elemental logical function load_fits(kind, element)
         integer(i4), intent(in) :: kind, element
@@ -655,7 +686,7 @@ contains
             load_fits = is_plate(element) .or. is_plane_edge(element)
         case (LOAD_FORCE_ARETE)
             load_fits = is_plate_edge(element)
-        case (LOAD_FORCE_INTERNE)
+        case (LOAD_FORCE_INTERNE, LOAD_PRE_EPSI)
             load_fits = is_plane_solid(element)
         case default
             load_fits = is_plate(element)
@@ -675,6 +706,10 @@ contains
             text = 'SEG2 edges of a DKT model (the plates'' boundary)'
         case (LOAD_FORCE_INTERNE)
             text = 'D_PLAN/C_PLAN surface cells (TRIA3 .. QUAD9)'
+        case (LOAD_PRE_EPSI)
+            text = 'D_PLAN/C_PLAN cells for EPXX .. EPXY (plates take EXX .. KXY)'
+        case (LOAD_PRE_EPSI_PLATE)
+            text = 'plate (DKT) cells for EXX .. KXY (plane elements take EPXX .. EPXY)'
         case default
             text = 'plate (DKT) cells'
         end select

@@ -43,10 +43,12 @@ module model_loads
 
     integer(i4), parameter, public :: LOAD_DDL_IMPO = 1, LOAD_FORCE_NODALE = 2, &
         LOAD_FORCE_COQUE = 3, LOAD_PRES_REP = 4, LOAD_FORCE_CONTOUR = 5, LOAD_RELATION = 6, &
-        LOAD_FORCE_ARETE = 7, LOAD_FORCE_INTERNE = 8, LOAD_PESANTEUR = 9, N_LOAD_KINDS = 9
+        LOAD_FORCE_ARETE = 7, LOAD_FORCE_INTERNE = 8, LOAD_PESANTEUR = 9, &
+        LOAD_PRE_EPSI = 10, LOAD_PRE_EPSI_PLATE = 11, N_LOAD_KINDS = 11
     character(len=13), parameter, public :: LOAD_KIND_NAMES(N_LOAD_KINDS) = [ &
         'DDL_IMPO     ', 'FORCE_NODALE ', 'FORCE_COQUE  ', 'PRES_REP     ', &
-        'FORCE_CONTOUR', 'LIAISON      ', 'FORCE_ARETE  ', 'FORCE_INTERNE', 'PESANTEUR    ']
+        'FORCE_CONTOUR', 'LIAISON      ', 'FORCE_ARETE  ', 'FORCE_INTERNE', 'PESANTEUR    ', &
+        'PRE_EPSI     ', 'PRE_EPSI     ']
     !> Value slots of an item (see load_item_t%values).
     integer(i4), parameter, public :: MAX_SLOTS = 9
     !> Slot of PRES in FORCE_COQUE / PRES_REP items, of CISA_2D in PRES_REP items, and the
@@ -67,7 +69,9 @@ module model_loads
         '', '', '', '', '', '', '', '', '', &
         'FX', 'FY', 'FZ', 'MX', 'MY', 'MZ', '', '', '', &
         'FX', 'FY', 'FZ', '', '', '', '', '', '', &
-        'GRAVITE', 'GRAVITE', 'GRAVITE', '', '', '', '', '', ''], [MAX_SLOTS, N_LOAD_KINDS])
+        'GRAVITE', 'GRAVITE', 'GRAVITE', '', '', '', '', '', '', &
+        'EPXX', 'EPYY', 'EPZZ', 'EPXY', '', '', '', '', '', &
+        'EXX', 'EYY', 'EXY', 'KXX', 'KYY', 'KXY', '', '', ''], [MAX_SLOTS, N_LOAD_KINDS])
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
