@@ -235,6 +235,21 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("pres_rep_plane", files, [],
                       {"case.export": "export", "pres_rep_plane.comm": "deck",
                        "thermal_tria6.mail": "mail"}, 0.4))
+    # PRE_EPSI initial strains: the plane strips (free and held) and the plates.
+    pre = os.path.join(SOURCE, "tests", "pre_epsi")
+    files = {"case.export": os.path.join(plane, "pre_epsi_plane.export"),
+             "pre_epsi_plane.comm": os.path.join(plane, "pre_epsi_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("pre_epsi_plane", files, [],
+                      {"case.export": "export", "pre_epsi_plane.comm": "deck",
+                       "thermal_quad8.mail": "mail"}, 0.6))
+    seeds.append(Seed("pre_epsi_plate",
+                      {"case.export": os.path.join(pre, "pre_epsi_plate.export"),
+                       "pre_epsi_plate.comm": os.path.join(pre, "pre_epsi_plate.comm"),
+                       "pre_epsi_plate.mail": os.path.join(pre, "pre_epsi_plate.mail")}, [],
+                      {"case.export": "export", "pre_epsi_plate.comm": "deck",
+                       "pre_epsi_plate.mail": "mail"}, 0.6))
     discrete = os.path.join(SOURCE, "tests", "discrete")
     seeds.append(Seed("discrete", {"case.export": os.path.join(discrete, "discrete.export"),
                                    "discrete.comm": os.path.join(discrete, "discrete.comm"),
