@@ -11,7 +11,7 @@ module cara_elem_commands
     use mesh_types, only: mesh_t, cells_of_group
     use mesh_command_support, only: relocate_error, read_groups, group_cells
     use model_concept, only: model_concept_t
-    use model_types, only: is_plate
+    use model_types, only: is_plate, ELEM_DKQ
     use model_cara_elem, only: cara_elem_init, assign_coque, assign_discrete, &
         assign_orientation, parse_cara, CARA_K_T_D_L, CARA_K_T_D_N, assign_massif, &
         MASSIF_ANGL_REP, MASSIF_ANGL_EULER, MASSIF_AXE
@@ -155,6 +155,18 @@ contains
             if (.not. verify) then
                 skipped = skipped + count(.not. is_plate(mc%model%element(cells)))
                 cells = pack(cells, is_plate(mc%model%element(cells)))
+            end if
+            ! a negative COEF_RIGI_DRZ makes Code_Aster's DKQ another element, with
+            ! drilling rotations tied to the membrane (dkqrig's 'dri' branch): not built,
+            ! and refused rather than read as a negative fictitious stiffness (ssls108i
+            ! gave 6 of 8 lines NOOK so)
+            if (drz < 0.0_dp .and. any(mc%model%element(cells) == ELEM_DKQ)) then
+                call occ%error_at('COEF_RIGI_DRZ', 'a negative value selects Code_Aster''s ' &
+                    // 'DKQ with drilling rotations (the membrane enriched by DRZ, dkqrig), ' &
+                    // 'which parasol does not build; group ' // names(g)%s // ' has DKQ ' // &
+                    'cells: give a positive coefficient (the fictitious DRZ stiffness)', st, &
+                    code=STATUS_NOT_IMPLEMENTED)
+                return
             end if
             call assign_coque(cc%cara, mc%model, mc%mesh, cells, &
                               epais, st, coef_rigi_drz=drz, group=names(g)%s, &
