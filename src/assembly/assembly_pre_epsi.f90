@@ -25,7 +25,7 @@ module assembly_pre_epsi
     use model_types, only: is_plate, is_plane_solid
     use model_loads, only: load_item_t, load_value_at, load_locate, LOAD_PRE_EPSI, &
         LOAD_PRE_EPSI_PLATE
-    use number_limits, only: product_fits
+    use number_limits, only: product_fits, magnitude_fits, MAX_STRAIN
     use element_gauss_families, only: gauss_rule_t, MAX_GAUSS_POINTS
     use element_plane, only: plane_law_t, plane_rigi_rule, plane_initial_strain_forces
     use element_plate, only: plate_local_frame
@@ -72,8 +72,18 @@ contains
             call plate_forces(s, item, c, t, factor, fe(1:n), st)
         end if
         if (st%failed()) return
+        ! the forces times FONC_MULT are formed only when they fit (number_limits): a strain
+        ! within MAX_STRAIN through a stiff law and a huge FONC_MULT can still overflow
         do j = 1, n
-            if (eqs(j) > 0) fext(eqs(j)) = fext(eqs(j)) + factor * fe(j)
+            if (eqs(j) <= 0) cycle
+            if (.not. (product_fits(factor, fe(j)) .and. magnitude_fits(fext(eqs(j))))) then
+                call set_error(st, STATUS_MODEL_ERROR, 'PRE_EPSI on ' // cell_label(s%mesh, &
+                    c, item%group) // ': its nodal force ' // to_text(fe(j)) // ' times ' // &
+                    to_text(factor) // ' (FONC_MULT) is beyond the range parasol computes ' // &
+                    'in (about 1e301)')
+                return
+            end if
+            fext(eqs(j)) = fext(eqs(j)) + factor * fe(j)
         end do
     end subroutine add_pre_epsi_forces
 
@@ -92,14 +102,25 @@ contains
             do k = 1, ns
                 if (.not. item%values(k)%given) cycle
                 call load_value_at(item%values(k), item%kind, k, t, x(:, g), v(k, g), st)
-                if (st%ok() .and. .not. product_fits(factor, v(k, g))) call set_error(st, &
+                ! a strain (or curvature) is bounded, alone and times FONC_MULT, before
+                ! D eps0 and the nodal forces are formed from it (number_limits MAX_STRAIN)
+                if (st%ok() .and. .not. strain_fits(v(k, g), factor)) call set_error(st, &
                     st%code, 'PRE_EPSI: the value ' // to_text(v(k, g)) // ' times ' // &
-                    to_text(factor) // ' (FONC_MULT) overflows')
+                    to_text(factor) // ' (FONC_MULT) is beyond the strains parasol takes ' // &
+                    '(|value| and |value x FONC_MULT| <= ' // to_text(MAX_STRAIN) // ')')
                 call load_locate(item, k, st)
                 if (st%failed()) return
             end do
         end do
     end subroutine point_values
+
+    pure logical function strain_fits(value, factor)
+        real(dp), intent(in) :: value, factor
+        strain_fits = .false.
+        if (abs(value) > MAX_STRAIN) return
+        if (.not. product_fits(factor, value)) return
+        strain_fits = abs(factor * value) <= MAX_STRAIN
+    end function strain_fits
 
     ! Plane cell: eps0 (xx, yy, zz, xy engineering) at the RIGI points, f0 by the law.
     subroutine plane_forces(s, item, c, t, factor, fe, st)

@@ -248,17 +248,29 @@ contains
     end function number_passes
 
     !> x equal to value within the filter's PRECISION (0: exactly).
+    !> Formed in halves so that no difference or product overflows, whatever finite numbers
+    !> the table and the deck hold (|x - v| <= p |r|  <=>  |x/2 - v/2| <= (p |r|)/2, and for
+    !> p > 1  <=>  |x/2 - v/2| / p <= |r|/2): the same answer as the plain test wherever
+    !> that one is finite.
     pure logical function equal_within(x, value, f)
         real(dp), intent(in) :: x, value
         type(table_filter_t), intent(in) :: f
+        real(dp) :: half_difference, reference
         if (f%precision <= 0.0_dp) then
             equal_within = .not. (x < value .or. x > value)
-        else if (f%absolute) then
-            equal_within = abs(x - value) <= f%precision
-        else if (f%cell_relative) then
-            equal_within = abs(x - value) <= f%precision * abs(x)
+            return
+        end if
+        half_difference = abs(0.5_dp * x - 0.5_dp * value)
+        if (f%absolute) then
+            equal_within = half_difference <= 0.5_dp * f%precision
+            return
+        end if
+        reference = abs(value)
+        if (f%cell_relative) reference = abs(x)
+        if (f%precision <= 1.0_dp) then
+            equal_within = half_difference <= 0.5_dp * (f%precision * reference)
         else
-            equal_within = abs(x - value) <= f%precision * abs(value)
+            equal_within = half_difference / f%precision <= 0.5_dp * reference
         end if
     end function equal_within
 
