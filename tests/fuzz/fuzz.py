@@ -320,7 +320,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE,
-    # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE);
+    # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE); LIAISON_PROJ on PROJ_CHAMP's
+    # correspondence (IDENTITE on plane solids, EXCENTREMENT on plates);
     # the loads' resultants (PESANTEUR, FORCE_ARETE, FORCE_COQUE, FORCE_INTERNE, PRES_REP).
     for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
                        ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
@@ -328,7 +329,9 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        ("plate_load_resultants", os.path.join(verif, "loaded_plate.mail")),
                        ("plane_load_resultants", os.path.join(verif, "loaded_block.mail")),
                        ("glued_plan", os.path.join(verif, "glued_plan.mail")),
-                       ("glued_plate", os.path.join(verif, "glued_plate.mail"))):
+                       ("glued_plate", os.path.join(verif, "glued_plate.mail")),
+                       ("proj_plan", os.path.join(verif, "glued_plan.mail")),
+                       ("proj_plate", os.path.join(verif, "proj_plate.mail"))):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": mesh}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
