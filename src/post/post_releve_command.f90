@@ -40,8 +40,7 @@ module post_releve_command
     use deck_command, only: command_t, keyword_set_t
     use deck_catalog, only: split_words
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name, &
-        cell_name
+    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name
     use field_types, only: field_t, FIELD_NOEU, FIELD_ELNO, field_component, field_position, &
         field_location_name
     use field_concept, only: field_concept_t
@@ -50,7 +49,7 @@ module post_releve_command
     use result_instants, only: selected_instants
     use table_concept, only: table_t, table_init, table_add_column, table_add_rows, &
         table_find_column, table_set_int, table_set_real, table_set_text, TABLE_INT, &
-        TABLE_REAL, TABLE_TEXT, table_text_width_for
+        TABLE_REAL, TABLE_TEXT, table_text_width_for, table_entity_label
     use table_keywords, only: relocate_at, warn_at
     use crea_table_command, only: result_of_occurrence, mesh_of_support
     use crea_champ_command, only: selected_nodes, selected_cells
@@ -1562,9 +1561,9 @@ contains
         do m = 1, size(pv%node)
             n = pv%node(m)
             call start_row(t, act, src, r, st)
-            call put_text(t, 'NOEUD', r, node_name(mesh, int(n, i4)), 8, st)
-            if (pv%cell(m) > 0) call put_text(t, 'MAILLE', r, cell_name(mesh, &
-                int(pv%cell(m), i4)), 8, st)
+            call put_text(t, 'NOEUD', r, table_entity_label(n), 8, st)
+            if (pv%cell(m) > 0) call put_text(t, 'MAILLE', r, &
+                table_entity_label(pv%cell(m)), 8, st)
             call put_real(t, 'ABSC_CURV', r, absc(along(n)), st)
             call put_real(t, 'COOR_X', r, mesh%coords(1, n), st)
             call put_real(t, 'COOR_Y', r, mesh%coords(2, n), st)
@@ -1773,7 +1772,7 @@ contains
         do q = 1, 4
             call start_row(t, act, src, r, st)
             call put_text(t, 'EXTREMA', r, trim(KINDS(q)), 8, st)
-            call put_text(t, 'NOEUD', r, to_text(int(where(q), i4)), 8, st)
+            call put_text(t, 'NOEUD', r, table_entity_label(where(q)), 8, st)
             call put_text(t, 'CMP', r, src%f%components(which(q))%s, 8, st)
             call put_real(t, 'VALE', r, best(q), st)
             if (st%failed()) return
