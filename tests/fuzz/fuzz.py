@@ -289,6 +289,13 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_energy_plane", files, args,
                       dict(comm_targets, **{"patch_tria6.mail": "mail",
                                             "patch_quad4.mail": "mail"}), 0.4))
+    # CREA_CHAMP OPERATION='NORMALE' on the edges of a 12-gon and the faces of a plate patch.
+    seeds.append(Seed("fields_normale",
+                      {"case.comm": os.path.join(fields, "crea_champ_normale.comm"),
+                       "disc.mail": os.path.join(fields, "disc_12.mail"),
+                       "dkq.mail": os.path.join(verif, "patch_dkq.mail")},
+                      ["--unit", "20=disc.mail", "--unit", "21=dkq.mail"],
+                      dict(comm_targets, **{"disc.mail": "mail"}), 0.4))
     # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
     seeds.append(Seed("ideas_mesh",
                       {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
