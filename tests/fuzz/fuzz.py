@@ -219,6 +219,15 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("plane_thermal", files, [],
                       {"case.export": "export", "thermal_plane.comm": "deck",
                        "thermal_tria6.mail": "mail", "thermal_quad8.mail": "mail"}, 0.6))
+    # The shrinkage strains of AFFE_VARC HYDR and SECH (B_ENDOGE, K_DESSIC, EVOL_SECH,
+    # HYDR_NOEU) and CALC_CHAMP's EPME_ELGA / EPSP_ELGA on the plane strips.
+    files = {"case.export": os.path.join(plane, "shrinkage_plane.export"),
+             "shrinkage_plane.comm": os.path.join(plane, "shrinkage_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("plane_shrinkage", files, [],
+                      {"case.export": "export", "shrinkage_plane.comm": "deck",
+                       "thermal_quad8.mail": "mail"}, 0.5))
     # ELAS_ORTH plane elements in AFFE_CARA_ELEM MASSIF frames (ANGL_REP, ORIG_AXE).
     files = {"case.export": os.path.join(plane, "orthotropic_plane.export"),
              "orthotropic_plane.comm": os.path.join(plane, "orthotropic_plane.comm")}
