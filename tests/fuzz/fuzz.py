@@ -298,6 +298,13 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_energy_plane", files, args,
                       dict(comm_targets, **{"patch_tria6.mail": "mail",
                                             "patch_quad4.mail": "mail"}), 0.4))
+    # CREA_CHAMP OPERATION='NORMALE' on the edges of a 12-gon and the faces of a plate patch.
+    seeds.append(Seed("fields_normale",
+                      {"case.comm": os.path.join(fields, "crea_champ_normale.comm"),
+                       "disc.mail": os.path.join(fields, "disc_12.mail"),
+                       "dkq.mail": os.path.join(verif, "patch_dkq.mail")},
+                      ["--unit", "20=disc.mail", "--unit", "21=dkq.mail"],
+                      dict(comm_targets, **{"disc.mail": "mail"}), 0.4))
     # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
     seeds.append(Seed("ideas_mesh",
                       {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
@@ -330,7 +337,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE,
     # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE); LIAISON_PROJ on PROJ_CHAMP's
-    # correspondence (IDENTITE on plane solids, EXCENTREMENT on plates);
+    # correspondence (IDENTITE on plane solids, EXCENTREMENT on plates); STAT_NON_LINE's
+    # follower PRES_REP (EXCIT TYPE_CHARGE='SUIV', functions of XF, YF);
     # the loads' resultants (PESANTEUR, FORCE_ARETE, FORCE_COQUE, FORCE_INTERNE, PRES_REP).
     for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
                        ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
@@ -340,7 +348,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        ("glued_plan", os.path.join(verif, "glued_plan.mail")),
                        ("glued_plate", os.path.join(verif, "glued_plate.mail")),
                        ("proj_plan", os.path.join(verif, "glued_plan.mail")),
-                       ("proj_plate", os.path.join(verif, "proj_plate.mail"))):
+                       ("proj_plate", os.path.join(verif, "proj_plate.mail")),
+                       ("follower_pressure", os.path.join(verif, "follower_square.mail"))):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": mesh}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
