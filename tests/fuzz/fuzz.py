@@ -408,6 +408,12 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "case.20": os.path.join(tables, "lign_coupe.mail")},
                       ["--unit", "20=case.20"],
                       dict(comm_targets, **{"case.20": "mail"}), 0.6))
+    # MACR_LIGN_COUPE's frames (POLAIRE, LOCAL on a node path, CYLINDRIQUE) and quantities
+    # (INVARIANT, ELEM_PRINCIPAUX, TRAC_NOR, TRAC_DIR) on the annulus and its turned copy.
+    seeds.append(Seed("lign_coupe_frames",
+                      {"case.comm": os.path.join(tables, "lign_coupe_frames.comm"),
+                       "case.mail": os.path.join(tables, "annulus.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.8))
     # POST_ELEM MASS_INER: a plane rectangle of four cell types, a tilted plate.
     seeds.append(Seed("post_elem",
                       {"case.comm": os.path.join(tables, "post_elem.comm"),
