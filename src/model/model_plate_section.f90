@@ -496,8 +496,9 @@ contains
             call set_error(st, st%code, b // '/' // key // ' at TEMP = ' // real_e13(temp) // &
                 ': ' // st%message)
         else if (st%failed()) then
-            call set_error(st, st%code, b // '/' // key // ' (no AFFE_VARC TEMP): ' // &
-                st%message)
+            call set_error(st, st%code, b // '/' // key // ': ' // st%message // &
+                ' (parasol''s elements take the ' // b // ' functions of no parameter, ' // &
+                'DEFI_CONSTANTE: give ELAS, or constant functions)')
         end if
     end subroutine material_value
 

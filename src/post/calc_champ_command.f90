@@ -18,8 +18,9 @@
 !> stresses/strains point by point. A field an option needs is taken as the result stores
 !> it (a POST_CHAMP layer), else computed on the way (and not stored).
 module calc_champ_command
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, &
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, &
         STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text
     use deck_value, only: append_string
@@ -540,19 +541,5 @@ contains
         type(string_t), allocatable, intent(out) :: words(:)
         call split_words(text, words)
     end subroutine split
-
-    !> Locates a failed status at `key`, keeping its message and category.
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        if (code /= STATUS_NOT_IMPLEMENTED) code = STATUS_MODEL_ERROR
-        call clear_status(st)
-        call kws%error_at(key, message, st, code)
-    end subroutine relocate
 
 end module calc_champ_command
