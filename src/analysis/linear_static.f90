@@ -9,8 +9,10 @@
 !> The .mess says how many digits each answer holds: a last solve with the final residual
 !> estimates its error (answer_digits).
 !> DIS_CHOC is not a MECA_STATIQUE behaviour: s%choc must be all .false. (springs linear).
+!> The .mess ends with the time of each phase (numbering and the solver's analysis,
+!> assembly, factorization, loads and solves): what doc/performance.md's benchmarks read.
 module linear_static
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text
     use sparse_matrix, only: sym_matrix_t, sym_move
@@ -69,11 +71,14 @@ contains
             forc(:)
         type(elimination_t) :: elim
         integer(i4) :: k, n_eq, pass
+        integer(i8) :: t_start, t_opened, t_factored, t_end, rate
+        real(dp) :: assembly_seconds, factor_seconds
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
                 'springs need STAT_NON_LINE')
             return
         end if
+        call system_clock(t_start, rate)
         n_eq = s%dofs%n_equations
         if (present(progress)) call progress_note(progress, 'MECA_STATIQUE: ' // &
             to_text(n_eq) // ' equations, ' // to_text(size(times, kind=i4)) // ' instant(s)')
@@ -94,8 +99,11 @@ contains
         allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
             x(map%n_free), du(n_eq), closed(0), fn(0))
         u = 0.0_dp
-        call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
+        call system_clock(t_opened)
+        call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
+            assembly_seconds, factor_seconds)
         if (st%failed()) return
+        call system_clock(t_factored)
         call result_init(res, 'evol_elas', s%mesh, s%dofs, int(size(times), i4))
         do k = 1, int(size(times), i4)
             u = 0.0_dp
@@ -130,6 +138,30 @@ contains
                 // ')')
         end do
         if (len(solver%iteration_summary()) > 0) call log_add(log, solver%iteration_summary())
+        call system_clock(t_end)
+        call log_add(log, 'MECA_STATIQUE times: numbering and analysis ' // &
+            seconds_text(elapsed(t_start, t_opened, rate)) // ' s, assembly ' // &
+            seconds_text(assembly_seconds) // ' s, factorization ' // &
+            seconds_text(factor_seconds) // ' s, other ' // &
+            seconds_text(elapsed(t_opened, t_factored, rate) - assembly_seconds - &
+            factor_seconds) // ' s, loads and solves ' // &
+            seconds_text(elapsed(t_factored, t_end, rate)) // ' s')
     end subroutine meca_statique
+
+    ! Seconds between two clock readings.
+    pure real(dp) function elapsed(t0, t1, rate)
+        integer(i8), intent(in) :: t0, t1, rate
+        elapsed = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
+    end function elapsed
+
+    ! Seconds with 3 decimals for the .mess (negative round-off shown as 0).
+    function seconds_text(t) result(text)
+        real(dp), intent(in) :: t
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        write (buf, '(f0.3)') max(t, 0.0_dp)
+        text = trim(buf)
+        if (text(1:1) == '.') text = '0' // text
+    end function seconds_text
 
 end module linear_static
