@@ -21,6 +21,8 @@ module command_registration
     use mesh_group_commands, only: run_defi_group
     use mesh_modify_commands, only: run_modi_maillage, set_field_support_resolver
     use field_support, only: mesh_of_support
+    use relation_proj, only: set_projection_resolver
+    use projection_links, only: links_of_projection
     use mesh_create_commands, only: run_crea_maillage
     use model_commands, only: run_affe_modele
     use material_commands, only: run_defi_materiau, run_affe_materiau
@@ -88,6 +90,7 @@ contains
         call ctx%register('AFFE_MATERIAU', run_affe_materiau)
         call ctx%register('AFFE_CARA_ELEM', run_affe_cara_elem)
         call ctx%register('AFFE_CHAR_MECA', run_affe_char_meca)
+        call set_projection_resolver(links_of_projection)   ! LIAISON_PROJ's PROJ_CHAMP links
         call ctx%register('AFFE_CHAR_MECA_F', run_affe_char_meca_f)
         call ctx%register('AFFE_CHAR_CINE', run_affe_char_cine)
         call ctx%register('AFFE_CHAR_CINE_F', run_affe_char_cine_f)

@@ -199,7 +199,7 @@ contains
 
     !> The LIAISON_* keywords (linear relations between components; Code_Aster U4.44.01):
     !> LIAISON_DDL, LIAISON_OBLIQUE, LIAISON_GROUP, LIAISON_UNIF, and in AFFE_CHAR_MECA
-    !> LIAISON_SOLIDE, LIAISON_MAIL and LIAISON_RBE3.
+    !> LIAISON_SOLIDE, LIAISON_MAIL, LIAISON_PROJ and LIAISON_RBE3.
     subroutine describe_relations(c, vtype)
         type(catalog_t), intent(inout) :: c
         character(len=*), intent(in) :: vtype
@@ -290,6 +290,16 @@ contains
         call c%key('CHAM_NORMALE', 'cham_no_sdaster', req=.true.)
         call c%end_bloc()
         call c%key('ELIM_MULT', 'TXM', def='OUI', into=OUI_NON)
+        call c%end_fact()
+
+        ! LIAISON_PROJ (Code_Aster affe_char_meca.py): the relations of a PROJ_CHAMP
+        ! correspondence (relation_proj). DDL: Code_Aster takes any mechanical component
+        ! (C_NOM_DDL_INTO('MECANIQUE')); parasol's elements have these. TYPE defaults to
+        ! 'IDENTITE' as in Code_Aster.
+        call c%fact('LIAISON_PROJ', max=MANY)
+        call c%key('MATR_PROJECTION', 'corresp_2_mailla', req=.true.)
+        call c%key('DDL', 'TXM', max=MANY, req=.true., into=DOFS)
+        call c%key('TYPE', 'TXM', def='IDENTITE', into='IDENTITE EXCENTREMENT')
         call c%end_fact()
 
         call c%fact('LIAISON_RBE3', max=MANY)

@@ -205,6 +205,12 @@ contains
             select case (t)
             case ('f', 'F', '%')
                 if (p < 0) p = 6
+                ! Python forms x*100 in floating point: past huge/100 it is inf ('inf%').
+                if (t == '%' .and. a > huge(a) / 100.0_dp) then
+                    body = 'inf%'
+                    call finish_number(body, sign(1.0_dp, x) < 0.0_dp, spec, text)
+                    return
+                end if
                 if (t == '%') a = a * 100.0_dp
                 body = fixed(a, p)
                 if (spec%alternate .and. p == 0) body = body // '.'

@@ -26,6 +26,7 @@ module load_commands
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
         liaison_group_item
     use relation_mail, only: liaison_mail_item
+    use relation_proj, only: liaison_proj_item
     implicit none
     private
 
@@ -241,7 +242,8 @@ contains
         call move_alloc(cm, result)
     end subroutine build_char_meca
 
-    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands, relation_mail).
+    !> FACE_IMPO, ARETE_IMPO and the LIAISON_* keywords (relation_commands, relation_mail,
+    !> relation_proj).
     subroutine relation_items(ctx, cmd, mc, functions, loads, st)
         type(run_context_t), intent(inout) :: ctx
         type(command_t), intent(in) :: cmd
@@ -291,6 +293,10 @@ contains
         allocate (elim(mc%mesh%n_nodes), source=.false.)
         do i = 1, cmd%count('LIAISON_MAIL')
             call liaison_mail_item(ctx, cmd%occurrence('LIAISON_MAIL', i), mc, elim, loads, st)
+            if (st%failed()) return
+        end do
+        do i = 1, cmd%count('LIAISON_PROJ')
+            call liaison_proj_item(ctx, cmd%occurrence('LIAISON_PROJ', i), mc, loads, st)
             if (st%failed()) return
         end do
     end subroutine relation_items

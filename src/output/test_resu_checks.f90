@@ -220,7 +220,10 @@ contains
         if (occ%has('GROUP_MA')) cell_key = 'GROUP_MA'
         if (occ%has('MAILLE')) cell_key = 'MAILLE'
         if (f%location == FIELD_NOEU) then
-            if (len(cell_key) > 0) then
+            ! a cell with the node (Code_Aster's decks give GROUP_MA with GROUP_NO on a
+            ! *_NOEU field, as for the *_ELNO lines around it): the node alone locates
+            ! the value, the cell is not read (Code_Aster reads a nodal field at the node)
+            if (len(cell_key) > 0 .and. len(node_key) == 0) then
                 call occ%error_at(cell_key, field_word // ' is a nodal field: give GROUP_NO ' &
                     // 'or NOEUD', st)
                 return

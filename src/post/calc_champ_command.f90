@@ -5,6 +5,8 @@
 !>               SIEF_NOEU, EFGE_ELGA, EFGE_ELNO, EFGE_NOEU
 !>   DEFORMATION EPSI_ELGA, EPSI_ELNO, EPSI_NOEU, DEGE_ELGA, DEGE_ELNO, DEGE_NOEU
 !>   CRITERES    SIEQ_ELGA, SIEQ_ELNO, SIEQ_NOEU, EPEQ_ELGA, EPEQ_ELNO, EPEQ_NOEU
+!>   ENERGIE     ENEL_ELGA, ENEL_ELNO, ENEL_NOEU, ENEL_ELEM, ETOT_ELGA, ETOT_ELNO,
+!>               ETOT_NOEU, ETOT_ELEM (energy_fields)
 !>   FORCE       FORC_NODA, REAC_NODA
 !> on NUME_ORDRE / INST / LIST_INST / TOUT_ORDRE (default every instant) and TOUT /
 !> GROUP_MA (default every cell). How each is made (Code_Aster's element catalogue,
@@ -36,6 +38,7 @@ module calc_champ_command
     use plate_options, only: PLATE_FORCES, PLATE_GENERAL, PLATE_FORCES_CMPS, &
         PLATE_GENERAL_CMPS
     use field_transforms, only: gauss_to_nodes, nodes_average, equivalent_field
+    use energy_fields, only: energy_field
     implicit none
     private
 
@@ -43,7 +46,8 @@ module calc_champ_command
     character(len=*), parameter, public :: CALC_CHAMP_BUILT = 'SIEF_ELGA SIGM_ELGA ' // &
         'SIGM_ELNO SIGM_NOEU SIEF_ELNO SIEF_NOEU EFGE_ELGA EFGE_ELNO EFGE_NOEU EPSI_ELGA ' // &
         'EPSI_ELNO EPSI_NOEU DEGE_ELGA DEGE_ELNO DEGE_NOEU SIEQ_ELGA SIEQ_ELNO SIEQ_NOEU ' // &
-        'EPEQ_ELGA EPEQ_ELNO EPEQ_NOEU FORC_NODA REAC_NODA'
+        'EPEQ_ELGA EPEQ_ELNO EPEQ_NOEU ENEL_ELGA ENEL_ELNO ENEL_NOEU ENEL_ELEM ETOT_ELGA ' // &
+        'ETOT_ELNO ETOT_NOEU ETOT_ELEM FORC_NODA REAC_NODA'
     character(len=12), parameter :: FAMILIES(6) = ['CONTRAINTE  ', 'DEFORMATION ', &
         'ENERGIE     ', 'CRITERES    ', 'FORCE       ', 'VARI_INTERNE']
 
@@ -276,9 +280,11 @@ contains
                 call input_field(job, at, 'SIEF_ELGA', source, st)
                 if (st%ok()) call restrict_components(source, 'SIXX SIYY SIZZ SIXY SIXZ ' // &
                     'SIYZ', made, st)
-            case ('SIGM_ELNO', 'SIEF_ELNO', 'EPSI_ELNO')
+            case ('SIGM_ELNO', 'SIEF_ELNO', 'EPSI_ELNO', 'ENEL_ELNO', 'ETOT_ELNO')
                 call input_field(job, at, base // '_ELGA', source, st)
                 if (st%ok()) call gauss_to_nodes(source, r%mesh, r%model, made, st)
+            case ('ENEL_ELGA', 'ENEL_ELEM', 'ETOT_ELGA', 'ETOT_ELEM')
+                call energy_field(r, at, name, job%cells, made, st)
             case ('EFGE_ELGA')
                 call forces_field(job, r, at, FIELD_ELGA, made, st)
             case ('EFGE_ELNO')

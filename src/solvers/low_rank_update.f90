@@ -228,6 +228,13 @@ contains
             return
         end if
         alpha = work%rz / pq
+        ! A step the reals cannot hold (loads near huge(1.0_dp): the solution overflows)
+        ! ends CG as a breakdown: the caller's direct solve then meets and reports it.
+        if (.not. step_fits(alpha, work%scale, work%p, work%x)) then
+            report%outcome = PCG_BREAKDOWN
+            work%x = 0.0_dp
+            return
+        end if
         work%x = work%x + (alpha * work%scale) * work%p
         work%r = work%r - alpha * work%q
         work%alphas(k) = alpha
@@ -253,6 +260,24 @@ contains
         work%p = work%z + beta * work%p
         more = .true.
     end subroutine pcg_continue
+
+    !> .true. when x + (alpha scale) p is finite in every entry, formed without overflow.
+    pure logical function step_fits(alpha, scale, p, x) result(fits)
+        real(dp), intent(in) :: alpha, scale, p(:), x(:)
+        real(dp) :: pmax, xmax
+        fits = .false.
+        pmax = 0.0_dp
+        xmax = 0.0_dp
+        if (size(p) > 0) pmax = maxval(abs(p))
+        if (size(x) > 0) xmax = maxval(abs(x))
+        if (xmax > 0.5_dp * huge(alpha)) return
+        ! compared in logarithms, which no operand can overflow
+        if (abs(alpha) > 0.0_dp .and. scale > 0.0_dp .and. pmax > 0.0_dp) then
+            if (log10(abs(alpha)) + log10(scale) + log10(pmax) > &
+                log10(0.5_dp * huge(alpha))) return
+        end if
+        fits = .true.
+    end function step_fits
 
     !> Extreme eigenvalues of the Lanczos matrix of k CG steps with step lengths alphas(1:k)
     !> and direction updates betas(1:k-1) (Golub & Van Loan 11.3.5): diagonal

@@ -273,6 +273,29 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("fields_frame", {"case.comm": os.path.join(fields, "modi_repere.comm"),
                                        "case.mail": os.path.join(verif, "patch_plan.mail")},
                       [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+    # CALC_CHAMP ENERGIE: ENEL_* on DKT/DKQ plates, ENEL_* and ETOT_* (a STAT_NON_LINE
+    # history) on the plane family's five cell types.
+    seeds.append(Seed("fields_energy_plate",
+                      {"case.comm": os.path.join(fields, "energy_plate.comm"),
+                       "dkt.mail": os.path.join(verif, "patch_dkt.mail"),
+                       "dkq.mail": os.path.join(verif, "patch_dkq.mail")},
+                      ["--unit", "20=dkt.mail", "--unit", "21=dkq.mail"],
+                      dict(comm_targets, **{"dkt.mail": "mail", "dkq.mail": "mail"}), 0.4))
+    files = {"case.comm": os.path.join(fields, "energy_patch.comm")}
+    args = []
+    for unit, cell in enumerate(("tria3", "tria6", "quad4", "quad8", "quad9"), start=20):
+        files["patch_%s.mail" % cell] = os.path.join(plane, "patch_%s.mail" % cell)
+        args += ["--unit", "%d=patch_%s.mail" % (unit, cell)]
+    seeds.append(Seed("fields_energy_plane", files, args,
+                      dict(comm_targets, **{"patch_tria6.mail": "mail",
+                                            "patch_quad4.mail": "mail"}), 0.4))
+    # CREA_CHAMP OPERATION='NORMALE' on the edges of a 12-gon and the faces of a plate patch.
+    seeds.append(Seed("fields_normale",
+                      {"case.comm": os.path.join(fields, "crea_champ_normale.comm"),
+                       "disc.mail": os.path.join(fields, "disc_12.mail"),
+                       "dkq.mail": os.path.join(verif, "patch_dkq.mail")},
+                      ["--unit", "20=disc.mail", "--unit", "21=dkq.mail"],
+                      dict(comm_targets, **{"disc.mail": "mail"}), 0.4))
     # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
     seeds.append(Seed("ideas_mesh",
                       {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
@@ -304,7 +327,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                                     "case.mail": os.path.join(verif, "patch_plan.mail")}, [],
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE,
-    # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE);
+    # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE); LIAISON_PROJ on PROJ_CHAMP's
+    # correspondence (IDENTITE on plane solids, EXCENTREMENT on plates);
     # the loads' resultants (PESANTEUR, FORCE_ARETE, FORCE_COQUE, FORCE_INTERNE, PRES_REP).
     for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
                        ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
@@ -312,7 +336,9 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        ("plate_load_resultants", os.path.join(verif, "loaded_plate.mail")),
                        ("plane_load_resultants", os.path.join(verif, "loaded_block.mail")),
                        ("glued_plan", os.path.join(verif, "glued_plan.mail")),
-                       ("glued_plate", os.path.join(verif, "glued_plate.mail"))):
+                       ("glued_plate", os.path.join(verif, "glued_plate.mail")),
+                       ("proj_plan", os.path.join(verif, "glued_plan.mail")),
+                       ("proj_plate", os.path.join(verif, "proj_plate.mail"))):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": mesh}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
