@@ -192,9 +192,9 @@ contains
     !>  matrix : inout, the pattern in, the assembled matrix out
     !>  solver : inout, analysed (open_solver); factored on return
     !>  held   : out, the held equations
-    !>  assembly_seconds, factor_seconds : out, the time of each (the .mess summary)
+    !>  assembly_time : out, the assembly's wall and CPU seconds (the .mess summary)
     subroutine factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
-                                          assembly_seconds, factor_seconds)
+                                          assembly_time)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -204,11 +204,11 @@ contains
         type(solver_options_t), intent(in) :: options
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
-        real(dp), intent(out) :: assembly_seconds, factor_seconds
+        real(dp), intent(out) :: assembly_time(2)
         type(pivot_diagnosis_t) :: diag
         type(pivot_record_t) :: one
         call assemble_and_factor(s, map, u, .false., matrix, solver, diag, st, held=held, &
-            log=log, assembly_seconds=assembly_seconds, factor_seconds=factor_seconds)
+            log=log, assembly_time=assembly_time)
         if (st%failed()) return
         if (diag%kind /= PIVOT_FREE) call accumulate_pivots(diag, one)
         call log_add(log, solver_diagnostics_line(one, options%nprec, options%method))
@@ -223,9 +223,9 @@ contains
     !>  history : in, optional, DIS_CONTACT state at the start of the step
     !>  held  : inout, optional, the equations the factor holds (check off)
     !>  log   : inout, optional, gets the factorization line (method, ordering, size, time)
-    !>  assembly_seconds, factor_seconds : out, optional, the time of each
+    !>  assembly_time : out, optional, the assembly's wall and CPU seconds
     subroutine assemble_and_factor(s, map, u, elastic, matrix, solver, diag, st, cache, &
-                                   history, held, log, assembly_seconds, factor_seconds)
+                                   history, held, log, assembly_time)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -238,21 +238,23 @@ contains
         type(contact_history_t), intent(in), optional :: history
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
-        real(dp), intent(out), optional :: assembly_seconds, factor_seconds
+        real(dp), intent(out), optional :: assembly_time(2)
         real(dp), allocatable :: ksr(:, :)
+        real(dp) :: cpu0, cpu1
         integer(i8) :: t0, t1, rate
         call progress_update(solver%progress, 'assembly of the ' // &
             trim(merge('elastic', 'tangent', elastic)) // ' matrix')
         call system_clock(t0, rate)
+        call cpu_time(cpu0)
         call assemble_stiffness(s, map, u, elastic, matrix, st, cache, history)
         call system_clock(t1)
-        if (present(assembly_seconds)) assembly_seconds = real(t1 - t0, dp) / &
-            real(max(rate, 1_i8), dp)
+        call cpu_time(cpu1)
+        if (present(assembly_time)) assembly_time = [real(t1 - t0, dp) / &
+            real(max(rate, 1_i8), dp), cpu1 - cpu0]
         if (st%failed()) return
         call modes_support(s, map, solver, u, elastic, ksr, st, history)
         if (st%failed()) return
-        call factor_and_classify(s, map, matrix, solver, ksr, diag, st, held, log, &
-            factor_seconds)
+        call factor_and_classify(s, map, matrix, solver, ksr, diag, st, held, log)
     end subroutine assemble_and_factor
 
     !> Factors the assembled matrix without stopping and classifies its pivots
@@ -262,9 +264,7 @@ contains
     !>  matrix : inout, the assembled matrix (anchor rows and columns zeroed on return when
     !>           modes are kept apart)
     !>  ksr    : in, (n_free, m) K_s R at the assembled state (modes_support)
-    !>  factor_seconds : out, optional, the factorization's time (as its .mess line says)
-    subroutine factor_and_classify(s, map, matrix, solver, ksr, diag, st, held, log, &
-                                   factor_seconds)
+    subroutine factor_and_classify(s, map, matrix, solver, ksr, diag, st, held, log)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         type(sym_matrix_t), intent(inout) :: matrix
@@ -274,7 +274,6 @@ contains
         type(status_t), intent(out) :: st
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
-        real(dp), intent(out), optional :: factor_seconds
         type(factor_report_t) :: report
         real(dp) :: largest
         real(dp), allocatable :: pivots(:)
@@ -286,10 +285,8 @@ contains
         type is (two_level_solver_t)
             call isolate_anchors(solver, matrix)
         end select
-        if (present(factor_seconds)) factor_seconds = 0.0_dp
         call solver%factor(matrix, report, st)
         if (st%failed()) return
-        if (present(factor_seconds)) factor_seconds = report%seconds
         if (present(log)) call log_add(log, factorization_line(report))
         select type (solver)
         type is (two_level_solver_t)

@@ -9,8 +9,9 @@
 !> The .mess says how many digits each answer holds: a last solve with the final residual
 !> estimates its error (answer_digits).
 !> DIS_CHOC is not a MECA_STATIQUE behaviour: s%choc must be all .false. (springs linear).
-!> The .mess ends with the time of each phase (numbering and the solver's analysis,
-!> assembly, factorization, loads and solves): what doc/performance.md's benchmarks read.
+!> The .mess ends with the wall and CPU time of each phase (numbering and the solver's
+!> analysis, assembly, factorization with its pivot diagnosis, loads and solves): what
+!> doc/performance.md's benchmarks read.
 module linear_static
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -71,14 +72,13 @@ contains
             forc(:)
         type(elimination_t) :: elim
         integer(i4) :: k, n_eq, pass
-        integer(i8) :: t_start, t_opened, t_factored, t_end, rate
-        real(dp) :: assembly_seconds, factor_seconds
+        real(dp) :: clock(2, 4), assembly_time(2)     ! (wall, CPU) at the phases' ends
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
                 'springs need STAT_NON_LINE')
             return
         end if
-        call system_clock(t_start, rate)
+        call read_clocks(clock(:, 1))
         n_eq = s%dofs%n_equations
         if (present(progress)) call progress_note(progress, 'MECA_STATIQUE: ' // &
             to_text(n_eq) // ' equations, ' // to_text(size(times, kind=i4)) // ' instant(s)')
@@ -99,11 +99,11 @@ contains
         allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
             x(map%n_free), du(n_eq), closed(0), fn(0))
         u = 0.0_dp
-        call system_clock(t_opened)
+        call read_clocks(clock(:, 2))
         call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
-            assembly_seconds, factor_seconds)
+            assembly_time)
         if (st%failed()) return
-        call system_clock(t_factored)
+        call read_clocks(clock(:, 3))
         call result_init(res, 'evol_elas', s%mesh, s%dofs, int(size(times), i4))
         do k = 1, int(size(times), i4)
             u = 0.0_dp
@@ -138,23 +138,30 @@ contains
                 // ')')
         end do
         if (len(solver%iteration_summary()) > 0) call log_add(log, solver%iteration_summary())
-        call system_clock(t_end)
-        call log_add(log, 'MECA_STATIQUE times: numbering and analysis ' // &
-            seconds_text(elapsed(t_start, t_opened, rate)) // ' s, assembly ' // &
-            seconds_text(assembly_seconds) // ' s, factorization ' // &
-            seconds_text(factor_seconds) // ' s, other ' // &
-            seconds_text(elapsed(t_opened, t_factored, rate) - assembly_seconds - &
-            factor_seconds) // ' s, loads and solves ' // &
-            seconds_text(elapsed(t_factored, t_end, rate)) // ' s')
+        call read_clocks(clock(:, 4))
+        call log_add(log, 'MECA_STATIQUE times (wall / CPU s): numbering and analysis ' // &
+            pair(clock(:, 2) - clock(:, 1)) // ', assembly ' // pair(assembly_time) // &
+            ', factorization ' // pair(clock(:, 3) - clock(:, 2) - assembly_time) // &
+            ', loads and solves ' // pair(clock(:, 4) - clock(:, 3)))
     end subroutine meca_statique
 
-    ! Seconds between two clock readings.
-    pure real(dp) function elapsed(t0, t1, rate)
-        integer(i8), intent(in) :: t0, t1, rate
-        elapsed = real(t1 - t0, dp) / real(max(rate, 1_i8), dp)
-    end function elapsed
+    ! Wall-clock and process CPU seconds now.
+    subroutine read_clocks(now)
+        real(dp), intent(out) :: now(2)
+        integer(i8) :: ticks, rate
+        call system_clock(ticks, rate)
+        now(1) = real(ticks, dp) / real(max(rate, 1_i8), dp)
+        call cpu_time(now(2))
+    end subroutine read_clocks
 
-    ! Seconds with 3 decimals for the .mess (negative round-off shown as 0).
+    ! 'wall / CPU' seconds for the .mess.
+    function pair(t) result(text)
+        real(dp), intent(in) :: t(2)
+        character(len=:), allocatable :: text
+        text = seconds_text(t(1)) // ' / ' // seconds_text(t(2))
+    end function pair
+
+    ! Seconds with 3 decimals (a negative round-off shown as 0).
     function seconds_text(t) result(text)
         real(dp), intent(in) :: t
         character(len=:), allocatable :: text

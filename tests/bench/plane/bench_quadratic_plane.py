@@ -14,9 +14,10 @@ left edge in DX, the top edge moved by DY = 1e-3: a uniform plane-strain stretch
 every element type reproduces exactly, so the run also checks its answer (TEST_RESU of DX
 at the top right corner against -1e-3 nu / (1 - nu)).
 
-Prints per case the whole run's wall and CPU time (os.wait4), peak RSS, and the times
-MECA_STATIQUE writes in the .mess (assembly, factorization, the rest), then each type's
-ratio to QUAD4 and the share of assembly in the run:
+Prints per case the whole run's wall and CPU time (os.wait4), peak RSS, and the wall/CPU
+times MECA_STATIQUE writes in the .mess (numbering and the solver's analysis, assembly,
+factorization, loads and solves), then each type's ratio to QUAD4 and the share of assembly
+in the run (wall/CPU):
 
   RESULT type=QUAD8 equations=... wall=... cpu=... assembly=... factorization=... ...
 
@@ -155,19 +156,21 @@ def run_case(parasol, workdir, cell, n):
         print("FAILED: %s (exit %d; %s.mess)" % (cell, code, stem))
         return None
     mess = open(stem + ".mess").read()
-    times = re.search(r"MECA_STATIQUE times: numbering and analysis ([0-9.]+) s, assembly "
-                      r"([0-9.]+) s, factorization ([0-9.]+) s, other ([0-9.]+) s, loads "
-                      r"and solves ([0-9.]+) s", mess)
+    pair = r"([0-9.]+) / ([0-9.]+)"
+    times = re.search(r"MECA_STATIQUE times \(wall / CPU s\): numbering and analysis %s, "
+                      r"assembly %s, factorization %s, loads and solves %s"
+                      % (pair, pair, pair, pair), mess)
     equations = re.search(r"METHODE MULT_FRONT: (\d+) free equations", mess)
     terms = re.search(r"factorization MULT_FRONT \(ordering (\w+)\): (\d+) terms", mess)
     if not (times and equations and terms):
         print("FAILED: no MECA_STATIQUE times in %s.mess" % stem)
         return None
-    analysis, assembly, factor, other, solves = (float(t) for t in times.groups())
+    t = [float(v) for v in times.groups()]
     return dict(type=cell, n=n, equations=int(equations.group(1)), wall=wall,
                 cpu=usage.ru_utime + usage.ru_stime, rss_mb=usage.ru_maxrss / 1024.0,
-                analysis=analysis, assembly=assembly, factorization=factor, other=other,
-                solves=solves, terms=int(terms.group(2)), ordering=terms.group(1))
+                analysis=t[0], analysis_cpu=t[1], assembly=t[2], assembly_cpu=t[3],
+                factorization=t[4], factorization_cpu=t[5], solves=t[6], solves_cpu=t[7],
+                terms=int(terms.group(2)), ordering=terms.group(1))
 
 
 def main():
@@ -193,10 +196,12 @@ def main():
     for cell in cells:
         r = best[cell]
         line = ("RESULT type=%(type)s n=%(n)d equations=%(equations)d wall=%(wall).2f "
-                "cpu=%(cpu).2f rss_mb=%(rss_mb).0f analysis=%(analysis).2f "
-                "assembly=%(assembly).2f factorization=%(factorization).2f "
-                "other=%(other).2f solves=%(solves).2f factor_terms=%(terms)d" % r)
-        line += " assembly_share=%.3f" % (r["assembly"] / r["wall"])
+                "cpu=%(cpu).2f rss_mb=%(rss_mb).0f analysis=%(analysis).2f/%(analysis_cpu).2f "
+                "assembly=%(assembly).2f/%(assembly_cpu).2f "
+                "factorization=%(factorization).2f/%(factorization_cpu).2f "
+                "solves=%(solves).2f/%(solves_cpu).2f factor_terms=%(terms)d" % r)
+        line += " assembly_share=%.3f/%.3f" % (r["assembly"] / r["wall"],
+                                               r["assembly_cpu"] / r["cpu"])
         if base is not None:
             line += " wall_vs_quad4=%.2f cpu_vs_quad4=%.2f" % (r["wall"] / base["wall"],
                                                                r["cpu"] / base["cpu"])
