@@ -5,13 +5,21 @@ model A (tools/make_ssnl130_case.py, MULT_FRONT), runs the case with CALC_CHAMP 
 after the analysis (the base), and the same followed by N extractions of DEPL (a NOEU_DEPL_R
 field, 6 components on every node) and N of SIGM_ELNO (an ELNO_SIEF_R field, 6 components
 at 4 nodes x 3 sub-points of every plate cell); the CPU time (user + system, os.wait4) of
-the second less the first, over 2 N, is the time of one extraction. Best of --repeat runs.
+the second less the first, over 2 N, is the time of one extraction (with the DETRUIRE that
+forgets it: a name given again keeps the concept it named). Best of --repeat runs.
 
   RESULT mesh=128x512 nodes=... cells=... values=... extr_ms=...
 
+With --callgrind the extraction deck runs once under valgrind's callgrind, collecting only
+inside CREA_CHAMP: the instructions of one extraction, a figure the machine's load does not
+move (the analysis runs ~50 times slower under valgrind: take small plates).
+
+  RESULT mesh=64x256 ... instructions_per_extr=...
+
 usage: bench_crea_champ_extr.py PARASOL WORKDIR [--meshes 64x256,128x512] [--count N]
-                                [--repeat R]
+                                [--repeat R] [--callgrind]
 """
+import re
 import argparse
 import os
 import subprocess
@@ -28,6 +36,7 @@ for k in range({count}):
                      NOM_CHAM='DEPL', INST=1.0)
     EXS = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='ELNO_SIEF_R', RESULTAT=RESU,
                      NOM_CHAM='SIGM_ELNO', INST=1.0)
+    DETRUIRE(NOM=(EXD, EXS))
 """
 
 
@@ -43,6 +52,20 @@ def cpu_of(parasol, deck, workdir):
     return usage.ru_utime + usage.ru_stime
 
 
+def instructions_of(parasol, deck, workdir):
+    """Instructions executed inside CREA_CHAMP in one run of `deck` (callgrind)."""
+    out = os.path.join(workdir, "callgrind.out")
+    proc = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out,
+                           "--toggle-collect=__crea_champ_command_MOD_run_crea_champ",
+                           parasol, "--quiet", "--outdir", workdir, deck],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    found = re.search(r"Collected : (\d+)", proc.stdout)
+    if proc.returncode != 0 or not found:
+        sys.stdout.write(proc.stdout[-3000:])
+        raise SystemExit("FAILED under callgrind: %s" % deck)
+    return int(found.group(1))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("parasol")
@@ -50,6 +73,7 @@ def main():
     parser.add_argument("--meshes", default="64x256,128x512")
     parser.add_argument("--count", type=int, default=200)
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--callgrind", action="store_true")
     args = parser.parse_args()
     os.makedirs(args.workdir, exist_ok=True)
     for mesh in args.meshes.split(","):
@@ -69,13 +93,19 @@ def main():
             if not os.path.exists("%s_%s.mail" % (stem, name)):
                 os.symlink(os.path.basename(stem + ".mail"), "%s_%s.mail" % (stem, name))
             decks[name] = deck
+        nodes = (nx + 1) * (ny + 1)
+        cells = nx * ny
+        values = nodes * 6 + cells * 4 * 3 * 6
+        if args.callgrind:
+            count = instructions_of(args.parasol, decks["extr"], args.workdir)
+            print("RESULT mesh=%s nodes=%d cells=%d values=%d instructions_per_extr=%d "
+                  "per_value=%.2f" % (mesh, nodes, cells, values, count // (2 * args.count),
+                                      count / (2.0 * args.count) / values), flush=True)
+            continue
         base = min(cpu_of(args.parasol, decks["base"], args.workdir)
                    for _ in range(args.repeat))
         extr = min(cpu_of(args.parasol, decks["extr"], args.workdir)
                    for _ in range(args.repeat))
-        nodes = (nx + 1) * (ny + 1)
-        cells = nx * ny
-        values = nodes * 6 + cells * 4 * 3 * 6
         print("RESULT mesh=%s nodes=%d cells=%d values=%d base_cpu=%.2f extr_cpu=%.2f "
               "extr_ms=%.3f" % (mesh, nodes, cells, values, base, extr,
                                 1000.0 * (extr - base) / (2 * args.count)), flush=True)
