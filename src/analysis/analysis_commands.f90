@@ -23,7 +23,7 @@ module analysis_commands
     use real_list, only: real_list_t
     use time_stepping, only: list_inst_concept_t, step_cutting_t, step_cutting_for
     use assembly_system, only: structure_t, structure_check
-    use assembly_loads, only: check_imposed_owners, record_imposed
+    use assembly_loads, only: check_imposed_owners, record_imposed, follower_refusal
     use model_loads, only: load_item_where
     use function_concept, only: param_binding_t
     use direct_solver, only: solver_options_t
@@ -359,6 +359,8 @@ contains
                     p%type_name(), st)
                 return
             end select
+            call read_type_charge(occ, s, excit(k), st)
+            if (st%failed()) return
             if (.not. occ%has('FONC_MULT')) cycle
             call occ%get_concept('FONC_MULT', p, st)
             if (st%failed()) return
@@ -371,6 +373,36 @@ contains
             end select
         end do
     end subroutine gather_excitations
+
+    !> EXCIT/TYPE_CHARGE (STAT_NON_LINE; Code_Aster U4.51.03): FIXE_CSTE (default) and SUIV,
+    !> the follower load, for the loads that may follow (assembly_loads follower_refusal);
+    !> FIXE_PILO and SUIV_PILO need PILOTAGE, DIDI an initial state: not built.
+    subroutine read_type_charge(occ, s, e, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(structure_t), intent(in) :: s
+        type(excitation_t), intent(inout) :: e
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: kind, why
+        if (.not. occ%has('TYPE_CHARGE')) return
+        call occ%get_text('TYPE_CHARGE', kind, st)
+        if (st%failed()) return
+        select case (kind)
+        case ('FIXE_CSTE')
+        case ('SUIV')
+            why = follower_refusal(s, e%load)
+            if (len(why) > 0) then
+                call occ%error_at('TYPE_CHARGE', "TYPE_CHARGE='SUIV': " // why, st, &
+                    code=STATUS_NOT_IMPLEMENTED)
+                return
+            end if
+            e%follower = .true.
+        case default
+            call occ%error_at('TYPE_CHARGE', "TYPE_CHARGE='" // kind // "' is not built in " // &
+                "parasol ('FIXE_PILO' and 'SUIV_PILO' are loads driven by PILOTAGE, 'DIDI' " // &
+                "differential Dirichlet conditions); 'FIXE_CSTE' and 'SUIV' are", st, &
+                code=STATUS_NOT_IMPLEMENTED)
+        end select
+    end subroutine read_type_charge
 
     !> COMPORTEMENT: RELATION per cell (TOUT or GROUP_MA; later occurrences win). The contact
     !> laws DIS_CHOC and DIS_CONTACT apply to discrete (DIS_T, 2D_DIS_T) cells only.

@@ -62,7 +62,8 @@ module contact_newton
     use analysis_log, only: analysis_log_t, log_add, log_flush
     use analysis_solver, only: open_solver, log_numbering, solver_diagnostics_line, &
         solve_held, answer_digits, real_digits
-    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
+    use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces, &
+        follower_loads_at, has_followers
     use analysis_relations, only: prepare_relations, relations_at
     use assembly_relations, only: elimination_t
     use newton_state, only: newton_options_t, newton_summary_t, newton_state_t, &
@@ -364,7 +365,7 @@ contains
         type(newton_summary_t), intent(inout) :: summary
         type(status_t), intent(out) :: st
         logical, allocatable :: start(:), history(:, :), full(:), tight(:)
-        real(dp), allocatable :: r(:), b(:), x(:), du_body(:), resi_history(:)
+        real(dp), allocatable :: r(:), b(:), x(:), du_body(:), resi_history(:), fext_fixed(:)
         real(dp) :: resi_rela, resi_maxi, previous_maxi, seconds, t0, step_start, alpha
         integer(i4) :: iter, changed, use, mode
         logical :: zero_load, converged, said_zero, settled, solve_tightly, searchable, searched
@@ -379,6 +380,13 @@ contains
         if (st%ok()) call relations_at(s, excit, map, t, state%u, st)
         if (st%failed()) return
         state%du = state%u - state%u_start
+        ! follower loads (TYPE_CHARGE='SUIV'): on the geometry of the prediction, then of each
+        ! iterate (doc/analysis.md "Follower loads")
+        if (has_followers(excit)) then
+            fext_fixed = state%fext
+            call follower_loads_at(s, excit, t, state%u, state%fext, st)
+            if (st%failed()) return
+        end if
         start = state%closed
         allocate (history(size(state%closed), 0:options%iter_glob_maxi), &
             full(0:options%iter_glob_maxi), tight(0:options%iter_glob_maxi), &
@@ -448,6 +456,11 @@ contains
             end if
             if (st%failed()) return
             changed = count(state%closed .neqv. history(:, iter), kind=i4)
+            if (allocated(fext_fixed)) then
+                state%fext = fext_fixed
+                call follower_loads_at(s, excit, t, state%u, state%fext, st)
+                if (st%failed()) return
+            end if
             call residual_measures(map, state%fint, state%fext, resi_rela, &
                 resi_maxi, zero_load)
             resi_history(iter) = resi_maxi

@@ -16,7 +16,7 @@ module assembly_loads
         LOAD_FORCE_NODALE, LOAD_FORCE_COQUE, LOAD_PRES_REP, LOAD_FORCE_CONTOUR, SLOT_PRES, &
         LOAD_FORCE_ARETE, LOAD_FORCE_INTERNE, LOAD_PESANTEUR, SLOT_CISA, SLOT_ANGLES, &
         PLAN_SUP, PLAN_INF, LOAD_KIND_NAMES, load_locate, load_slot_name, item_slot_name, &
-        LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE
+        LOAD_PRE_EPSI, LOAD_PRE_EPSI_PLATE, LOAD_RELATION
     use assembly_pre_epsi, only: add_pre_epsi_forces
     use model_material, only: material_of_cell
     use model_relations, only: nautical_frame
@@ -33,7 +33,7 @@ module assembly_loads
     private
 
     public :: mark_imposed, impose_values, add_external_forces, check_imposed_owners, &
-        record_imposed
+        record_imposed, add_follower_forces, follower_refusal
 
     !> Relative difference under which two values imposed on one component are the same.
     real(dp), parameter :: SAME_IMPOSED_VALUE = 1.0e-12_dp
@@ -257,6 +257,76 @@ contains
         end do
     end subroutine add_external_forces
 
+    !> The forces of a follower load set (STAT_NON_LINE EXCIT TYPE_CHARGE='SUIV') at time t
+    !> on the current geometry X + u (times factor), added to fext: PRES_REP on plane edges
+    !> (edge_cell_forces). Which loads may follow is checked by the analysis
+    !> (follower_refusal).
+    subroutine add_follower_forces(s, load, t, factor, u, fext, st)
+        type(structure_t), intent(in) :: s
+        type(load_set_t), intent(in) :: load
+        real(dp), intent(in) :: t, factor, u(:)
+        real(dp), intent(inout) :: fext(:)
+        type(status_t), intent(out) :: st
+        integer(i4) :: k, i
+        do k = 1, load%n_items
+            if (load%items(k)%kind /= LOAD_PRES_REP) cycle
+            do i = 1, size(load%items(k)%cells)
+                call edge_cell_forces(s, load%items(k), load%items(k)%cells(i), t, factor, &
+                    fext, st, u)
+                if (st%failed()) return
+            end do
+        end do
+    end subroutine add_follower_forces
+
+    !> Why a load set cannot be a follower load in parasol ('' when it can). Code_Aster lets
+    !> FORCE_FACE, FORCE_POUTRE, PESANTEUR, ROTATION, PRES_REP, FORCE_COQUE's PRES (3D shells)
+    !> and EFFE_FOND follow the geometry (its loadMecaCompute_type table; U4.51.03
+    !> EXCIT/TYPE_CHARGE) and refuses the others (CHARGES8_13) and every Dirichlet load
+    !> (CHARGES5: DDL_IMPO, relations, AFFE_CHAR_CINE). parasol builds PRES_REP on the edges
+    !> of plane models (SEG2, SEG3); PESANTEUR, FORCE_COQUE and PRES_REP on plates are
+    !> refused as not built.
+    function follower_refusal(s, load) result(why)
+        type(structure_t), intent(in) :: s
+        type(load_set_t), intent(in) :: load
+        character(len=:), allocatable :: why
+        integer(i4) :: k, i
+        why = ''
+        if (load%kinematic) then
+            why = 'a kinematic load (AFFE_CHAR_CINE) imposes values: a Dirichlet load ' // &
+                'cannot follow the geometry (Code_Aster CHARGES5); give it in another ' // &
+                "EXCIT occurrence with TYPE_CHARGE='FIXE_CSTE'"
+            return
+        end if
+        do k = 1, load%n_items
+            associate (item => load%items(k))
+                select case (item%kind)
+                case (LOAD_PRES_REP)
+                    do i = 1, size(item%cells)
+                        if (is_plane_edge(s%model%element(item%cells(i)))) cycle
+                        why = 'PRES_REP follows the geometry on the SEG2 and SEG3 edges of ' // &
+                            'D_PLAN/C_PLAN models in parasol; a follower pressure on ' // &
+                            cell_label(s%mesh, item%cells(i), item%group) // ' is not built'
+                        return
+                    end do
+                case (LOAD_DDL_IMPO, LOAD_RELATION)
+                    why = trim(LOAD_KIND_NAMES(item%kind)) // ' is a Dirichlet condition: it ' // &
+                        'cannot follow the geometry (Code_Aster CHARGES5); give it in a ' // &
+                        "load of its own, TYPE_CHARGE='FIXE_CSTE'"
+                    return
+                case (LOAD_PESANTEUR, LOAD_FORCE_COQUE)
+                    why = trim(LOAD_KIND_NAMES(item%kind)) // ' as a follower load is not ' // &
+                        'built in parasol (PRES_REP on plane edges is)'
+                    return
+                case default
+                    why = trim(LOAD_KIND_NAMES(item%kind)) // ' cannot follow the geometry ' // &
+                        "(Code_Aster CHARGES8_13): give it with TYPE_CHARGE='FIXE_CSTE', in a " // &
+                        'load of its own if it shares one with a follower pressure'
+                    return
+                end select
+            end associate
+        end do
+    end function follower_refusal
+
     !> FORCE_NODALE at its nodes; with ANGL_NAUT the forces and moments are components in
     !> the frame of the angles (evaluated at the node), turned to global ones: f = p^T f'
     !> (model_relations nautical_frame, Code_Aster's utpvlg).
@@ -420,15 +490,21 @@ contains
     !> model (per unit length, unit depth), evaluated at the edge's load points
     !> (element_loads): the traction of PRES_REP is -p n + c t, t = (-n_y, n_x) the tangent
     !> node 1 -> node 2 (Code_Aster nmpr2d_vect).
-    subroutine edge_cell_forces(s, item, c, t, factor, fext, st)
+    !> With `u` (a follower load, STAT_NON_LINE TYPE_CHARGE='SUIV'), the points, normals and
+    !> lengths are those of the current edge x = X + u (Code_Aster te0573, CHAR_MECA_PRSU),
+    !> the value functions seeing X, Y at the points of the initial edge and XF, YF at the
+    !> current ones; without it XF = YF = 0 (Code_Aster evalPressureSetFuncPara).
+    subroutine edge_cell_forces(s, item, c, t, factor, fext, st, u)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
         integer(i4), intent(in) :: c
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: u(:)
         real(dp) :: x(2, MAX_EDGE_NODES), q(2, MAX_EDGE_POINTS), fe(2 * MAX_EDGE_NODES), v(2)
-        type(edge_points_t) :: pts
+        real(dp) :: xf(3)
+        type(edge_points_t) :: pts, pts0
         integer(i4) :: g, a, comp, p0, eq, nn, slot
         if (.not. is_plane_edge(s%model%element(c))) then
             call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(item%kind)) // &
@@ -439,17 +515,35 @@ contains
         p0 = s%mesh%cell_ptr(c)
         nn = s%mesh%cell_ptr(c + 1) - p0
         x(:, 1:nn) = s%mesh%coords(1:2, s%mesh%cell_nodes(p0:p0 + nn - 1))
-        call edge_load_points(s%mesh%cell_type(c), x(:, 1:nn), pts, st)
+        call edge_load_points(s%mesh%cell_type(c), x(:, 1:nn), pts0, st)
         if (st%failed()) return
+        pts = pts0
+        if (present(u)) then
+            do a = 1, nn
+                do comp = 1, 2
+                    eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
+                    if (eq > 0) x(comp, a) = x(comp, a) + u(eq)
+                end do
+            end do
+            call edge_load_points(s%mesh%cell_type(c), x(:, 1:nn), pts, st)
+            if (st%failed()) then
+                call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(item%kind)) // &
+                    " (TYPE_CHARGE='SUIV') on " // cell_label(s%mesh, c, item%group) // &
+                    ' in its current position: ' // st%message)
+                return
+            end if
+        end if
         q = 0.0_dp
         do g = 1, pts%n
             v = 0.0_dp
+            xf = 0.0_dp
+            if (present(u)) xf(1:2) = pts%x(:, g)
             do comp = 1, 2
                 slot = comp
                 if (item%kind == LOAD_PRES_REP) slot = merge(SLOT_PRES, SLOT_CISA, comp == 1)
                 if (.not. item%values(slot)%given) cycle
                 call load_value_at(item%values(slot), item%kind, slot, t, &
-                    [pts%x(1, g), pts%x(2, g), 0.0_dp], v(comp), st)
+                    [pts0%x(1, g), pts0%x(2, g), 0.0_dp], v(comp), st, x_current=xf)
                 if (st%ok()) call check_factor(pts%w(g), v(comp), item%kind, slot, st)
                 if (st%ok()) call check_factor(factor, v(comp) * pts%w(g), item%kind, &
                                                slot, st)

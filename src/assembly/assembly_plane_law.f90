@@ -2,6 +2,9 @@
 !> (assembly_system), its initial-strain forces (assembly_varc, PRE_EPSI) and its stresses
 !> (element_fields) take.
 !>  - ELAS: isotropic (element_plane plane_law_isotropic);
+!>  - ELAS_FO: isotropic with its E and NU, as the plates take them (model_plate_section
+!>    elas_fo_isotropic: functions of no parameter, DEFI_CONSTANTE; a function of the
+!>    temperature is a located error, as the law is one per cell);
 !>  - ELAS_ORTH: orthotropic in the material frame (L, T, N) that AFFE_CARA_ELEM MASSIF
 !>    gives the cell (model_cara_elem: L turned by alpha about Z from global X, N = Z; the
 !>    global frame without MASSIF), as Code_Aster's ELAS_ORTH on 2D solids (U4.43.01,
@@ -22,6 +25,7 @@ module assembly_plane_law
         behaviour_number
     use model_cara_elem, only: cara_elem_t, material_axis_angle
     use element_plane, only: plane_law_t, plane_law_isotropic, plane_law_from_d4
+    use model_plate_section, only: elas_fo_isotropic
     implicit none
     private
 
@@ -45,7 +49,7 @@ contains
         integer(i4), intent(in) :: c
         type(plane_law_t), intent(out) :: law
         type(status_t), intent(out) :: st
-        real(dp) :: d4(4, 4), alpha
+        real(dp) :: d4(4, 4), alpha, young, nu
         integer(i4) :: m
         m = material_of_cell(materials, c)
         if (m == 0) then
@@ -61,9 +65,13 @@ contains
                 if (st%ok()) call orthotropic_plane_d4(mat, alpha, d4, st)
                 if (st%ok()) call plane_law_from_d4(d4, is_plane_strain(model%element(c)), &
                     law, st)
+            else if (has_behaviour(mat, 'ELAS_FO')) then
+                call elas_fo_isotropic(mat, young, nu, st)
+                if (st%ok()) call plane_law_isotropic(young, nu, &
+                    is_plane_strain(model%element(c)), law, st)
             else
-                call set_error(st, STATUS_MODEL_ERROR, 'its material has neither ELAS ' // &
-                    'nor ELAS_ORTH')
+                call set_error(st, STATUS_MODEL_ERROR, 'its material has neither ELAS, ' // &
+                    'ELAS_FO nor ELAS_ORTH')
             end if
         end associate
     end subroutine plane_cell_law

@@ -147,6 +147,9 @@ contains
                 else if (is_plane_solid(kind) .and. .not. s%materials%materials(m)%has_elas &
                          .and. elastic_behaviour(s%materials%materials(m)) == 'ELAS_ORTH') then
                     what = ''                  ! orthotropic plane law (assembly_plane_law)
+                else if (is_plane_solid(kind) .and. .not. s%materials%materials(m)%has_elas &
+                         .and. elastic_behaviour(s%materials%materials(m)) == 'ELAS_FO') then
+                    what = ''                  ! ELAS_FO's E, NU (assembly_plane_law)
                 else if (.not. s%materials%materials(m)%has_elas) then
                     what = 'no ELAS in its material'
                     law = elastic_behaviour(s%materials%materials(m))

@@ -12,6 +12,13 @@
 !>    given at the sub-points (CREA_RESU PREP_VARC); the forces of the membrane and bending
 !>    thermal resultants N0 = int Dm eps_th dz, M0 = int Dm eps_th z dz.
 !> Cells whose material has no ALPHA get nothing, with or without a temperature.
+!>
+!> The shrinkage of the hydration and the drying (AFFE_VARC HYDR and SECH; B_ENDOGE and
+!> K_DESSIC, model_thermal) adds to the thermal strain of plane cells, interpolated from the
+!> nodes at each point as the temperature (Code_Aster's CHAR_MECA_HYDR_R / SECH_R on its
+!> C_PLAN and D_PLAN elements). Code_Aster's plates (DKT, DKQ: te0312) do not take them: a
+!> plate cell that sees HYDR with B_ENDOGE /= 0, or SECH with K_DESSIC /= 0, is a located
+!> error, as there.
 module assembly_varc
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
@@ -24,8 +31,10 @@ module assembly_varc
     use model_material, only: material_field_t, material_t, material_of_cell, behaviour_number
     use model_cara_elem, only: cara_elem_t
     use model_varc, only: cell_temperature_t, varc_cell_temperature, varc_has_any, &
-        TEMP_NONE, TEMP_UNIFORM, TEMP_PROFILE, TEMP_SUBPOINTS
-    use model_thermal, only: thermal_strain, has_thermal_expansion
+        varc_cell_has, varc_cell_scalar, TEMP_NONE, TEMP_UNIFORM, TEMP_PROFILE, &
+        TEMP_SUBPOINTS, VARC_HYDR, VARC_SECH
+    use model_thermal, only: thermal_strain, has_thermal_expansion, shrinks_with, &
+        shrinkage_strain, SHRINKAGE_KEY_HYDR, SHRINKAGE_KEY_SECH
     use element_gauss_families, only: gauss_rule_t
     use element_plane, only: plane_law_t, plane_rigi_rule, plane_initial_strain_forces
     use assembly_plane_law, only: plane_cell_law
@@ -56,10 +65,10 @@ contains
         type(status_t), intent(out) :: st
         integer(i4) :: c, kind, m, n, j, eqs(MAX_ELEMENT_DOFS)
         real(dp) :: fe(MAX_ELEMENT_DOFS)
-        logical :: orthotropic
+        logical :: orthotropic, expands
         if (.not. varc_has_any(s%materials%varc)) return
         do c = 1, s%mesh%n_cells
-            if (s%materials%varc%cell_source(c) == 0) cycle
+            if (.not. varc_cell_has(s%materials%varc, c)) cycle
             kind = s%model%element(c)
             if (.not. (is_plate(kind) .or. is_plane_solid(kind))) cycle
             m = material_of_cell(s%materials, c)
@@ -73,7 +82,9 @@ contains
                     'built; its temperature would be ignored')
                 return
             end if
-            if (.not. has_thermal_expansion(s%materials%materials(m))) cycle
+            expands = has_thermal_expansion(s%materials%materials(m))
+            if (.not. expands) expands = shrinks(s%materials%materials(m))
+            if (.not. expands) cycle
             call element_equations(s, c, eqs, n)
             if (is_plane_solid(kind)) then
                 call plane_cell_forces(s, c, t, fe(1:n), st)
@@ -86,6 +97,15 @@ contains
             end do
         end do
     end subroutine add_varc_forces
+
+    ! True when the material gives a shrinkage coefficient (B_ENDOGE or K_DESSIC) not zero.
+    logical function shrinks(mat)
+        type(material_t), intent(in) :: mat
+        logical :: sech
+        shrinks = shrinks_with(mat, SHRINKAGE_KEY_HYDR)
+        sech = shrinks_with(mat, SHRINKAGE_KEY_SECH)
+        shrinks = shrinks .or. sech
+    end function shrinks
 
     ! True when the material's ELAS_ORTH gives a thermal expansion (an ALPHA_* not zero).
     logical function orthotropic_expansion(mat)
@@ -101,8 +121,10 @@ contains
         end do
     end function orthotropic_expansion
 
-    !> Thermal strains (xx, yy, zz, xy engineering) at the points of `rule` on plane cell c
-    !> at instant t; all zero (and has = .false.) without a temperature or ALPHA.
+    !> Command-variable strains (xx, yy, zz, xy engineering) at the points of `rule` on
+    !> plane cell c at instant t: the thermal strain plus the shrinkage of HYDR and SECH
+    !> (module header); all zero (and has = .false.) when the cell sees none of them or
+    !> its material has no ALPHA, B_ENDOGE or K_DESSIC.
     !>  eps : out, eps(4, rule%n)
     subroutine plane_thermal_strains(mesh, model, materials, c, t, rule, eps, has, st)
         type(mesh_t), intent(in) :: mesh
@@ -115,23 +137,46 @@ contains
         logical, intent(out) :: has
         type(status_t), intent(out) :: st
         type(cell_temperature_t) :: temp
-        real(dp) :: n(MAX_CELL_NODES), dn(2, MAX_CELL_NODES), tg, e
+        real(dp), allocatable :: hydr(:), sech(:)
+        real(dp) :: n(MAX_CELL_NODES), dn(2, MAX_CELL_NODES), tg, e, e_var, sref, unused
         integer(i4) :: g, m, nn, ctype
+        logical :: has_t, has_h, has_s
         eps = 0.0_dp
-        call expanding_cell(mesh, materials, c, t, m, temp, has, st)
-        if (.not. has) return
-        if (temp%kind /= TEMP_UNIFORM) then
+        call expanding_cell(mesh, materials, c, t, m, temp, has_t, st)
+        if (st%failed()) return
+        if (has_t .and. temp%kind /= TEMP_UNIFORM) then
             call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, c) // ' (' // &
                 trim(ELEMENT_NAMES(model%element(c))) // '): TEMP_INF, TEMP_MIL, ' // &
                 'TEMP_SUP and layers are for plates; a plane element takes TEMP')
             return
         end if
+        call shrinking_cell(mesh, materials, c, t, VARC_HYDR, SHRINKAGE_KEY_HYDR, hydr, &
+                            unused, has_h, st)
+        if (st%ok()) call shrinking_cell(mesh, materials, c, t, VARC_SECH, &
+            SHRINKAGE_KEY_SECH, sech, sref, has_s, st)
+        if (st%failed()) return
+        has = has_t .or. has_h .or. has_s
+        if (.not. has) return
+        m = material_of_cell(materials, c)
         ctype = mesh%cell_type(c)
         nn = CELL_TYPE_NODES(ctype)
         do g = 1, rule%n
             call cell_shape(ctype, rule%xi(1, g), rule%xi(2, g), n(1:nn), dn(:, 1:nn))
-            tg = dot_product(n(1:nn), temp%t(1, 1:nn))
-            call thermal_strain(materials%materials(m), tg, temp%vale_ref, e, st)
+            e = 0.0_dp
+            if (has_t) then
+                tg = dot_product(n(1:nn), temp%t(1, 1:nn))
+                call thermal_strain(materials%materials(m), tg, temp%vale_ref, e, st)
+            end if
+            if (st%ok() .and. has_h) then
+                call shrinkage_strain(materials%materials(m), SHRINKAGE_KEY_HYDR, &
+                    dot_product(n(1:nn), hydr(1:nn)), 0.0_dp, e_var, st)
+                e = e + e_var
+            end if
+            if (st%ok() .and. has_s) then
+                call shrinkage_strain(materials%materials(m), SHRINKAGE_KEY_SECH, &
+                    dot_product(n(1:nn), sech(1:nn)), sref, e_var, st)
+                e = e + e_var
+            end if
             if (st%failed()) then
                 call set_error(st, st%code, cell_label(mesh, c) // ': ' // st%message)
                 return
@@ -139,6 +184,27 @@ contains
             eps(1:3, g) = e
         end do
     end subroutine plane_thermal_strains
+
+    ! The nodal values of command variable `variable` on cell c at instant t, when the
+    ! cell sees it and its material's shrinkage coefficient `key` is not zero (has).
+    subroutine shrinking_cell(mesh, materials, c, t, variable, key, values, vref, has, st)
+        type(mesh_t), intent(in) :: mesh
+        type(material_field_t), intent(in) :: materials
+        integer(i4), intent(in) :: c, variable
+        real(dp), intent(in) :: t
+        character(len=*), intent(in) :: key
+        real(dp), allocatable, intent(out) :: values(:)
+        real(dp), intent(out) :: vref
+        logical, intent(out) :: has
+        type(status_t), intent(out) :: st
+        integer(i4) :: m
+        has = .false.
+        vref = 0.0_dp
+        m = material_of_cell(materials, c)
+        if (m == 0) return
+        if (.not. shrinks_with(materials%materials(m), key)) return
+        call varc_cell_scalar(materials%varc, mesh, c, variable, t, values, vref, has, st)
+    end subroutine shrinking_cell
 
     ! Thermal forces of a plane cell (element_plane: D_PLAN's restrained zz included).
     subroutine plane_cell_forces(s, c, t, fe, st)
@@ -171,9 +237,10 @@ contains
         fits = product_fits(maxval(abs(eps)), dmax)
         if (fits) fits = product_fits(maxval(abs(eps)) * dmax, MAX_LENGTH)
         if (.not. fits) then
-            call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': a thermal ' // &
-                'strain of ' // real_e13(maxval(abs(eps))) // ' (AFFE_VARC TEMP, ALPHA) ' // &
-                'gives stresses beyond double precision; check the temperature field')
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c) // ': a command-' // &
+                'variable strain of ' // real_e13(maxval(abs(eps))) // ' (AFFE_VARC TEMP, ' // &
+                'HYDR, SECH) gives stresses beyond double precision; check the fields ' // &
+                'and ALPHA, B_ENDOGE, K_DESSIC')
             return
         end if
         p0 = s%mesh%cell_ptr(c)
@@ -203,6 +270,9 @@ contains
         real(dp) :: h, tz, cp1, cp2, cp3
         integer(i4) :: g, m, nn, layers, k, nsub
         eps = 0.0_dp
+        has = .false.
+        call refuse_plate_shrinkage(mesh, materials, c, st)
+        if (st%failed()) return
         call expanding_cell(mesh, materials, c, t, m, temp, has, st)
         if (.not. has) return
         layers = cara%coque_layers(c)
@@ -289,6 +359,32 @@ contains
         if (st%failed()) call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // &
             st%message)
     end subroutine plate_cell_forces
+
+    ! Code_Aster's plates refuse the shrinkage strains (te0312): a plate cell seeing HYDR
+    ! with B_ENDOGE /= 0 or SECH with K_DESSIC /= 0 is an error, naming the cell.
+    subroutine refuse_plate_shrinkage(mesh, materials, c, st)
+        type(mesh_t), intent(in) :: mesh
+        type(material_field_t), intent(in) :: materials
+        integer(i4), intent(in) :: c
+        type(status_t), intent(out) :: st
+        integer(i4) :: m
+        logical :: hydr, sech
+        m = material_of_cell(materials, c)
+        if (m == 0) return
+        hydr = shrinks_with(materials%materials(m), SHRINKAGE_KEY_HYDR)
+        sech = shrinks_with(materials%materials(m), SHRINKAGE_KEY_SECH)
+        if (hydr .and. varc_cell_has(materials%varc, c, VARC_HYDR)) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, c) // ': a plate ' // &
+                '(DKT, DKQ) does not take the endogenous shrinkage of AFFE_VARC HYDR; ' // &
+                'its material gives B_ENDOGE /= 0 (Code_Aster refuses it too: give ' // &
+                'B_ENDOGE = 0 or no HYDR on the plates)')
+        else if (sech .and. varc_cell_has(materials%varc, c, VARC_SECH)) then
+            call set_error(st, STATUS_MODEL_ERROR, cell_label(mesh, c) // ': a plate ' // &
+                '(DKT, DKQ) does not take the desiccation shrinkage of AFFE_VARC SECH; ' // &
+                'its material gives K_DESSIC /= 0 (Code_Aster refuses it too: give ' // &
+                'K_DESSIC = 0 or no SECH on the plates)')
+        end if
+    end subroutine refuse_plate_shrinkage
 
     ! The material m and temperature of cell c at instant t; has = .false. (and nothing to
     ! do) when the cell has no material, no ALPHA or no temperature.

@@ -39,7 +39,11 @@ contains
         call c%fact('EXCIT', max=MANY, req=.true.)
         call c%key('CHARGE', 'char_meca|char_cine_meca', req=.true.)
         call c%key('FONC_MULT', 'FUNC')
-        call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', into='FIXE_CSTE', noop=.true.)
+        ! Code_Aster's stat_non_line.py: FIXE_CSTE (default), FIXE_PILO, SUIV, SUIV_PILO,
+        ! DIDI; the handler builds FIXE_CSTE and SUIV (follower PRES_REP on plane edges,
+        ! analysis_excitation) and refuses the others by name
+        call c%key('TYPE_CHARGE', 'TXM', def='FIXE_CSTE', &
+                   into='FIXE_CSTE FIXE_PILO SUIV SUIV_PILO DIDI')
         call c%end_fact()
         ! Code_Aster's ETAT_INIT (stat_non_line.py): a state of an EVOL_NOLI (NUME_ORDRE or
         ! INST, default its last) or fields DEPL, SIGM, VARI (refused by the handler: parasol
@@ -80,6 +84,10 @@ contains
         call c%key('MATRICE', 'TXM', def='TANGENTE', into='TANGENTE ELASTIQUE')
         call c%key('REAC_INCR', 'I', def='1', vmin=0.0_dp)     ! Code_Aster default, val_min
         call c%key('REAC_ITER', 'I', def='0', vmin=0.0_dp)     ! Code_Aster default, val_min
+        ! Code_Aster symmetrises the tangent with 'OUI'; parasol's tangent is symmetric
+        ! either way (it leaves out the non-symmetric follower-pressure stiffness:
+        ! doc/analysis.md "Follower loads"), so both values mean the same here
+        call c%key('MATR_RIGI_SYME', 'TXM', def='NON', into=OUI_NON, noop=.true.)
         call c%end_fact()
         ! Code_Aster's C_RECH_LINEAIRE (c_rech_lineaire.py): residual_line_search
         call c%fact('RECH_LINEAIRE')

@@ -5,44 +5,19 @@
 module mesh_command_support
     use kinds, only: i4
     use status, only: status_t, format_status
-    use strings, only: string_t, starts_with, to_text
+    use strings, only: string_t, to_text
     use deck_command, only: keyword_set_t
+    use keyword_relocation, only: relocate_error
     use run_context, only: run_context_t
     use mesh_types, only: mesh_t, find_cell_group, cells_of_group, find_node_group, &
-        nodes_of_group, node_name
+        nodes_of_group, node_name, find_cell, find_node
     implicit none
     private
 
     public :: relocate_error, read_groups, group_cells, all_cells, warn_at, read_node_groups, &
-        group_first_node
+        group_first_node, mark_cells, mark_nodes, mark_nodes_of_cells
 
 contains
-
-    !> Re-reports a failed status at keyword `key` of `kws` (deck file, line, column,
-    !> COMMAND/FACTOR/KEY), keeping its category and message. A lower layer that named a
-    !> more precise keyword of the same factor (st%keyword = 'FACTOR/KEY') wins over `key`.
-    !> Does nothing when st is ok.
-    !>  kws : in, the command or factor occurrence;  key : in, default keyword
-    !>  st  : inout, the status to relocate
-    subroutine relocate_error(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message, where
-        integer :: code
-        if (st%ok()) return
-        code = st%code
-        message = 'unspecified failure'
-        if (allocated(st%message)) message = st%message
-        where = key
-        if (allocated(st%keyword) .and. allocated(kws%scope)) then
-            if (len(kws%scope) > 0 .and. starts_with(st%keyword, kws%scope // '/')) then
-                where = st%keyword(len(kws%scope) + 2:)
-                if (.not. kws%has(where)) where = key
-            end if
-        end if
-        call kws%error_at(where, message, st, code=code)
-    end subroutine relocate_error
 
     !> The group names of keyword `key` (e.g. GROUP_MA), each checked against the cell
     !> groups of `mesh`.
@@ -176,4 +151,90 @@ contains
         end do
     end function all_cells
 
+    !> Marks in `mask` the cells that keyword `groups` (GROUP_MA, ...) and keyword `names`
+    !> (MAILLE, ...) of `occ` name; keywords absent from occ mark nothing.
+    !>  mask : inout, one entry per cell, set .true. for the named cells (others untouched)
+    !>  st   : out, an unknown group or cell located at its keyword
+    subroutine mark_cells(occ, groups, names, mesh, mask, st)
+        class(keyword_set_t), intent(in) :: occ
+        character(len=*), intent(in) :: groups, names
+        type(mesh_t), intent(in) :: mesh
+        logical, intent(inout) :: mask(:)
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: words(:)
+        integer(i4) :: k, g
+        if (occ%has(groups)) then
+            call occ%get_texts(groups, words, st)
+            if (st%failed()) return
+            do k = 1, size(words, kind=i4)
+                g = find_cell_group(mesh, words(k)%s, st)
+                if (st%failed()) then
+                    call relocate_error(occ, groups, st)
+                    return
+                end if
+                mask(cells_of_group(mesh, g)) = .true.
+            end do
+        end if
+        if (occ%has(names)) then
+            call occ%get_texts(names, words, st)
+            if (st%failed()) return
+            do k = 1, size(words, kind=i4)
+                g = find_cell(mesh, words(k)%s, st)
+                if (st%failed()) then
+                    call relocate_error(occ, names, st)
+                    return
+                end if
+                mask(g) = .true.
+            end do
+        end if
+    end subroutine mark_cells
+
+    !> As mark_cells, for nodes: keyword `groups` (GROUP_NO, ...) and `names` (NOEUD, ...).
+    subroutine mark_nodes(occ, groups, names, mesh, mask, st)
+        class(keyword_set_t), intent(in) :: occ
+        character(len=*), intent(in) :: groups, names
+        type(mesh_t), intent(in) :: mesh
+        logical, intent(inout) :: mask(:)
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: words(:)
+        integer(i4) :: k, g
+        if (occ%has(groups)) then
+            call occ%get_texts(groups, words, st)
+            if (st%failed()) return
+            do k = 1, size(words, kind=i4)
+                g = find_node_group(mesh, words(k)%s, st)
+                if (st%failed()) then
+                    call relocate_error(occ, groups, st)
+                    return
+                end if
+                mask(nodes_of_group(mesh, g)) = .true.
+            end do
+        end if
+        if (occ%has(names)) then
+            call occ%get_texts(names, words, st)
+            if (st%failed()) return
+            do k = 1, size(words, kind=i4)
+                g = find_node(mesh, words(k)%s, st)
+                if (st%failed()) then
+                    call relocate_error(occ, names, st)
+                    return
+                end if
+                mask(g) = .true.
+            end do
+        end if
+    end subroutine mark_nodes
+
+    !> Marks in `node_mask` the nodes of the cells of `cell_mask`.
+    pure subroutine mark_nodes_of_cells(mesh, cell_mask, node_mask)
+        type(mesh_t), intent(in) :: mesh
+        logical, intent(in) :: cell_mask(:)
+        logical, intent(inout) :: node_mask(:)
+        integer(i4) :: c
+        do c = 1, mesh%n_cells
+            if (cell_mask(c)) node_mask(mesh%cell_nodes(mesh%cell_ptr(c):mesh%cell_ptr(c + 1) &
+                - 1)) = .true.
+        end do
+    end subroutine mark_nodes_of_cells
+
 end module mesh_command_support
+

@@ -75,6 +75,11 @@ module model_loads
     !> Parameter names every load function is bound to, in the order of the value arrays.
     character(len=4), parameter, public :: LOAD_PARAMETERS(4) = ['INST', 'X   ', 'Y   ', &
         'Z   ']
+    !> PRES_REP's functions also see the current position of the point, XF, YF, ZF (Code_Aster
+    !> evalPressureSetFuncPara): the deformed geometry for a follower load (STAT_NON_LINE
+    !> EXCIT TYPE_CHARGE='SUIV'), 0 otherwise, as in Code_Aster.
+    character(len=4), parameter, public :: PRESSURE_PARAMETERS(7) = ['INST', 'X   ', &
+        'Y   ', 'Z   ', 'XF  ', 'YF  ', 'ZF  ']
 
     !> One value: a constant or a function of (INST, X, Y, Z).
     type, public :: load_value_t
@@ -291,7 +296,11 @@ contains
         class(function_concept_t), intent(in), target :: func
         set%items(index)%values(slot)%given = .true.
         set%items(index)%values(slot)%func => func
-        call func%bind(LOAD_PARAMETERS, set%items(index)%values(slot)%binding)
+        if (set%items(index)%kind == LOAD_PRES_REP) then
+            call func%bind(PRESSURE_PARAMETERS, set%items(index)%values(slot)%binding)
+        else
+            call func%bind(LOAD_PARAMETERS, set%items(index)%values(slot)%binding)
+        end if
     end subroutine load_set_function
 
     !> Records where item `index` is in the deck (see load_item_t).
@@ -343,14 +352,17 @@ contains
     !>  st : out, the function's evaluation error, with the load kind added; a value out of
     !>       range (then located by the caller with load_locate)
     !>  slot_name : in, optional, the slot's name in messages (default: the kind's)
-    subroutine load_value_at(value, kind, slot, t, x, y, st, slot_name)
+    !>  x_current : in, optional, PRES_REP's XF, YF, ZF (PRESSURE_PARAMETERS; default 0)
+    subroutine load_value_at(value, kind, slot, t, x, y, st, slot_name, x_current)
         type(load_value_t), intent(in) :: value
         integer(i4), intent(in) :: kind, slot
         real(dp), intent(in) :: t, x(3)
         real(dp), intent(out) :: y
         type(status_t), intent(out) :: st
         character(len=*), intent(in), optional :: slot_name
+        real(dp), intent(in), optional :: x_current(3)
         character(len=:), allocatable :: name
+        real(dp) :: xf(3)
         y = value%constant
         if (associated(value%evol)) then
             call evol_value(value, t, y, st)
@@ -361,7 +373,14 @@ contains
                 return
             end if
         else if (associated(value%func)) then
-            call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
+            xf = 0.0_dp
+            if (present(x_current)) xf = x_current
+            if (size(value%binding%provided) == size(PRESSURE_PARAMETERS)) then
+                call value%func%evaluate(value%binding, [t, x(1), x(2), x(3), xf(1), xf(2), &
+                    xf(3)], y, st)
+            else
+                call value%func%evaluate(value%binding, [t, x(1), x(2), x(3)], y, st)
+            end if
             if (st%failed()) then
                 call set_error(st, STATUS_MODEL_ERROR, LOAD_KIND_NAMES(kind) // ': ' // &
                     st%message)

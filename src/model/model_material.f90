@@ -159,6 +159,9 @@ contains
                 ! ELAS_ORTH on a plane solid: its law in the MASSIF frame (assembly_plane_law)
                 if (is_plane_solid(model%element(c)) .and. .not. mat%has_elas .and. &
                     elastic_behaviour(mat) == 'ELAS_ORTH') cycle
+                ! ELAS_FO on a plane solid: E and NU of its functions (assembly_plane_law)
+                if (is_plane_solid(model%element(c)) .and. .not. mat%has_elas .and. &
+                    elastic_behaviour(mat) == 'ELAS_FO') cycle
                 if (is_plate(model%element(c)) .and. has_behaviour(mat, 'ELAS_ORTH')) then
                     call set_error(st, STATUS_MODEL_ERROR, 'material ' // label(mat) // &
                         ' on ' // cell_label(mesh, c) // ' gives ELAS_ORTH to a DKT plate:' &

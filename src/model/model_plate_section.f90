@@ -52,7 +52,8 @@ module model_plate_section
         real(dp) :: hf(3, 3) = 0.0_dp
     end type plate_section_t
 
-    public :: plate_section, section_in_element, section_turn_matrix, plate_section_material
+    public :: plate_section, section_in_element, section_turn_matrix, plate_section_material, &
+        elas_fo_isotropic
 
 contains
 
@@ -119,6 +120,26 @@ contains
         end do
     end subroutine plate_section
 
+    !> E and NU of the material's ELAS_FO, its functions evaluated at temperature `temp`
+    !> (without it, functions of no parameter: DEFI_CONSTANTE; a function of TEMP then is
+    !> an error naming it). Shared by the plates and the plane elements.
+    !>  st : out, STATUS_MODEL_ERROR for a function failing, E <= 0 or NU outside (-1, 0.5)
+    subroutine elas_fo_isotropic(mat, young, nu, st, temp)
+        type(material_t), intent(in) :: mat
+        real(dp), intent(out) :: young, nu
+        type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: temp
+        nu = 0.0_dp
+        call material_value(mat, 'ELAS_FO', 'E', young, st, temp)
+        if (st%ok()) call material_value(mat, 'ELAS_FO', 'NU', nu, st, temp)
+        if (st%failed()) return
+        if (.not. young > 0.0_dp .or. nu <= -1.0_dp .or. nu >= 0.5_dp) then
+            call set_error(st, STATUS_MODEL_ERROR, 'ELAS_FO gives E = ' // &
+                real_e13(young) // ', NU = ' // real_e13(nu) // ': E > 0 and ' // &
+                '-1 < NU < 0.5 are needed')
+        end if
+    end subroutine elas_fo_isotropic
+
     ! ELAS (E, NU; ELAS_FO's at temp): dxmate's isotropic rigidities. The layers of
     ! COQUE_NCOU split the thickness evenly (their sub-points for the stresses).
     subroutine isotropic_section(mat, sec, st, temp)
@@ -132,15 +153,8 @@ contains
             young = mat%elas%e
             nu = mat%elas%nu
         else
-            call material_value(mat, 'ELAS_FO', 'E', young, st, temp)
-            if (st%ok()) call material_value(mat, 'ELAS_FO', 'NU', nu, st, temp)
+            call elas_fo_isotropic(mat, young, nu, st, temp)
             if (st%failed()) return
-            if (.not. young > 0.0_dp .or. nu <= -1.0_dp .or. nu >= 0.5_dp) then
-                call set_error(st, STATUS_MODEL_ERROR, 'ELAS_FO gives E = ' // &
-                    real_e13(young) // ', NU = ' // real_e13(nu) // ': E > 0 and ' // &
-                    '-1 < NU < 0.5 are needed')
-                return
-            end if
         end if
         sec%young = young
         sec%nu = nu
@@ -482,8 +496,9 @@ contains
             call set_error(st, st%code, b // '/' // key // ' at TEMP = ' // real_e13(temp) // &
                 ': ' // st%message)
         else if (st%failed()) then
-            call set_error(st, st%code, b // '/' // key // ' (no AFFE_VARC TEMP): ' // &
-                st%message)
+            call set_error(st, st%code, b // '/' // key // ': ' // st%message // &
+                ' (parasol''s elements take the ' // b // ' functions of no parameter, ' // &
+                'DEFI_CONSTANTE: give ELAS, or constant functions)')
         end if
     end subroutine material_value
 

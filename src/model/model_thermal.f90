@@ -9,6 +9,14 @@
 !>    (T - T_ref). A formula is evaluated at T itself. Without TEMP_DEF_ALPHA the function
 !>    is taken as the coefficient about T_ref.
 !> A material without ALPHA has no thermal strain.
+!>
+!> The strains of the other command variables (Code_Aster R7.01.12 and DEFI_MATERIAU ELAS /
+!> ELAS_FO, U4.43.01; isotropic, like the thermal one, and added to it):
+!>  - the endogenous shrinkage of the hydration HYDR (AFFE_VARC NOM_VARC='HYDR'):
+!>      eps = -B_ENDOGE h;
+!>  - the desiccation shrinkage of the drying SECH (NOM_VARC='SECH', VALE_REF = S_ref):
+!>      eps = -K_DESSIC (S_ref - S).
+!> B_ENDOGE and K_DESSIC are reals of ELAS or ELAS_FO, 0 by default (no strain).
 module model_thermal
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
@@ -28,7 +36,12 @@ module model_thermal
     !> temperature a deck distinguishes).
     real(dp), parameter :: MIN_PRECISION = 1.0e-30_dp
 
-    public :: has_thermal_expansion, thermal_strain
+    public :: has_thermal_expansion, thermal_strain, shrinkage_coefficient, shrinkage_strain, &
+        shrinks_with
+
+    !> The coefficients of the shrinkage strains (module header), by command variable.
+    character(len=*), parameter, public :: SHRINKAGE_KEY_HYDR = 'B_ENDOGE', &
+        SHRINKAGE_KEY_SECH = 'K_DESSIC'
 
 contains
 
@@ -100,6 +113,58 @@ contains
             if (st%ok()) eps = eps - eps_ref
         end select
     end subroutine thermal_strain
+
+    !> The shrinkage coefficient `key` (SHRINKAGE_KEY_HYDR: B_ENDOGE, SHRINKAGE_KEY_SECH:
+    !> K_DESSIC) of the material's ELAS or ELAS_FO, 0 when it gives none.
+    real(dp) function shrinkage_coefficient(mat, key) result(coef)
+        type(material_t), intent(in) :: mat
+        character(len=*), intent(in) :: key
+        logical :: found
+        call behaviour_number(mat, 'ELAS', key, coef, found)
+        if (.not. found) call behaviour_number(mat, 'ELAS_FO', key, coef, found)
+        if (.not. found) coef = 0.0_dp
+    end function shrinkage_coefficient
+
+    !> True when the material's shrinkage coefficient `key` is not zero.
+    logical function shrinks_with(mat, key)
+        type(material_t), intent(in) :: mat
+        character(len=*), intent(in) :: key
+        shrinks_with = abs(shrinkage_coefficient(mat, key)) > 0.0_dp
+    end function shrinks_with
+
+    !> The shrinkage strain of the material (module header) for command variable value v:
+    !>  key  : in, SHRINKAGE_KEY_HYDR (eps = -B_ENDOGE v) or SHRINKAGE_KEY_SECH
+    !>         (eps = -K_DESSIC (vref - v))
+    !>  vref : in, the reference (SECH's VALE_REF; unused for HYDR)
+    !>  st   : out, a value beyond MAX_TEMPERATURE or a strain beyond MAX_STRAIN, named
+    subroutine shrinkage_strain(mat, key, v, vref, eps, st)
+        type(material_t), intent(in) :: mat
+        character(len=*), intent(in) :: key
+        real(dp), intent(in) :: v, vref
+        real(dp), intent(out) :: eps
+        type(status_t), intent(out) :: st
+        real(dp) :: coef, dv
+        eps = 0.0_dp
+        coef = shrinkage_coefficient(mat, key)
+        if (.not. abs(coef) > 0.0_dp) return
+        ! the values are bounded as temperatures before their difference is formed
+        if (.not. temperature_fits(v, merge('HYDR', 'SECH', key == SHRINKAGE_KEY_HYDR), st)) &
+            return
+        if (.not. temperature_fits(vref, 'VALE_REF', st)) return
+        ! eps = -B_ENDOGE h, or -K_DESSIC (S_ref - S) = K_DESSIC (S - S_ref)
+        dv = -v
+        if (key /= SHRINKAGE_KEY_HYDR) dv = v - vref
+        if (product_fits(coef, dv)) then
+            if (abs(coef * dv) <= MAX_STRAIN) then
+                eps = coef * dv
+                return
+            end if
+        end if
+        call set_error(st, STATUS_MODEL_ERROR, 'the shrinkage strain of ' // key // ' = ' // &
+            real_e13(coef) // ' is beyond ' // real_e13(MAX_STRAIN) // ' (check ' // key // &
+            ' and the field of AFFE_VARC ' // merge('HYDR', 'SECH', &
+            key == SHRINKAGE_KEY_HYDR) // ')')
+    end subroutine shrinkage_strain
 
     !> True when |t| <= MAX_TEMPERATURE; otherwise st names the quantity.
     logical function temperature_fits(t, what, st)

@@ -1,8 +1,9 @@
-!> Command variables (AFFE_MATERIAU AFFE_VARC, U4.43.03): the temperature field each cell
-!> sees, and its reference VALE_REF, for the thermal strains of the elements.
+!> Command variables (AFFE_MATERIAU AFFE_VARC, U4.43.03): the temperature (TEMP), the
+!> hydration (HYDR) and the drying (SECH) fields each cell sees, and their reference
+!> VALE_REF (TEMP, SECH), for the command-variable strains of the elements.
 !>
-!> Each AFFE_VARC occurrence is a source: NOM_VARC (parasol builds TEMP), VALE_REF, and the
-!> temperature as one field (CHAM_GD) or as the TEMP fields of a thermal result per instant
+!> Each AFFE_VARC occurrence is a source: NOM_VARC (parasol builds TEMP, HYDR, SECH),
+!> VALE_REF, and the variable as one field (CHAM_GD) or as the fields of a result per instant
 !> (EVOL, with Code_Aster's PROL_GAUCHE / PROL_DROITE = 'EXCLU' by default and FONC_INST,
 !> the instant read as a function of the analysis' instant). The fields are copied when
 !> AFFE_MATERIAU runs. A later occurrence replaces an earlier one on the cells they share.
@@ -16,14 +17,21 @@
 !>    MOY, SUP, layer by layer from the bottom face), the same at every node.
 !> In time, an EVOL is interpolated linearly between its two stored instants around the
 !> instant (Code_Aster's rsinch).
+!>
+!> HYDR and SECH are scalars at the nodes of a cell (varc_cell_scalar): HYDR the component
+!> HYDR of a HYDR_R field (NOEU, or ELNO as CREA_RESU's HYDR_ELNO; Code_Aster's default
+!> NOM_CHAM for HYDR is HYDR_ELNO), SECH the component SECH of a TEMP_R field, or its TEMP
+!> when it has no SECH (the drying computed by a thermal solver is stored as TEMP); a CART
+!> or ELEM field gives its value on the cell to every node.
 module model_varc
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text, real_e13
     use number_limits, only: MAX_TEMPERATURE
     use function_concept, only: function_concept_t, param_binding_t
     use mesh_types, only: mesh_t, cell_label, node_name
-    use field_types, only: field_t, FIELD_NOEU, FIELD_CART, FIELD_ELEM, field_component, &
+    use field_types, only: field_t, FIELD_NOEU, FIELD_CART, FIELD_ELEM, FIELD_ELNO, &
+        field_component, &
         field_position, field_location_name
     implicit none
     private
@@ -32,14 +40,20 @@ module model_varc
     integer(i4), parameter, public :: TEMP_NONE = 0, TEMP_UNIFORM = 1, TEMP_PROFILE = 2, &
         TEMP_SUBPOINTS = 3
 
+    !> The command variables parasol builds (varc_source_t%variable), by NOM_VARC.
+    integer(i4), parameter, public :: VARC_TEMP = 1, VARC_HYDR = 2, VARC_SECH = 3, &
+        VARC_COUNT = 3
+    character(len=4), parameter, public :: VARC_NAMES(VARC_COUNT) = ['TEMP', 'HYDR', 'SECH']
+
     !> One AFFE_VARC occurrence.
     type, public :: varc_source_t
         character(len=:), allocatable :: label      !< for messages: "AFFE_VARC TEMP (EVOL T)"
+        integer(i4) :: variable = VARC_TEMP         !< VARC_TEMP, VARC_HYDR or VARC_SECH
         real(dp) :: vale_ref = 0.0_dp
         logical :: evol = .false.
         integer(i4) :: n = 0                        !< instants (1 for CHAM_GD)
         real(dp), allocatable :: inst(:)            !< (n) instants of an EVOL, increasing
-        type(field_t), allocatable :: fields(:)     !< (n) the TEMP field at each
+        type(field_t), allocatable :: fields(:)     !< (n) the variable's field at each
         character(len=8) :: prol_gauche = 'EXCLU', prol_droite = 'EXCLU'
         class(function_concept_t), pointer :: fonc_inst => null()
     end type varc_source_t
@@ -48,7 +62,7 @@ module model_varc
     type, public :: varc_field_t
         integer(i4) :: n = 0
         type(varc_source_t), allocatable :: sources(:)
-        integer(i4), allocatable :: cell_source(:)  !< (n_cells) 0: none
+        integer(i4), allocatable :: cell_source(:, :) !< (VARC_COUNT, n_cells) 0: none
     end type varc_field_t
 
     !> The temperature of one cell at one instant (module header).
@@ -61,7 +75,7 @@ module model_varc
     end type cell_temperature_t
 
     public :: varc_init, varc_add_source, varc_cell_temperature, varc_has_any, &
-        field_cell_temperature
+        field_cell_temperature, varc_cell_scalar, varc_cell_has
 
 contains
 
@@ -69,7 +83,7 @@ contains
     subroutine varc_init(varc, n_cells)
         type(varc_field_t), intent(out) :: varc
         integer(i4), intent(in) :: n_cells
-        allocate (varc%sources(0), varc%cell_source(n_cells))
+        allocate (varc%sources(0), varc%cell_source(VARC_COUNT, n_cells))
         varc%cell_source = 0
     end subroutine varc_init
 
@@ -79,6 +93,22 @@ contains
         varc_has_any = .false.
         if (allocated(varc%cell_source)) varc_has_any = any(varc%cell_source > 0)
     end function varc_has_any
+
+    !> True when cell c sees command variable `variable` (VARC_TEMP, ...); any of them when
+    !> `variable` is absent.
+    pure logical function varc_cell_has(varc, c, variable)
+        type(varc_field_t), intent(in) :: varc
+        integer(i4), intent(in) :: c
+        integer(i4), intent(in), optional :: variable
+        varc_cell_has = .false.
+        if (.not. allocated(varc%cell_source)) return
+        if (c < 1 .or. c > size(varc%cell_source, 2)) return
+        if (present(variable)) then
+            varc_cell_has = varc%cell_source(variable, c) > 0
+        else
+            varc_cell_has = any(varc%cell_source(:, c) > 0)
+        end if
+    end function varc_cell_has
 
     !> Adds a source and gives it to `cells` (replacing an earlier one there).
     subroutine varc_add_source(varc, source, cells)
@@ -91,7 +121,7 @@ contains
         bigger(varc%n + 1) = source
         call move_alloc(bigger, varc%sources)
         varc%n = varc%n + 1
-        varc%cell_source(cells) = varc%n
+        varc%cell_source(source%variable, cells) = varc%n
     end subroutine varc_add_source
 
     !> The temperature cell c sees at instant t (kind TEMP_NONE when it sees none).
@@ -109,7 +139,7 @@ contains
         integer(i4) :: s, i1, i2
         real(dp) :: w
         s = 0
-        if (allocated(varc%cell_source)) s = varc%cell_source(c)
+        if (varc_cell_has(varc, c, VARC_TEMP)) s = varc%cell_source(VARC_TEMP, c)
         if (s == 0) return
         associate (src => varc%sources(s))
             call instants_around(src, t, i1, i2, w, st)
@@ -133,6 +163,109 @@ contains
                 cell_label(mesh, c) // ': ' // st%message)
         end associate
     end subroutine varc_cell_temperature
+
+    !> The value of command variable `variable` (VARC_HYDR or VARC_SECH) at the nodes of cell
+    !> c at instant t, interpolated in time as the temperature; has = .false. when the cell
+    !> does not see it.
+    !>  values   : out, (nn) at the cell's nodes
+    !>  vale_ref : out, the source's VALE_REF (SECH's reference drying)
+    !>  st : out, STATUS_MODEL_ERROR for an instant outside an EVOL, a node or cell without
+    !>       the component, a value beyond MAX_TEMPERATURE; naming the cell and the source
+    subroutine varc_cell_scalar(varc, mesh, c, variable, t, values, vale_ref, has, st)
+        type(varc_field_t), intent(in) :: varc
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: c, variable
+        real(dp), intent(in) :: t
+        real(dp), allocatable, intent(out) :: values(:)
+        real(dp), intent(out) :: vale_ref
+        logical, intent(out) :: has
+        type(status_t), intent(out) :: st
+        real(dp), allocatable :: second(:)
+        integer(i4) :: s, i1, i2
+        real(dp) :: w
+        has = .false.
+        vale_ref = 0.0_dp
+        if (.not. varc_cell_has(varc, c, variable)) return
+        s = varc%cell_source(variable, c)
+        associate (src => varc%sources(s))
+            call instants_around(src, t, i1, i2, w, st)
+            if (st%ok()) call field_cell_scalar(src%fields(i1), mesh, c, variable, values, st)
+            if (st%ok() .and. i2 /= i1) then
+                call field_cell_scalar(src%fields(i2), mesh, c, variable, second, st)
+                if (st%ok()) values = (1.0_dp - w) * values + w * second
+            end if
+            if (st%ok()) then
+                if (.not. all(abs(values) <= MAX_TEMPERATURE)) call set_error(st, &
+                    STATUS_MODEL_ERROR, 'the field has ' // real_e13(maxval(abs(values))) // &
+                    ' on the cell, beyond the values parasol takes for a command variable ' // &
+                    '(|' // VARC_NAMES(variable) // '| <= ' // real_e13(MAX_TEMPERATURE) // ')')
+            end if
+            vale_ref = src%vale_ref
+            has = st%ok()
+            if (st%failed()) call set_error(st, st%code, src%label // ' on ' // &
+                cell_label(mesh, c) // ': ' // st%message)
+        end associate
+    end subroutine varc_cell_scalar
+
+    ! The scalar command variable (HYDR, SECH) of field f at the nodes of cell c (module
+    ! header: its component, and the locations read).
+    subroutine field_cell_scalar(f, mesh, c, variable, values, st)
+        type(field_t), intent(in) :: f
+        type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: c, variable
+        real(dp), allocatable, intent(out) :: values(:)
+        type(status_t), intent(out) :: st
+        integer(i4), allocatable :: nodes(:)
+        integer(i4) :: k, nn, i
+        integer(i8) :: pos
+        character(len=:), allocatable :: wanted
+        nodes = mesh%cell_nodes(mesh%cell_ptr(c):mesh%cell_ptr(c + 1) - 1)
+        nn = size(nodes, kind=i4)
+        allocate (values(nn), source=0.0_dp)
+        wanted = VARC_NAMES(variable)
+        k = field_component(f, wanted)
+        if (k == 0 .and. variable == VARC_SECH) then
+            wanted = 'TEMP'
+            k = field_component(f, wanted)
+        end if
+        if (k == 0) then
+            call set_error(st, STATUS_MODEL_ERROR, 'the field has no component ' // &
+                VARC_NAMES(variable) // merge(' (nor TEMP)', '           ', &
+                variable == VARC_SECH))
+            st%message = trim(st%message)
+            return
+        end if
+        select case (f%location)
+        case (FIELD_NOEU)
+            do i = 1, nn
+                if (.not. f%node_has(k, nodes(i))) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'the field has no ' // wanted // &
+                        ' at node ' // node_name(mesh, nodes(i)))
+                    return
+                end if
+                values(i) = f%node_values(k, nodes(i))
+            end do
+        case (FIELD_ELNO, FIELD_CART, FIELD_ELEM)
+            do i = 1, nn
+                pos = 0
+                if (f%location == FIELD_ELNO) then
+                    pos = field_position(f, c, i, 1_i4, k)
+                else
+                    pos = field_position(f, c, 1_i4, 1_i4, k)
+                end if
+                if (pos == 0) then
+                    call set_error(st, STATUS_MODEL_ERROR, 'the field has no ' // wanted // &
+                        ' on the cell')
+                    return
+                end if
+                values(i) = f%values(pos)
+            end do
+        case default
+            call set_error(st, STATUS_MODEL_ERROR, 'a field ' // field_location_name(f) // &
+                ' is not read by AFFE_VARC ' // VARC_NAMES(variable) // ' (NOEU, ELNO, ' // &
+                'CART or ELEM)')
+        end select
+    end subroutine field_cell_scalar
 
     ! The temperatures a cell sees are bounded (number_limits MAX_TEMPERATURE) before the
     ! elements interpolate them and form strains and stresses from them.

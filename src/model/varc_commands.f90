@@ -13,7 +13,8 @@ module varc_commands
     use field_types, only: FIELD_NOEU, FIELD_CART, FIELD_ELEM, field_location_name
     use field_concept, only: field_concept_t
     use result_fields, only: result_fields_t, result_field_index
-    use model_varc, only: varc_field_t, varc_source_t, varc_add_source
+    use model_varc, only: varc_field_t, varc_source_t, varc_add_source, VARC_NAMES, &
+        VARC_TEMP, VARC_HYDR, VARC_SECH
     implicit none
     private
 
@@ -22,8 +23,9 @@ module varc_commands
 contains
 
     !> Every AFFE_VARC occurrence of `cmd` into `varc` (on the cells of `mesh`).
-    !>  st : out, located at the keyword: a command variable other than TEMP (not built), a
-    !>       CHAM_GD that is not a temperature field or lies on another mesh, an EVOL without
+    !>  st : out, located at the keyword: a command variable other than TEMP, HYDR, SECH (not
+    !>       built), a CHAM_GD of another quantity (TEMP_R for TEMP and SECH, HYDR_R for
+    !>       HYDR) or on another mesh, an EVOL without
     !>       NOM_CHAM at some instant or of another mesh, a missing group
     subroutine affe_varc_occurrences(ctx, cmd, mesh, varc, st)
         type(run_context_t), intent(inout) :: ctx
@@ -60,12 +62,17 @@ contains
         type(status_t), intent(out) :: st
         character(len=:), allocatable :: name
         class(concept_t), pointer :: p
+        integer(i4) :: v
         call occ%get_text('NOM_VARC', name, st)
         if (st%failed()) return
-        if (to_upper(name) /= 'TEMP') then
+        source%variable = 0
+        do v = 1, size(VARC_NAMES, kind=i4)
+            if (to_upper(name) == VARC_NAMES(v)) source%variable = v
+        end do
+        if (source%variable == 0) then
             call occ%error_at('NOM_VARC', 'the command variable ' // to_upper(name) // &
-                ' is not built (parasol builds the temperature, TEMP)', st, &
-                code=STATUS_NOT_IMPLEMENTED)
+                ' is not built (parasol builds the temperature TEMP, the hydration HYDR ' // &
+                'and the drying SECH)', st, code=STATUS_NOT_IMPLEMENTED)
             return
         end if
         if (occ%has('VALE_REF')) call occ%get_real('VALE_REF', source%vale_ref, st)
@@ -89,9 +96,10 @@ contains
         type(status_t), intent(out) :: st
         select type (p)
         type is (field_concept_t)
-            call check_temperature_field(p%field, mesh, 'CHAM_GD', occ, st)
+            call check_varc_field(p%field, mesh, source%variable, 'CHAM_GD', occ, st)
             if (st%failed()) return
-            source%label = 'AFFE_VARC TEMP (CHAM_GD ' // concept_display_name(p) // ')'
+            source%label = 'AFFE_VARC ' // VARC_NAMES(source%variable) // ' (CHAM_GD ' // &
+                concept_display_name(p) // ')'
             source%evol = .false.
             source%n = 1
             allocate (source%inst(1), source%fields(1))
@@ -111,7 +119,10 @@ contains
         character(len=:), allocatable :: nom_cham, prol
         class(concept_t), pointer :: f
         integer(i4) :: k, j
-        nom_cham = 'TEMP'
+        ! Code_Aster's default NOM_CHAM (affe_materiau_ops): HYDR_ELNO for HYDR, else the
+        ! variable's name
+        nom_cham = VARC_NAMES(source%variable)
+        if (source%variable == VARC_HYDR) nom_cham = 'HYDR_ELNO'
         if (occ%has('NOM_CHAM')) call occ%get_text('NOM_CHAM', nom_cham, st)
         if (st%failed()) return
         select type (p)
@@ -121,7 +132,8 @@ contains
                                   st, code=STATUS_MODEL_ERROR)
                 return
             end if
-            source%label = 'AFFE_VARC TEMP (EVOL ' // concept_display_name(p) // ')'
+            source%label = 'AFFE_VARC ' // VARC_NAMES(source%variable) // ' (EVOL ' // &
+                concept_display_name(p) // ')'
             source%evol = .true.
             source%n = p%n_stored
             allocate (source%inst(p%n_stored), source%fields(p%n_stored))
@@ -133,8 +145,8 @@ contains
                         code=STATUS_MODEL_ERROR)
                     return
                 end if
-                call check_temperature_field(p%stored(k)%items(j)%field, mesh, 'EVOL', occ, &
-                                             st)
+                call check_varc_field(p%stored(k)%items(j)%field, mesh, source%variable, &
+                                      'EVOL', occ, st)
                 if (st%failed()) return
                 source%inst(k) = p%inst(k)
                 source%fields(k) = p%stored(k)%items(j)%field
@@ -167,33 +179,43 @@ contains
         end if
     end subroutine evol_source
 
-    ! A temperature field (TEMP_R) on the nodes or cells of `mesh`.
-    subroutine check_temperature_field(f, mesh, key, occ, st)
-        use field_types, only: field_t
+    ! A field of the variable's quantity (TEMP_R for TEMP and SECH, HYDR_R for HYDR, as
+    ! Code_Aster's command variables) on the nodes or cells of `mesh` (ELNO too for HYDR,
+    ! whose results hold HYDR_ELNO).
+    subroutine check_varc_field(f, mesh, variable, key, occ, st)
+        use field_types, only: field_t, FIELD_ELNO
         type(field_t), intent(in) :: f
         type(mesh_t), intent(in) :: mesh
+        integer(i4), intent(in) :: variable
         character(len=*), intent(in) :: key
         type(keyword_set_t), intent(in) :: occ
         type(status_t), intent(out) :: st
+        character(len=6) :: quantity
+        logical :: cells
+        quantity = merge('HYDR_R', 'TEMP_R', variable == VARC_HYDR)
+        cells = f%location == FIELD_CART .or. f%location == FIELD_ELEM .or. &
+            (variable /= VARC_TEMP .and. f%location == FIELD_ELNO)
         if (.not. allocated(f%quantity)) then
             call occ%error_at(key, 'the field is empty', st, code=STATUS_MODEL_ERROR)
-        else if (f%quantity /= 'TEMP_R') then
-            call occ%error_at(key, 'expected a temperature field (TEMP_R), got ' // &
-                f%quantity, st, code=STATUS_MODEL_ERROR)
+        else if (f%quantity /= quantity) then
+            call occ%error_at(key, 'expected a ' // trim(merge('temperature', &
+                'hydration  ', variable == VARC_TEMP)) // ' field (' // quantity // &
+                ') for NOM_VARC=''' // VARC_NAMES(variable) // ''', got ' // f%quantity, st, &
+                code=STATUS_MODEL_ERROR)
         else if (f%location == FIELD_NOEU .and. f%n_nodes /= mesh%n_nodes) then
             call occ%error_at(key, 'the field has ' // to_text(f%n_nodes) // &
                 ' nodes, the mesh ' // to_text(mesh%n_nodes) // ' (another mesh?)', st, &
                 code=STATUS_MODEL_ERROR)
-        else if ((f%location == FIELD_CART .or. f%location == FIELD_ELEM) .and. &
-                 f%n_cells /= mesh%n_cells) then
+        else if (cells .and. f%n_cells /= mesh%n_cells) then
             call occ%error_at(key, 'the field has ' // to_text(f%n_cells) // &
                 ' cells, the mesh ' // to_text(mesh%n_cells) // ' (another mesh?)', st, &
                 code=STATUS_MODEL_ERROR)
-        else if (f%location /= FIELD_NOEU .and. f%location /= FIELD_CART .and. &
-                 f%location /= FIELD_ELEM) then
-            call occ%error_at(key, 'a temperature field ' // field_location_name(f) // &
-                ' is not read here (NOEU, CART or ELEM)', st, code=STATUS_NOT_IMPLEMENTED)
+        else if (f%location /= FIELD_NOEU .and. .not. cells) then
+            call occ%error_at(key, 'a field ' // field_location_name(f) // ' is not read ' // &
+                'here for ' // VARC_NAMES(variable) // ' (NOEU, CART or ELEM' // &
+                trim(merge(', ELNO', '      ', variable /= VARC_TEMP)) // ')', st, &
+                code=STATUS_NOT_IMPLEMENTED)
         end if
-    end subroutine check_temperature_field
+    end subroutine check_varc_field
 
 end module varc_commands

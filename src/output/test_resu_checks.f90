@@ -3,8 +3,9 @@
 !> a field (test_value_in_field: at a node, a cell's point and sub-point, or TYPE_TEST over
 !> the field) and writing the block to the listings (listings.md, "TEST_RESU semantics").
 module test_resu_checks
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: string_t, to_text, to_upper
     use deck_command, only: keyword_set_t
     use run_context, only: run_context_t
@@ -497,18 +498,6 @@ contains
         end if
         cell = members(1)
     end subroutine single_cell
-
-    !> Locates a failed status (from a layer that does not know the deck) at `key` of `occ`,
-    !> keeping its message; the category becomes STATUS_MODEL_ERROR.
-    subroutine relocate(occ, key, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        message = st%message
-        call clear_status(st)
-        call occ%error_at(key, message, st, STATUS_MODEL_ERROR)
-    end subroutine relocate
 
     !> `text` with the non-finite spellings NaN, +Inf, -Inf (whole tokens, optionally
     !> followed by %) replaced by NON_FINI, +INFINI, -INFINI.

@@ -202,7 +202,9 @@ contains
             wanted == TESTED_INT)) // trim(merge('_K', '  ', wanted == TESTED_TEXT)), st)
     end subroutine check_value_type
 
-    !> The one cell the filters leave.
+    !> The one cell the filters leave: among the rows they select, those holding a value of
+    !> NOM_PARA must be exactly one, as Code_Aster's tbliva counts them (a POST_RELEVE_T
+    !> table's rows of another ACTION, without that column's value, do not count).
     subroutine single_cell(cmd, t, column, rows, value, st)
         type(command_t), intent(in) :: cmd
         type(table_t), intent(in) :: t
@@ -211,22 +213,26 @@ contains
         type(tested_value_t), intent(out) :: value
         type(status_t), intent(inout) :: st
         type(keyword_set_t) :: occ
-        if (size(rows) /= 1) then
+        integer, allocatable :: held(:)
+        held = pack(rows, t%columns(column)%present(rows))
+        if (size(held) == 0) then
+            call cmd%error_at('NOM_PARA', 'the cell of column ' // t%columns(column)%name // &
+                ' is empty in the ' // to_text(int(size(rows), i4)) // ' row(s) the ' // &
+                'filters select', st, STATUS_MODEL_ERROR)
+            return
+        end if
+        if (size(held) /= 1) then
             occ = cmd%keyword_set_t
             if (cmd%count('FILTRE') > 0) occ = cmd%occurrence('FILTRE', cmd%count('FILTRE'))
-            call occ%error_at('', to_text(int(size(rows), i4)) // ' rows of table ' // &
-                concept_display_name(t) // ' pass the filters: TEST_TABLE tests one cell ' // &
+            call occ%error_at('', to_text(int(size(held), i4)) // ' rows of table ' // &
+                concept_display_name(t) // ' pass the filters with a value of ' // &
+                t%columns(column)%name // ': TEST_TABLE tests one cell ' // &
                 '(add a FILTRE, or give TYPE_TEST); ' // t%columns(column)%name // &
-                ' in those rows: ' // column_values_text(t, column, rows), st, &
+                ' in those rows: ' // column_values_text(t, column, held), st, &
                 STATUS_MODEL_ERROR)
             return
         end if
-        if (.not. t%columns(column)%present(rows(1))) then
-            call cmd%error_at('NOM_PARA', 'the cell of column ' // t%columns(column)%name // &
-                ' in the row the filters select is empty', st, STATUS_MODEL_ERROR)
-            return
-        end if
-        call cell_value(t, column, rows(1), value)
+        call cell_value(t, column, held(1), value)
     end subroutine single_cell
 
     subroutine cell_value(t, column, row, value)

@@ -3,7 +3,8 @@
 !> (doc/fields.md, "CALC_CHAMP"). Options by keyword:
 !>   CONTRAINTE  SIEF_ELGA (linear results), SIGM_ELGA, SIGM_ELNO, SIGM_NOEU, SIEF_ELNO,
 !>               SIEF_NOEU, EFGE_ELGA, EFGE_ELNO, EFGE_NOEU
-!>   DEFORMATION EPSI_ELGA, EPSI_ELNO, EPSI_NOEU, DEGE_ELGA, DEGE_ELNO, DEGE_NOEU
+!>   DEFORMATION EPSI_ELGA, EPSI_ELNO, EPSI_NOEU, DEGE_ELGA, DEGE_ELNO, DEGE_NOEU,
+!>               EPME_* and EPSP_* (plane elements: elem's element_fields)
 !>   CRITERES    SIEQ_ELGA, SIEQ_ELNO, SIEQ_NOEU, EPEQ_ELGA, EPEQ_ELNO, EPEQ_NOEU
 !>   ENERGIE     ENEL_ELGA, ENEL_ELNO, ENEL_NOEU, ENEL_ELEM, ETOT_ELGA, ETOT_ELNO,
 !>               ETOT_NOEU, ETOT_ELEM (energy_fields)
@@ -17,8 +18,9 @@
 !> stresses/strains point by point. A field an option needs is taken as the result stores
 !> it (a POST_CHAMP layer), else computed on the way (and not stored).
 module calc_champ_command
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, &
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, &
         STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text
     use deck_value, only: append_string
@@ -34,7 +36,7 @@ module calc_champ_command
         result_field_index
     use analysis_result, only: result_concept_t
     use result_access, only: result_field_at
-    use element_fields, only: plate_field, strain_field
+    use element_fields, only: plate_field, strain_field, STRAIN_MECHANICAL, STRAIN_INELASTIC
     use plate_options, only: PLATE_FORCES, PLATE_GENERAL, PLATE_FORCES_CMPS, &
         PLATE_GENERAL_CMPS
     use field_transforms, only: gauss_to_nodes, nodes_average, equivalent_field
@@ -45,7 +47,8 @@ module calc_champ_command
     !> The options CALC_CHAMP computes, by keyword (module header).
     character(len=*), parameter, public :: CALC_CHAMP_BUILT = 'SIEF_ELGA SIGM_ELGA ' // &
         'SIGM_ELNO SIGM_NOEU SIEF_ELNO SIEF_NOEU EFGE_ELGA EFGE_ELNO EFGE_NOEU EPSI_ELGA ' // &
-        'EPSI_ELNO EPSI_NOEU DEGE_ELGA DEGE_ELNO DEGE_NOEU SIEQ_ELGA SIEQ_ELNO SIEQ_NOEU ' // &
+        'EPSI_ELNO EPSI_NOEU EPME_ELGA EPME_ELNO EPME_NOEU EPSP_ELGA EPSP_ELNO EPSP_NOEU ' // &
+        'DEGE_ELGA DEGE_ELNO DEGE_NOEU SIEQ_ELGA SIEQ_ELNO SIEQ_NOEU ' // &
         'EPEQ_ELGA EPEQ_ELNO EPEQ_NOEU ENEL_ELGA ENEL_ELNO ENEL_NOEU ENEL_ELEM ETOT_ELGA ' // &
         'ETOT_ELNO ETOT_NOEU ETOT_ELEM FORC_NODA REAC_NODA'
     character(len=12), parameter :: FAMILIES(6) = ['CONTRAINTE  ', 'DEFORMATION ', &
@@ -286,7 +289,8 @@ contains
                 call input_field(job, at, 'SIEF_ELGA', source, st)
                 if (st%ok()) call restrict_components(source, 'SIXX SIYY SIZZ SIXY SIXZ ' // &
                     'SIYZ', made, st)
-            case ('SIGM_ELNO', 'SIEF_ELNO', 'EPSI_ELNO', 'ENEL_ELNO', 'ETOT_ELNO')
+            case ('SIGM_ELNO', 'SIEF_ELNO', 'EPSI_ELNO', 'EPME_ELNO', 'EPSP_ELNO', &
+                  'ENEL_ELNO', 'ETOT_ELNO')
                 call input_field(job, at, base // '_ELGA', source, st)
                 if (st%ok()) call gauss_to_nodes(source, r%mesh, r%model, made, st)
             case ('ENEL_ELGA', 'ENEL_ELEM', 'ETOT_ELGA', 'ETOT_ELEM')
@@ -304,6 +308,10 @@ contains
                 call require_state(r, st)
                 if (st%ok()) call strain_field(r, r%depl(:, at), made, st, job%cells, &
                     r%inst(at))
+            case ('EPME_ELGA', 'EPSP_ELGA')     ! elem's: plane elements (element_fields)
+                call require_state(r, st)
+                if (st%ok()) call strain_field(r, r%depl(:, at), made, st, job%cells, &
+                    r%inst(at), merge(STRAIN_MECHANICAL, STRAIN_INELASTIC, name == 'EPME_ELGA'))
             case ('SIEQ_ELGA', 'SIEQ_ELNO')
                 call input_field(job, at, 'SIGM' // name(5:), source, st)
                 if (st%ok()) call equivalent_field(source, 'SIGM', made, st)
@@ -539,19 +547,5 @@ contains
         type(string_t), allocatable, intent(out) :: words(:)
         call split_words(text, words)
     end subroutine split
-
-    !> Locates a failed status at `key`, keeping its message and category.
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        if (code /= STATUS_NOT_IMPLEMENTED) code = STATUS_MODEL_ERROR
-        call clear_status(st)
-        call kws%error_at(key, message, st, code)
-    end subroutine relocate
 
 end module calc_champ_command

@@ -9,13 +9,14 @@
 !>         components of the CHAM_PARA fields at the same node (or cell, point and
 !>         sub-point): X Y Z of a NOEU_GEOM_R, TEMP of a temperature, SIXX of a stress...
 module crea_champ_combine
+    use keyword_relocation, only: relocate => relocate_error
+    use mesh_command_support, only: mark_cells, mark_nodes, mark_nodes_of_cells
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: string_t, to_text, to_upper
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t, concept_ref_t
-    use mesh_types, only: mesh_t, find_node_group, nodes_of_group, find_cell_group, &
-        cells_of_group
+    use mesh_types, only: mesh_t, find_cell_group, cells_of_group
     use model_types, only: model_t
     use function_concept, only: function_concept_t, param_binding_t
     use field_quantities, only: quantity_components, quantity_component_index, &
@@ -415,38 +416,14 @@ contains
         type(mesh_t), intent(in) :: mesh
         logical, allocatable, intent(out) :: mask(:)
         type(status_t), intent(out) :: st
-        type(string_t), allocatable :: names(:)
-        integer(i4), allocatable :: cells(:)
-        integer(i4) :: k, g, c
+        logical, allocatable :: cells(:)
         allocate (mask(mesh%n_nodes), source=occ%has('TOUT'))
-        if (occ%has('GROUP_NO')) then
-            call occ%get_texts('GROUP_NO', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_node_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, 'GROUP_NO', st)
-                    return
-                end if
-                mask(nodes_of_group(mesh, g)) = .true.
-            end do
-        end if
-        if (occ%has('GROUP_MA')) then
-            call occ%get_texts('GROUP_MA', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_cell_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, 'GROUP_MA', st)
-                    return
-                end if
-                cells = cells_of_group(mesh, g)
-                do c = 1, size(cells)
-                    mask(mesh%cell_nodes(mesh%cell_ptr(cells(c)):mesh%cell_ptr(cells(c) + 1) &
-                        - 1)) = .true.
-                end do
-            end do
-        end if
+        call mark_nodes(occ, 'GROUP_NO', 'NOEUD', mesh, mask, st)
+        if (st%failed()) return
+        allocate (cells(mesh%n_cells), source=.false.)
+        call mark_cells(occ, 'GROUP_MA', 'MAILLE', mesh, cells, st)
+        if (st%failed()) return
+        call mark_nodes_of_cells(mesh, cells, mask)
     end subroutine node_selection
 
     !> Cells of TOUT / GROUP_MA of an ASSE occurrence.
@@ -782,16 +759,5 @@ contains
         end do
         k = 0
     end function position_of
-
-    !> Locates a failed status at `key`, keeping its message (STATUS_MODEL_ERROR).
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        message = st%message
-        call clear_status(st)
-        call kws%error_at(key, message, st, STATUS_MODEL_ERROR)
-    end subroutine relocate
 
 end module crea_champ_combine

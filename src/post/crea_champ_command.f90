@@ -14,15 +14,16 @@
 !> Every error names what exists: the quantity's components, the field's TYPE_CHAM, the
 !> groups of the mesh.
 module crea_champ_command
+    use keyword_relocation, only: relocate => relocate_error
+    use mesh_command_support, only: mark_cells, mark_nodes, mark_nodes_of_cells
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, &
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, &
         STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text, to_upper
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t, concept_ref_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node, find_cell, find_node_group, nodes_of_group, &
-        find_cell_group, cells_of_group
+    use mesh_types, only: mesh_t
     use model_types, only: model_t
     use function_concept, only: function_concept_t
     use field_quantities, only: quantity_components, quantity_component_index, &
@@ -435,43 +436,14 @@ contains
         type(mesh_t), intent(in) :: mesh
         logical, allocatable, intent(out) :: mask(:)
         type(status_t), intent(out) :: st
-        type(string_t), allocatable :: names(:)
         logical, allocatable :: cells(:)
-        integer(i4) :: k, g, c, node
-        allocate (mask(mesh%n_nodes), source=.false.)
-        if (occ%has('TOUT')) mask = .true.
+        allocate (mask(mesh%n_nodes), source=occ%has('TOUT'))
         if (occ%has('GROUP_MA') .or. occ%has('MAILLE')) then
             call selected_cells(occ, mesh, cells, st)
             if (st%failed()) return
-            do c = 1, mesh%n_cells
-                if (cells(c)) mask(mesh%cell_nodes(mesh%cell_ptr(c):mesh%cell_ptr(c + 1) - 1)) &
-                    = .true.
-            end do
+            call mark_nodes_of_cells(mesh, cells, mask)
         end if
-        if (occ%has('GROUP_NO')) then
-            call occ%get_texts('GROUP_NO', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_node_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, 'GROUP_NO', st)
-                    return
-                end if
-                mask(nodes_of_group(mesh, g)) = .true.
-            end do
-        end if
-        if (occ%has('NOEUD')) then
-            call occ%get_texts('NOEUD', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                node = find_node(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, 'NOEUD', st)
-                    return
-                end if
-                mask(node) = .true.
-            end do
-        end if
+        call mark_nodes(occ, 'GROUP_NO', 'NOEUD', mesh, mask, st)
     end subroutine selected_nodes
 
     !> The cells an occurrence names (TOUT, GROUP_MA, MAILLE), as a mask over the cells.
@@ -482,34 +454,9 @@ contains
         type(mesh_t), intent(in) :: mesh
         logical, allocatable, intent(out) :: mask(:)
         type(status_t), intent(out) :: st
-        type(string_t), allocatable :: names(:)
-        integer(i4) :: k, g, cell
-        allocate (mask(mesh%n_cells), source=.false.)
-        if (occ%has('TOUT')) mask = .true.
-        if (occ%has('GROUP_MA')) then
-            call occ%get_texts('GROUP_MA', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                g = find_cell_group(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, 'GROUP_MA', st)
-                    return
-                end if
-                mask(cells_of_group(mesh, g)) = .true.
-            end do
-        end if
-        if (occ%has('MAILLE')) then
-            call occ%get_texts('MAILLE', names, st)
-            if (st%failed()) return
-            do k = 1, size(names)
-                cell = find_cell(mesh, names(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, 'MAILLE', st)
-                    return
-                end if
-                mask(cell) = .true.
-            end do
-        end if
+        allocate (mask(mesh%n_cells), source=occ%has('TOUT'))
+        call mark_cells(occ, 'GROUP_MA', 'MAILLE', mesh, mask, st)
+        if (st%failed()) return
         if (.not. (occ%has('TOUT') .or. occ%has('GROUP_MA') .or. occ%has('MAILLE'))) then
             if (occ%has('GROUP_NO')) then
                 call occ%error_at('GROUP_NO', 'a field on cells is given on cells: use ' // &
@@ -542,19 +489,5 @@ contains
         call kws%get_text(key, text, st)
         if (st%ok()) value = text == 'OUI'
     end subroutine flag
-
-    !> Locates a failed status at `key`, keeping its message (STATUS_MODEL_ERROR).
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        if (code /= STATUS_NOT_IMPLEMENTED) code = STATUS_MODEL_ERROR
-        call clear_status(st)
-        call kws%error_at(key, message, st, code)
-    end subroutine relocate
 
 end module crea_champ_command

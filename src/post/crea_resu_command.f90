@@ -9,6 +9,7 @@
 !> an existing result. MODELE, CHAM_MATER, CARA_ELEM record the structure later commands
 !> compute on.
 module crea_resu_command
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4
     use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, &
         STATUS_NOT_IMPLEMENTED
@@ -312,19 +313,5 @@ contains
         call field_init_nodes(f, quantity_real_twin(fun%quantity), fun%components, &
             fun%n_nodes, st)
     end subroutine field_init_nodes_like
-
-    !> Locates a failed status at `key` (STATUS_MODEL_ERROR unless not built).
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        if (code /= STATUS_NOT_IMPLEMENTED) code = STATUS_MODEL_ERROR
-        call clear_status(st)
-        call kws%error_at(key, message, st, code)
-    end subroutine relocate
 
 end module crea_resu_command

@@ -27,7 +27,7 @@ module crea_table_command
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, node_name, cell_name
+    use mesh_types, only: mesh_t
     use mesh_concept, only: mesh_concept_t
     use model_concept, only: model_concept_t
     use field_types, only: field_t, FIELD_NOEU, FIELD_ELGA, FIELD_ELNO, FIELD_ELEM, &
@@ -37,7 +37,7 @@ module crea_table_command
     use result_access, only: result_field_at, result_mesh
     use table_concept, only: table_t, table_init, table_add_column, table_add_rows, &
         table_set_int, table_set_real, table_set_text, table_append_title, TABLE_INT, &
-        TABLE_REAL, TABLE_TEXT, MAX_TABLE_ROWS
+        TABLE_REAL, TABLE_TEXT, MAX_TABLE_ROWS, table_entity_label
     use table_keywords, only: relocate_at
     use function_points, only: function_samples_t, samples_of_function
     use result_instants, only: selected_instants
@@ -479,7 +479,7 @@ contains
             do k = 1, size(nodes)
                 row = t%n_rows - size(nodes) + k
                 call prefix(row)
-                call table_set_text(t, layout%c_node, row, node_name(mesh, nodes(k)), st)
+                call table_set_text(t, layout%c_node, row, table_entity_label(nodes(k)), st)
                 do j = 1, 3
                     call table_set_real(t, layout%c_xyz(j), row, mesh%coords(j, nodes(k)), st)
                 end do
@@ -512,14 +512,14 @@ contains
                 do q = 1, f%n_subpoints(c)
                     row = row + 1
                     call prefix(row)
-                    call table_set_text(t, layout%c_cell, row, cell_name(mesh, c), st)
+                    call table_set_text(t, layout%c_cell, row, table_entity_label(c), st)
                     if (layout%c_point > 0) call table_set_int(t, layout%c_point, row, &
                         int(p, i8), st)
                     if (layout%c_subpoint > 0) call table_set_int(t, layout%c_subpoint, &
                         row, int(q, i8), st)
                     if (layout%c_node > 0) then
                         node = mesh%cell_nodes(mesh%cell_ptr(c) + p - 1)
-                        call table_set_text(t, layout%c_node, row, node_name(mesh, node), st)
+                        call table_set_text(t, layout%c_node, row, table_entity_label(node), st)
                         do j = 1, 3
                             call table_set_real(t, layout%c_xyz(j), row, &
                                 mesh%coords(j, node), st)

@@ -11,6 +11,11 @@
 !>  EPSI_ELGA  the strains at the same points: a plate's EPXX EPYY EPZZ EPXY EPXZ EPYZ at
 !>             its layer sub-points, a plane element's EPXX EPYY EPZZ EPXY (C_PLAN's EPZZ
 !>             from sig_zz = 0, D_PLAN's 0);
+!>  EPME_ELGA  a plane element's mechanical strain: EPSI less the command-variable strains
+!>             (thermal, HYDR, SECH; assembly_varc), Code_Aster's EPME;
+!>  EPSP_ELGA  a plane element's inelastic strain: EPME less the elastic strain of the
+!>             stress, S SIEF (S the compliance of its law), Code_Aster's EPSP; zero up to
+!>             rounding for parasol's elastic laws;
 !>  plate-only options at RIGI points or at the nodes (plate_options kinds).
 !> Two passes: the layout of every cell (points, sub-points, components), then the values,
 !> written in place (no per-cell allocation: the 128x512 plate has 65 536 cells).
@@ -41,6 +46,10 @@ module element_fields
     private
 
     public :: state_sief_elga, strain_field, plate_field, result_structure
+
+    !> The strains strain_field gives (strain_kind): EPSI, EPME, EPSP (module header).
+    integer(i4), parameter, public :: STRAIN_TOTAL = 0, STRAIN_MECHANICAL = 1, &
+        STRAIN_INELASTIC = 2
 
 contains
 
@@ -162,20 +171,24 @@ contains
     end subroutine state_sief_elga
 
     !> EPSI_ELGA at the Gauss points of the plates and plane elements of `cells` (every
-    !> cell when absent) for the displacements u (module header).
-    !>  st : element failures naming the cell
-    subroutine strain_field(res, u, f, st, cells, inst)
+    !> cell when absent) for the displacements u (module header); with strain_kind
+    !> STRAIN_MECHANICAL or STRAIN_INELASTIC, EPME_ELGA or EPSP_ELGA of the plane elements.
+    !>  st : element failures naming the cell; EPME / EPSP asked on a plate cell
+    subroutine strain_field(res, u, f, st, cells, inst, strain_kind)
         type(result_concept_t), intent(in) :: res
         real(dp), intent(in) :: u(:)
         type(field_t), intent(out) :: f
         type(status_t), intent(out) :: st
         logical, intent(in), optional :: cells(:)
         real(dp), intent(in), optional :: inst     !< the instant (C_PLAN's thermal EPZZ)
+        integer(i4), intent(in), optional :: strain_kind
         type(string_t), allocatable :: cmps(:)
         type(component_set_t) :: sets(2)
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:)
-        integer(i4) :: c, kind
+        integer(i4) :: c, kind, which
         logical :: want
+        which = STRAIN_TOTAL
+        if (present(strain_kind)) which = strain_kind
         call split_words(PLATE_STRAIN_CMPS, cmps)
         call field_init_cells(f, FIELD_ELGA, 'EPSI_R', cmps, res%mesh%n_cells, st)
         if (st%failed()) return
@@ -188,7 +201,13 @@ contains
             if (present(cells)) want = cells(c)
             if (.not. want) cycle
             kind = res%model%element(c)
-            if (is_plate(kind)) then
+            if (is_plate(kind) .and. which /= STRAIN_TOTAL) then
+                call set_error(st, STATUS_MODEL_ERROR, cell_label(res%mesh, c) // ': ' // &
+                    trim(merge('EPME_ELGA', 'EPSP_ELGA', which == STRAIN_MECHANICAL)) // &
+                    ' is built for the plane elements (D_PLAN, C_PLAN), not for plates ' // &
+                    '(restrict CALC_CHAMP with GROUP_MA)')
+                return
+            else if (is_plate(kind)) then
                 n_points(c) = merge(4_i4, 3_i4, res%mesh%cell_ptr(c + 1) - &
                     res%mesh%cell_ptr(c) == 4)
                 n_sub(c) = 3 * max(1_i4, res%cara%coque_layers(c))
@@ -211,7 +230,7 @@ contains
                     f%values(f%offset(c) + 1:f%offset(c + 1)), st)
             else if (cell_set(c) == 2) then
                 call plane_cell_values(res, c, u, .false., &
-                    f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst)
+                    f%values(f%offset(c) + 1:f%offset(c + 1)), st, inst, which)
             end if
             if (st%failed()) return
         end do
@@ -248,9 +267,10 @@ contains
     !> EPXY at its RIGI points, point by point (element_plane plane_point_state), from its
     !> material's ELAS and the displacements u (an equation vector of the result's dofs);
     !> with `inst`, the thermal strains of AFFE_VARC there (assembly_varc) are taken off
-    !> the stresses and give C_PLAN's EPZZ.
+    !> the stresses and give C_PLAN's EPZZ; strain_kind (STRAIN_MECHANICAL, STRAIN_INELASTIC)
+    !> makes the strains EPME or EPSP (module header).
     !>  st : STATUS_MODEL_ERROR naming the cell (no material, no ELAS, a degenerate cell)
-    subroutine plane_cell_values(res, c, u, stresses, values, st, inst)
+    subroutine plane_cell_values(res, c, u, stresses, values, st, inst, strain_kind)
         type(result_concept_t), intent(in) :: res
         integer(i4), intent(in) :: c
         real(dp), intent(in) :: u(:)
@@ -258,13 +278,16 @@ contains
         real(dp), intent(out) :: values(:)
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: inst
-        real(dp) :: eps0(4, MAX_GAUSS_POINTS)
+        integer(i4), intent(in), optional :: strain_kind
+        real(dp) :: eps0(4, MAX_GAUSS_POINTS), elastic(4)
         logical :: has
         type(gauss_rule_t) :: rule
         type(plane_law_t) :: law
         real(dp) :: xy(2, MAX_CELL_NODES), ue(2 * MAX_CELL_NODES)
         real(dp) :: sig(4, MAX_GAUSS_POINTS), eps(4, MAX_GAUSS_POINTS)
-        integer(i4) :: nn, i, k, node, eq, ctype
+        integer(i4) :: nn, i, k, node, eq, ctype, which, g
+        which = STRAIN_TOTAL
+        if (present(strain_kind)) which = strain_kind
         ctype = res%mesh%cell_type(c)
         nn = res%mesh%cell_ptr(c + 1) - res%mesh%cell_ptr(c)
         do i = 1, nn
@@ -279,6 +302,7 @@ contains
         call plane_cell_law(res%mesh, res%model, res%materials, res%cara, c, law, st)
         if (st%ok()) call plane_rigi_rule(ctype, rule, st)
         has = .false.
+        eps0 = 0.0_dp
         if (st%ok() .and. present(inst)) call plane_thermal_strains(res%mesh, res%model, &
             res%materials, c, inst, rule, eps0(:, 1:rule%n), has, st)
         if (st%ok() .and. has) then
@@ -292,12 +316,58 @@ contains
             st%message = cell_label(res%mesh, c) // ': ' // st%message
             return
         end if
+        ! EPME: less the command-variable strains; EPSP: less the elastic strain S sig too
+        ! (tensor shear EPXY: half the engineering one)
+        if (.not. stresses .and. which /= STRAIN_TOTAL) then
+            do g = 1, rule%n
+                eps(:, g) = eps(:, g) - [eps0(1:3, g), 0.5_dp * eps0(4, g)]
+                if (which == STRAIN_INELASTIC) then
+                    call elastic_strain(law%d4, sig(:, g), elastic, st)
+                    if (st%failed()) then
+                        st%message = cell_label(res%mesh, c) // ': ' // st%message
+                        return
+                    end if
+                    eps(:, g) = eps(:, g) - [elastic(1:3), 0.5_dp * elastic(4)]
+                end if
+            end do
+        end if
         if (stresses) then
             values(1:4 * rule%n) = reshape(sig(:, 1:rule%n), [4 * rule%n])
         else
             values(1:4 * rule%n) = reshape(eps(:, 1:rule%n), [4 * rule%n])
         end if
     end subroutine plane_cell_values
+
+    ! The elastic strain (xx, yy, zz, xy engineering) of stress sig under the 3D stiffness
+    ! d4 on (xx, yy, zz, xy): d4 e = sig, by Gaussian elimination with partial pivoting
+    ! (d4 is positive definite: the plane laws check it).
+    subroutine elastic_strain(d4, sig, e, st)
+        real(dp), intent(in) :: d4(4, 4), sig(4)
+        real(dp), intent(out) :: e(4)
+        type(status_t), intent(inout) :: st
+        real(dp) :: a(4, 5), row(5)
+        integer(i4) :: i, j, p
+        a(:, 1:4) = d4
+        a(:, 5) = sig
+        e = 0.0_dp
+        do i = 1, 4
+            p = i - 1 + maxloc(abs(a(i:4, i)), 1)
+            if (.not. abs(a(p, i)) > 0.0_dp) then
+                call set_error(st, STATUS_MODEL_ERROR, 'its elastic law is singular: no ' // &
+                    'elastic strain for EPSP')
+                return
+            end if
+            row = a(p, :)
+            a(p, :) = a(i, :)
+            a(i, :) = row
+            do j = i + 1, 4
+                a(j, i:5) = a(j, i:5) - (a(j, i) / a(i, i)) * a(i, i:5)
+            end do
+        end do
+        do i = 4, 1, -1
+            e(i) = (a(i, 5) - dot_product(a(i, i + 1:4), e(i + 1:4))) / a(i, i)
+        end do
+    end subroutine elastic_strain
 
     !> A plate option (plate_options kind) on the plate cells of `cells` (every plate cell
     !> when absent), at RIGI points (ELGA) or at the nodes (ELNO, evaluated there).

@@ -16,8 +16,9 @@
 !> matched to the file's by type and rank within the type (the order IMPR_RESU and
 !> LIRE_MAILLAGE use), so MAILLAGE must be the mesh the file's field lies on.
 module lire_champ_command
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, STATUS_IO_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_IO_ERROR
     use strings, only: string_t, to_text, to_upper, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
@@ -483,16 +484,5 @@ contains
     end function location_text
 
     ! Locates a failed status at `key`.
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        call clear_status(st)
-        call kws%error_at(trim(key), message, st, code)
-    end subroutine relocate
 
 end module lire_champ_command

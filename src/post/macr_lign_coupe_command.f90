@@ -17,24 +17,24 @@
 !>    rows by line, then instant (NUME_ORDRE / INST / LIST_INST, all by default), then
 !>    point.
 !> NOM_CHAM defaults to SIGM_NOEU for a mechanical result and TEMP for a thermal one, as
-!> Code_Aster's catalog has it. REPERE='UTILISATEUR' (ANGL_NAUT) and 'LOCAL' on a SEGMENT
-!> (x along the line, y the part of VECT_Y orthogonal to it) turn the components of DEPL,
-!> SIEF_ELNO, SIGM_NOEU, SIGM_ELNO, FLUX_ELNO and FLUX_NOEU as Code_Aster's
-!> crea_resu_local does (MODI_REPERE UTILISATEUR with those nautical angles; alpha alone in
-!> a 2D mesh); other fields keep the global frame, with an alarm.
-!> Not built, each a located error saying so: CHAM_GD, TYPE='ARC' and 'GROUP_MA', REPERE
-!> POLAIRE and CYLINDRIQUE, LOCAL on a GROUP_NO, OPERATION='MOYENNE', INVARIANT,
-!> ELEM_PRINCIPAUX, TRAC_NOR / TRAC_DIR, RESULTANTE, VIS_A_VIS, ELGA fields (Code_Aster
-!> itself warns they are not meant for it) and element fields with sub-points (plate
-!> layers: extract a layer with POST_CHAMP EXTR_COQUE first).
+!> Code_Aster's catalog has it. REPERE UTILISATEUR, LOCAL (on a SEGMENT or a GROUP_NO path),
+!> CYLINDRIQUE and POLAIRE turn the components of DEPL, SIEF_ELNO, SIGM_NOEU, SIGM_ELNO,
+!> FLUX_ELNO and FLUX_NOEU as Code_Aster's crea_resu_local does (lign_coupe_frames); other
+!> fields keep the global frame, with an alarm. INVARIANT, ELEM_PRINCIPAUX, TRAC_NOR and
+!> TRAC_DIR are computed at each point as POST_RELEVE_T computes them on the line's mesh
+!> (releve_frames' kernels).
+!> Not built, each a located error saying so: CHAM_GD, TYPE='ARC' and 'GROUP_MA',
+!> OPERATION='MOYENNE', RESULTANTE, VIS_A_VIS, ELGA fields (Code_Aster itself warns they
+!> are not meant for it) and element fields with sub-points (plate layers: extract a layer
+!> with POST_CHAMP EXTR_COQUE first).
 module macr_lign_coupe_command
     use kinds, only: dp, i4, i8
     use strings, only: string_t, to_text, real_e13
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
+    use status, only: status_t, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node_group, nodes_of_group
+    use mesh_types, only: mesh_t
     use mesh_cell_shapes, only: CELL_TYPE_DIM, CELL_TYPE_NODES
     use field_types, only: field_t, FIELD_NOEU, FIELD_ELNO, field_component, &
         field_position, field_location_name
@@ -45,29 +45,17 @@ module macr_lign_coupe_command
         table_set_int, table_set_real, table_set_text, TABLE_INT, TABLE_REAL, TABLE_TEXT
     use table_keywords, only: relocate_at, warn_at
     use crea_table_command, only: result_of_occurrence
-    use releve_frames, only: path_abscissae, user_frame, rotate_vector, rotate_tensor
+    use releve_frames, only: path_abscissae, user_frame, plane_local_frames, polar_frame, &
+        tensor_invariants, principal_stresses, value_kind, tensor_row, turned_value, &
+        traction, KIND_VECTOR, KIND_TENSOR, VECTOR_CMPS, TENSOR_SLOT_NAMES
+    use lign_coupe_frames, only: path_local_angles, cylinder_frame, turn_point
     use point_location, only: located_point_t, locate_point
+    use lign_coupe_lines, only: line_t, read_line, Q_COMPONENTS, Q_INVARIANTS, Q_PRINCIPAL, &
+        Q_TRAC_NOR, Q_TRAC_DIR, CUBE_LIMIT, INVARIANT_NAMES, PRINCIPAL_NAMES, TURNED_FIELDS
     implicit none
     private
     public :: run_macr_lign_coupe
 
-    !> One cut line: its points and title.
-    type :: line_t
-        character(len=:), allocatable :: label
-        real(dp), allocatable :: x(:, :)            !< (3, n) the points asked for
-        type(string_t), allocatable :: asked(:)     !< NOM_CMP, none: every component
-        real(dp) :: distance_max = 0.0_dp
-        !> REPERE UTILISATEUR / LOCAL: the components are turned by pgl (rows: the axes)
-        logical :: turned = .false.
-        real(dp) :: pgl(3, 3) = 0.0_dp
-    end type line_t
-
-    !> The fields whose components MACR_LIGN_COUPE turns (crea_resu_local); the others are
-    !> read in the global frame with an alarm, as Code_Aster reads them.
-    character(len=*), parameter :: TURNED_FIELDS = ' DEPL SIEF_ELNO SIGM_NOEU SIGM_ELNO ' // &
-        'FLUX_ELNO FLUX_NOEU '
-    !> Precision of Code_Aster's crea_resu_local (epsi): parallel or orthogonal axes.
-    real(dp), parameter :: LOCAL_EPSILON = 1.0e-8_dp
 
 contains
 
@@ -131,7 +119,7 @@ contains
             call check_field(cmd, f, nom_cham, st)
             if (st%failed()) return
             if (j == 1) then
-                call declare_columns(cmd, f, lines, names, t, st)
+                call declare_columns(cmd, f, nom_cham, lines, names, t, st)
                 if (st%failed()) return
             end if
         end do
@@ -171,262 +159,45 @@ contains
         end if
     end subroutine check_field
 
-    ! ---- the lines ---------------------------------------------------------------------
-
-    !> Reads one LIGN_COUPE occurrence: its points, title, components and distance.
-    subroutine read_line(occ, mesh, n_unnamed, line, st)
-        type(keyword_set_t), intent(in) :: occ
-        type(mesh_t), intent(in) :: mesh
-        integer, intent(inout) :: n_unnamed
-        type(line_t), intent(out) :: line
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: kind, text, group
-        real(dp) :: a(3), b(3)
-        integer :: n, i
-        integer(i4) :: g
-        integer(i4), allocatable :: nodes(:)
-        call occ%get_text('TYPE', kind, st)
-        if (st%failed()) return
-        call refuse_unbuilt(occ, kind, st)
-        if (st%failed()) return
-        if (occ%has('DISTANCE_MAX')) call occ%get_real('DISTANCE_MAX', line%distance_max, st)
-        if (st%ok() .and. .not. line%distance_max >= 0.0_dp) call occ%error_at( &
-            'DISTANCE_MAX', 'DISTANCE_MAX is a distance: >= 0', st)
-        if (st%ok() .and. occ%has('NOM_CMP')) call occ%get_texts('NOM_CMP', line%asked, st)
-        if (st%failed()) return
-        if (.not. allocated(line%asked)) allocate (line%asked(0))
-        select case (kind)
-        case ('SEGMENT')
-            call check_block(occ, 'SEGMENT', 'GROUP_NO', st)
-            if (st%ok() .and. .not. occ%has('NB_POINTS')) call occ%error_at('TYPE', &
-                'TYPE=''SEGMENT'' needs NB_POINTS, the number of points of the line', st)
-            if (st%ok()) call occ%get_int('NB_POINTS', n, st)
-            if (st%ok()) call end_point(occ, mesh, 'COOR_ORIG', 'GROUP_NO_ORIG', a, st)
-            if (st%ok()) call end_point(occ, mesh, 'COOR_EXTR', 'GROUP_NO_EXTR', b, st)
-            if (st%failed()) return
-            if (.not. norm2(b - a) > 0.0_dp) then
-                call occ%error_at('NB_POINTS', 'the segment''s origin and end are the ' // &
-                    'same point: the line has no direction', st)
-                return
-            end if
-            allocate (line%x(3, n))
-            do i = 1, n
-                line%x(:, i) = a + (b - a) * (real(i - 1, dp) / real(n - 1, dp))
-            end do
-            n_unnamed = n_unnamed + 1
-            line%label = 'l.coupe' // to_text(n_unnamed)
-        case ('GROUP_NO')
-            call check_block(occ, 'GROUP_NO', 'NB_POINTS COOR_ORIG COOR_EXTR ' // &
-                'GROUP_NO_ORIG GROUP_NO_EXTR', st)
-            if (st%ok() .and. .not. occ%has('GROUP_NO')) call occ%error_at('TYPE', &
-                'TYPE=''GROUP_NO'' needs GROUP_NO, the ordered nodes of the line', st)
-            if (st%ok()) call occ%get_text('GROUP_NO', group, st)
-            if (st%failed()) return
-            g = find_node_group(mesh, group, st)
-            if (st%failed()) then
-                call relocate_at(occ, 'GROUP_NO', st)
-                return
-            end if
-            nodes = nodes_of_group(mesh, g)
-            if (size(nodes) == 0) then
-                call occ%error_at('GROUP_NO', 'group ' // group // ' has no node', st)
-                return
-            end if
-            line%x = mesh%coords(:, nodes)
-            line%label = group
-        end select
-        if (occ%has('INTITULE')) then
-            call occ%get_text('INTITULE', text, st)
-            if (st%failed()) return
-            line%label = text
-        end if
-        call read_frame(occ, mesh, line, st)
-    end subroutine read_line
-
-    !> REPERE UTILISATEUR (ANGL_NAUT) and LOCAL (a SEGMENT's direction and VECT_Y), as
-    !> Code_Aster's crea_resu_local turns them (MODI_REPERE UTILISATEUR with the nautical
-    !> angles; in a 2D mesh alpha alone).
-    subroutine read_frame(occ, mesh, line, st)
-        type(keyword_set_t), intent(in) :: occ
-        type(mesh_t), intent(in) :: mesh
-        type(line_t), intent(inout) :: line
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: frame
-        real(dp), allocatable :: v(:)
-        real(dp) :: angles(3), cx(3), cy(3), cz(3)
-        integer :: n
-        call occ%get_text('REPERE', frame, st)
-        if (st%failed() .or. frame == 'GLOBAL') return
-        angles = 0.0_dp
-        if (frame == 'UTILISATEUR') then
-            if (.not. occ%has('ANGL_NAUT')) then
-                call occ%error_at('REPERE', 'REPERE=''UTILISATEUR'' needs ANGL_NAUT, the ' // &
-                    'frame''s nautical angles in degrees', st)
-                return
-            end if
-            call occ%get_reals('ANGL_NAUT', v, st)
-            if (st%failed()) return
-            angles = v(1:3)
-        else                                            ! LOCAL on a SEGMENT
-            if (.not. occ%has('VECT_Y')) then
-                call occ%error_at('REPERE', 'REPERE=''LOCAL'' needs VECT_Y, the direction ' // &
-                    'of the local y axis', st)
-                return
-            end if
-            call occ%get_reals('VECT_Y', v, st)
-            if (st%failed()) return
-            n = size(line%x, 2)
-            cx = line%x(:, n) - line%x(:, 1)
-            cy = 0.0_dp
-            cy(1:min(size(v), mesh%dim)) = v(1:min(size(v), mesh%dim))
-            if (mesh%dim == 2) cx(3) = 0.0_dp
-            cx = cx / norm2(cx)
-            if (.not. norm2(cy) >= LOCAL_EPSILON) then
-                call occ%error_at('VECT_Y', 'VECT_Y has no direction (its length is 0)', st)
-                return
-            end if
-            cy = cy / norm2(cy)
-            if (all(abs(cx - cy) < LOCAL_EPSILON) .or. all(abs(cx + cy) < LOCAL_EPSILON)) then
-                call occ%error_at('VECT_Y', 'VECT_Y is along the line: it does not make ' // &
-                    'a frame with it', st)
-                return
-            end if
-            cz = [cx(2) * cy(3) - cx(3) * cy(2), cx(3) * cy(1) - cx(1) * cy(3), &
-                  cx(1) * cy(2) - cx(2) * cy(1)]
-            cz = cz / norm2(cz)
-            ! VECT_Y not orthogonal to the line: its part orthogonal to it (z x x)
-            cy = [cz(2) * cx(3) - cz(3) * cx(2), cz(3) * cx(1) - cz(1) * cx(3), &
-                  cz(1) * cx(2) - cz(2) * cx(1)]
-            if (mesh%dim == 2) then
-                angles(1) = atan2(cx(2), cx(1))
-            else if (cx(1)**2 + cx(2)**2 > LOCAL_EPSILON) then
-                angles = [atan2(cx(2), cx(1)), -asin(cx(3)), atan2(cy(3), cz(3))]
-            else
-                angles = [atan2(-cy(1), cy(2)), -asin(cx(3)), 0.0_dp]
-            end if
-            angles = angles * (45.0_dp / atan(1.0_dp))
-        end if
-        if (mesh%dim == 2) angles(2:3) = 0.0_dp
-        call user_frame(angles, line%pgl)
-        line%turned = .true.
-    end subroutine read_frame
-
-    !> The keywords and values of LIGN_COUPE parasol does not build (module header).
-    subroutine refuse_unbuilt(occ, kind, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: kind
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: text
-        character(len=*), parameter :: KEYS(7) = [character(len=15) :: 'INVARIANT', &
-            'ELEM_PRINCIPAUX', 'TRAC_NOR', 'TRAC_DIR', 'RESULTANTE', 'MOMENT', 'CENTRE']
-        integer :: k
-        if (kind == 'ARC' .or. kind == 'GROUP_MA') then
-            call occ%error_at('TYPE', 'TYPE=''' // kind // ''' is not built by parasol: ' // &
-                'SEGMENT and GROUP_NO are', st, STATUS_NOT_IMPLEMENTED)
-            return
-        end if
-        call occ%get_text('REPERE', text, st)
-        if (st%ok() .and. (text == 'POLAIRE' .or. text == 'CYLINDRIQUE' .or. &
-            (text == 'LOCAL' .and. kind /= 'SEGMENT'))) call occ%error_at('REPERE', &
-            'REPERE=''' // text // ''' is not built by MACR_LIGN_COUPE in parasol ' // &
-            '(GLOBAL, UTILISATEUR, and LOCAL on a SEGMENT are)', st, STATUS_NOT_IMPLEMENTED)
-        if (st%ok()) call occ%get_text('OPERATION', text, st)
-        if (st%ok() .and. text /= 'EXTRACTION') call occ%error_at('OPERATION', &
-            'OPERATION=''' // text // ''' is not built by MACR_LIGN_COUPE in parasol: ' // &
-            'EXTRACTION is', st, STATUS_NOT_IMPLEMENTED)
-        do k = 1, size(KEYS)
-            if (st%failed()) return
-            if (occ%has(trim(KEYS(k)))) call occ%error_at(trim(KEYS(k)), trim(KEYS(k)) // &
-                ' is not built by MACR_LIGN_COUPE in parasol: the components are (NOM_CMP)', &
-                st, STATUS_NOT_IMPLEMENTED)
-        end do
-    end subroutine refuse_unbuilt
-
-    !> Code_Aster's blocks: keywords of another TYPE are refused.
-    subroutine check_block(occ, kind, others, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: kind, others
-        type(status_t), intent(inout) :: st
-        integer :: a, b
-        a = 1
-        do while (a <= len(others) .and. st%ok())
-            b = index(others(a:) // ' ', ' ') + a - 2
-            if (b >= a) then
-                if (occ%has(others(a:b))) call occ%error_at(others(a:b), others(a:b) // &
-                    ' does not go with TYPE=''' // kind // '''', st)
-            end if
-            a = b + 2
-        end do
-    end subroutine check_block
-
-    !> An end of a segment: coordinates (2 or 3, the third 0) or the node of a group.
-    subroutine end_point(occ, mesh, coor_key, group_key, p, st)
-        type(keyword_set_t), intent(in) :: occ
-        type(mesh_t), intent(in) :: mesh
-        character(len=*), intent(in) :: coor_key, group_key
-        real(dp), intent(out) :: p(3)
-        type(status_t), intent(inout) :: st
-        real(dp), allocatable :: v(:)
-        character(len=:), allocatable :: group
-        integer(i4), allocatable :: nodes(:)
-        integer(i4) :: g
-        p = 0.0_dp
-        if (occ%has(coor_key) .eqv. occ%has(group_key)) then
-            call occ%error_at('TYPE', 'give one of ' // coor_key // ' and ' // group_key, st)
-            return
-        end if
-        if (occ%has(coor_key)) then
-            call occ%get_reals(coor_key, v, st)
-            if (st%ok() .and. size(v) == 2 .and. mesh%dim == 3) call occ%error_at(coor_key, &
-                'the mesh is three-dimensional: give 3 coordinates', st)
-            if (st%ok()) p(1:size(v)) = v
-            return
-        end if
-        call occ%get_text(group_key, group, st)
-        if (st%failed()) return
-        g = find_node_group(mesh, group, st)
-        if (st%failed()) then
-            call relocate_at(occ, group_key, st)
-            return
-        end if
-        nodes = nodes_of_group(mesh, g)
-        if (size(nodes) /= 1) then
-            call occ%error_at(group_key, 'group ' // group // ' has ' // &
-                to_text(size(nodes, kind=i4)) // ' nodes: the end of a segment is one', st)
-            return
-        end if
-        p = mesh%coords(:, nodes(1))
-    end subroutine end_point
 
     ! ---- the table ---------------------------------------------------------------------
 
-    !> The columns: the fixed ones, then the components of every line, in order.
-    subroutine declare_columns(cmd, f, lines, names, t, st)
+    !> The columns: the fixed ones, then (in POST_RELEVE_T's rvpara order) the components
+    !> of every line, the invariants, the principal values, the tractions.
+    subroutine declare_columns(cmd, f, nom_cham, lines, names, t, st)
         type(command_t), intent(in) :: cmd
         type(field_t), intent(in) :: f
+        character(len=*), intent(in) :: nom_cham
         type(line_t), intent(in) :: lines(:)
         type(string_t), allocatable, intent(out) :: names(:)
         type(table_t), intent(inout) :: t
         type(status_t), intent(inout) :: st
-        type(keyword_set_t) :: occ
-        integer :: k, j, c
-        allocate (names(0))
+        type(string_t), allocatable :: outs(:), nor(:), dir(:)
+        logical :: invariants, principal
+        integer :: k, c
+        allocate (names(0), nor(0), dir(0))
+        invariants = .false.
+        principal = .false.
         do k = 1, size(lines)
-            if (size(lines(k)%asked) == 0) then
-                call add_names(names, held_components(f))
-                cycle
-            end if
-            do j = 1, size(lines(k)%asked)
-                if (field_component(f, lines(k)%asked(j)%s) == 0) then
-                    occ = cmd%occurrence('LIGN_COUPE', k)
-                    call occ%error_at('NOM_CMP', 'the field ' // &
-                        'has no component ' // lines(k)%asked(j)%s // ' (it has ' // &
-                        joined(held_components(f)) // ')', st)
-                    return
-                end if
-            end do
-            call add_names(names, lines(k)%asked)
+            call line_outputs(cmd%occurrence('LIGN_COUPE', k), lines(k), f, nom_cham, outs, st)
+            if (st%failed()) return
+            select case (lines(k)%quantity)
+            case (Q_COMPONENTS)
+                call add_names(names, outs)
+            case (Q_INVARIANTS)
+                invariants = .true.
+            case (Q_PRINCIPAL)
+                principal = .true.
+            case (Q_TRAC_NOR)
+                call add_names(nor, outs)
+            case (Q_TRAC_DIR)
+                call add_names(dir, outs)
+            end select
         end do
+        if (invariants) call add_names(names, split_words(INVARIANT_NAMES))
+        if (principal) call add_names(names, split_words(PRINCIPAL_NAMES))
+        call add_names(names, nor)
+        call add_names(names, dir)
         call table_add_column(t, 'INTITULE', TABLE_TEXT, c, st, 16)
         call table_add_column(t, 'NOM_CHAM', TABLE_TEXT, c, st, 16)
         call table_add_column(t, 'NUME_ORDRE', TABLE_INT, c, st)
@@ -439,6 +210,84 @@ contains
             if (st%ok()) call table_add_column(t, names(k)%s, TABLE_REAL, c, st)
         end do
     end subroutine declare_columns
+
+    !> The quantities a line writes (POST_RELEVE_T's rvcpnc on the line): the components
+    !> asked (NOM_CMP, else all the field holds; in the POLAIRE frame those it turns, in
+    !> the quantity's order), VMIS .. DETER, PRIN_1 .. VECT_3_Z, TRAC_NOR or TR_NOR_1..3,
+    !> TRAC_DIR or TR_DIR_1..3.
+    subroutine line_outputs(occ, line, f, nom_cham, outs, st)
+        type(keyword_set_t), intent(in) :: occ
+        type(line_t), intent(in) :: line
+        type(field_t), intent(in) :: f
+        character(len=*), intent(in) :: nom_cham
+        type(string_t), allocatable, intent(out) :: outs(:)
+        type(status_t), intent(inout) :: st
+        type(string_t), allocatable :: asked(:)
+        character(len=:), allocatable :: key
+        integer :: kind, slots, j
+        allocate (outs(0))
+        kind = value_kind(f%quantity)
+        slots = tensor_row(f)
+        if (kind == KIND_TENSOR .and. (slots < 1 .or. slots > 2)) kind = 0
+        asked = line%asked
+        if (size(asked) == 0) asked = held_components(f)
+        do j = 1, size(asked)
+            if (field_component(f, asked(j)%s) == 0) then
+                call occ%error_at('NOM_CMP', 'the field has no component ' // asked(j)%s // &
+                    ' (it has ' // joined(held_components(f)) // ')', st)
+                return
+            end if
+        end do
+        select case (line%quantity)
+        case (Q_COMPONENTS)
+            if (.not. (line%frame == 'POLAIRE' .and. turns(line, nom_cham))) then
+                outs = asked
+                return
+            end if
+            do j = 1, 6
+                if (kind == KIND_VECTOR) then
+                    if (listed(asked, VECTOR_CMPS(j))) outs = [outs, string_t(trim(VECTOR_CMPS(j)))]
+                else if (kind == KIND_TENSOR) then
+                    if (listed(asked, TENSOR_SLOT_NAMES(j, slots))) outs = [outs, &
+                        string_t(trim(TENSOR_SLOT_NAMES(j, slots)))]
+                end if
+            end do
+            if (size(outs) == 0) call occ%error_at('REPERE', 'REPERE=''POLAIRE'' turns ' // &
+                'displacements (DX .. DRZ) and stress tensors (SIXX .. SIYZ); none of ' // &
+                joined(asked) // ' is one', st)
+        case (Q_INVARIANTS, Q_PRINCIPAL)
+            key = trim(merge('INVARIANT      ', 'ELEM_PRINCIPAUX', line%quantity == Q_INVARIANTS))
+            if (kind /= KIND_TENSOR) then
+                call occ%error_at(key, 'the invariants and principal values are those of a ' // &
+                    'stress or strain tensor (SIXX .. SIYZ, EPXX .. EPYZ); the field ' // &
+                    'holds none (' // f%quantity // ')', st)
+                return
+            end if
+            if (line%quantity == Q_INVARIANTS) then
+                outs = split_words(INVARIANT_NAMES)
+            else
+                outs = split_words(PRINCIPAL_NAMES)
+            end if
+        case (Q_TRAC_NOR, Q_TRAC_DIR)
+            key = trim(merge('TRAC_NOR', 'TRAC_DIR', line%quantity == Q_TRAC_NOR))
+            if (kind == KIND_VECTOR) then
+                outs = [string_t(key)]
+            else if (kind == KIND_TENSOR) then
+                outs = split_words(merge('TR_NOR_1 TR_NOR_2 TR_NOR_3', &
+                                         'TR_DIR_1 TR_DIR_2 TR_DIR_3', line%quantity == Q_TRAC_NOR))
+            else
+                call occ%error_at(key, 'a traction is that of a displacement-like vector or ' // &
+                    'of a stress tensor; the field is neither (' // f%quantity // ')', st)
+            end if
+        end select
+    end subroutine line_outputs
+
+    !> Whether the line's frame turns this field (crea_resu_local's fields).
+    pure logical function turns(line, nom_cham)
+        type(line_t), intent(in) :: line
+        character(len=*), intent(in) :: nom_cham
+        turns = line%frame /= 'GLOBAL' .and. index(TURNED_FIELDS, ' ' // nom_cham // ' ') > 0
+    end function turns
 
     !> The rows of one line for one field.
     subroutine line_rows(ctx, occ, mesh, f, line, nom_cham, nume_ordre, inst, first, t, st)
@@ -454,28 +303,31 @@ contains
         type(table_t), intent(inout) :: t
         type(status_t), intent(inout) :: st
         type(located_point_t), allocatable :: loc(:)
-        type(string_t), allocatable :: cmps(:)
-        logical, allocatable :: candidate(:), kept(:)
-        real(dp), allocatable :: absc(:), xk(:, :)
-        integer, allocatable :: cols(:), ks(:)
-        real(dp), allocatable :: vals(:)
-        logical, allocatable :: has(:)
-        logical :: turn
-        integer :: i, j, r, m
-        cmps = line%asked
-        if (size(cmps) == 0) cmps = held_components(f)
-        allocate (cols(size(cmps)), ks(size(cmps)), vals(size(cmps)), has(size(cmps)))
-        turn = line%turned .and. index(TURNED_FIELDS, ' ' // nom_cham // ' ') > 0
-        if (first .and. line%turned .and. .not. turn) call warn_at(ctx, occ, 'REPERE', &
-            'the components of ' // nom_cham // ' are not turned by MACR_LIGN_COUPE ' // &
-            '(only those of DEPL, SIEF_ELNO, SIGM_NOEU, SIGM_ELNO, FLUX_ELNO, FLUX_NOEU ' // &
-            'are): they are given in the global frame, as Code_Aster gives them')
-        do j = 1, size(cmps)
-            ks(j) = field_component(f, cmps(j)%s)
+        type(string_t), allocatable :: outs(:)
+        logical, allocatable :: candidate(:), kept(:), hv(:)
+        real(dp), allocatable :: absc(:), xk(:, :), v(:), tangent(:, :), normal(:, :), &
+            local_angles(:, :)
+        integer, allocatable :: cols(:), ks(:), along(:)
+        real(dp) :: q(12)
+        logical :: qhas(12), turn, ok
+        integer :: i, j, r, m, bad
+        call line_outputs(occ, line, f, nom_cham, outs, st)
+        if (st%failed()) return
+        turn = turns(line, nom_cham)
+        if (first .and. line%frame /= 'GLOBAL' .and. .not. turn) call warn_at(ctx, occ, &
+            'REPERE', 'the components of ' // nom_cham // ' are not turned by ' // &
+            'MACR_LIGN_COUPE (only those of DEPL, SIEF_ELNO, SIGM_NOEU, SIGM_ELNO, ' // &
+            'FLUX_ELNO, FLUX_NOEU are): they are given in the global frame, as Code_Aster ' // &
+            'gives them')
+        allocate (cols(size(outs)))
+        do j = 1, size(outs)
             do m = 1, t%n_columns
-                if (t%columns(m)%name == cmps(j)%s) cols(j) = m
+                if (t%columns(m)%name == outs(j)%s) cols(j) = m
             end do
         end do
+        ks = [(j, j=1, size(f%components))]
+        if (size(line%asked) > 0) ks = [(field_component(f, line%asked(j)%s), &
+                                         j=1, size(line%asked))]
         call carrying_cells(mesh, f, ks, candidate)
         allocate (loc(size(line%x, 2)), kept(size(line%x, 2)))
         do i = 1, size(line%x, 2)
@@ -494,12 +346,53 @@ contains
             to_text(size(kept, kind=i4)) // ' points of line ' // line%label // &
             ' are outside the matter (farther than DISTANCE_MAX from the cells): they ' // &
             'are left out of the table, as Code_Aster leaves them out')
-        xk = line%x(:, pack([(i, i=1, size(kept))], kept))
+        along = pack([(i, i=1, size(kept))], kept)
+        xk = line%x(:, along)
         absc = path_abscissae(xk)
-        m = 0
-        do i = 1, size(kept)
-            if (.not. kept(i)) cycle
-            m = m + 1
+        if (line%frame == 'POLAIRE' .or. line%quantity == Q_TRAC_NOR) then
+            if (.not. in_one_plane(xk)) then
+                if (line%quantity == Q_TRAC_NOR) then
+                    call occ%error_at('TRAC_NOR', 'TRAC_NOR takes the normal of the line ' // &
+                        'in its plane: the points must lie in one plane z = constant', st)
+                    return
+                end if
+                if (first) call warn_at(ctx, occ, 'REPERE', 'the POLAIRE frame is that of ' // &
+                    'points in one plane z = constant; those of line ' // line%label // &
+                    ' are not: no row for it (Code_Aster''s alarm POSTRELE_28)')
+                return
+            end if
+        end if
+        if (line%quantity == Q_TRAC_NOR) then
+            allocate (tangent(2, size(along)), normal(2, size(along)))
+            call plane_local_frames(xk, tangent, normal, ok)
+            if (.not. ok) then
+                call occ%error_at('TRAC_NOR', 'two consecutive points of the line are at ' // &
+                    'the same place: the line has no normal there', st, STATUS_MODEL_ERROR)
+                return
+            end if
+        end if
+        if (turn .and. line%frame == 'LOCAL' .and. line%kind == 'GROUP_NO') then
+            allocate (local_angles(3, size(line%x, 2)))
+            call path_local_angles(line%x, line%vect_y, mesh%dim, local_angles, bad)
+            if (bad > 0) then
+                call occ%error_at('REPERE', 'the local frame of point ' // &
+                    point_text(line%x(:, bad)) // ' of line ' // line%label // ' has no ' // &
+                    'direction: its segments have no length in the xy plane' // &
+                    trim(merge(', or VECT_Y is along them', '                         ', &
+                    mesh%dim == 3)), st, STATUS_MODEL_ERROR)
+                return
+            end if
+        end if
+        allocate (v(size(f%components)), hv(size(f%components)))
+        do m = 1, size(along)
+            i = along(m)
+            do j = 1, size(f%components)
+                call value_at(mesh, f, loc(i), j, v(j), hv(j))
+            end do
+            if (turn .and. line%frame /= 'POLAIRE') then
+                call turn_to_frame(i, st)
+                if (st%failed()) return
+            end if
             call table_add_rows(t, 1)
             r = t%n_rows
             call table_set_text(t, 1, r, line%label(1:min(len(line%label), 16)), st)
@@ -510,16 +403,179 @@ contains
             call table_set_real(t, 6, r, line%x(1, i), st)
             call table_set_real(t, 7, r, line%x(2, i), st)
             call table_set_real(t, 8, r, line%x(3, i), st)
-            do j = 1, size(cmps)
-                call value_at(mesh, f, loc(i), ks(j), vals(j), has(j))
-            end do
-            if (turn) call turn_values(mesh, f, loc(i), nom_cham, line%pgl, cmps, vals, has)
-            do j = 1, size(cmps)
-                if (has(j)) call table_set_real(t, cols(j), r, vals(j), st)
-            end do
+            call point_quantities(m, i, ok, st)
+            if (st%failed()) return
+            if (ok) then
+                do j = 1, size(outs)
+                    if (qhas(j)) call table_set_real(t, cols(j), r, q(j), st)
+                end do
+            end if
             if (st%failed()) return
         end do
+    contains
+        !> MODI_REPERE's turn of point i (UTILISATEUR, LOCAL, CYLINDRIQUE).
+        subroutine turn_to_frame(i, st)
+            integer, intent(in) :: i
+            type(status_t), intent(inout) :: st
+            real(dp) :: pgl(3, 3), angles(3)
+            logical :: on_axis
+            on_axis = .false.
+            select case (line%frame)
+            case ('CYLINDRIQUE')
+                call cylinder_frame(line%x, i, line%origin, line%axis, mesh%dim, pgl, ok)
+                on_axis = .not. ok
+            case ('LOCAL')
+                angles = line%angles
+                if (line%kind == 'GROUP_NO') angles = local_angles(:, i)
+                if (mesh%dim == 2) angles(2:3) = 0.0_dp
+                call user_frame(angles, pgl)
+            case default                                       ! UTILISATEUR
+                angles = line%angles
+                if (mesh%dim == 2) angles(2:3) = 0.0_dp
+                call user_frame(angles, pgl)
+            end select
+            if (on_axis) then
+                call occ%error_at('ORIGINE', 'point ' // point_text(line%x(:, i)) // &
+                    ' of line ' // line%label // ' is on the axis of the cylindrical ' // &
+                    'frame, and so is the middle of its segment: it has no radial direction', &
+                    st, STATUS_MODEL_ERROR)
+                return
+            end if
+            call turn_point(f%components, v, hv, pgl, line%frame == 'CYLINDRIQUE', mesh%dim)
+        end subroutine turn_to_frame
+
+        !> q(1:size(outs)) at kept point m (point i of the line), qhas where the point
+        !> holds it. ok false: nothing to write.
+        subroutine point_quantities(m, i, ok, st)
+            integer, intent(in) :: m, i
+            logical, intent(out) :: ok
+            type(status_t), intent(inout) :: st
+            real(dp) :: c(6), a(2), b(2), vp(3), vecs(3, 3)
+            integer :: kind, slots, j, k
+            logical :: any_held
+            q = 0.0_dp
+            qhas = .true.
+            kind = value_kind(f%quantity)
+            slots = tensor_row(f)
+            call canonical(kind, slots, c, any_held)
+            ok = .true.
+            select case (line%quantity)
+            case (Q_COMPONENTS)
+                do j = 1, size(outs)
+                    k = field_component(f, outs(j)%s)
+                    qhas(j) = hv(k)
+                    if (.not. hv(k)) cycle
+                    q(j) = v(k)
+                    if (line%frame == 'POLAIRE' .and. turn) then
+                        call polar_frame(line%x(1, i), line%x(2, i), a, b)
+                        b = -b                                  ! rvcalq's orthoradial sign
+                        q(j) = turned_value(kind, slot_of(kind, slots, outs(j)%s), c, a, b)
+                    end if
+                end do
+            case (Q_INVARIANTS)
+                ok = any_held
+                if (.not. ok) return
+                if (any(abs(c) > CUBE_LIMIT)) then
+                    call occ%error_at('INVARIANT', 'the tensor reaches ' // &
+                        real_e13(maxval(abs(c))) // ' at point ' // point_text(line%x(:, i)) // &
+                        ': its determinant (DETER) is beyond double precision (the ' // &
+                        'components stay below 1E+100)', st, STATUS_MODEL_ERROR)
+                    return
+                end if
+                call tensor_invariants(c, q(1), q(2), q(3), q(4))
+            case (Q_PRINCIPAL)
+                ok = any_held
+                if (.not. ok) return
+                call principal_stresses(c, vp, vecs)
+                q(1:3) = vp
+                q(4:6) = vecs(:, 1)
+                q(7:9) = vecs(:, 2)
+                q(10:12) = vecs(:, 3)
+            case (Q_TRAC_DIR)
+                ok = any_held
+                if (ok) call traction(kind, c, line%direction, q(1:size(outs)))
+            case (Q_TRAC_NOR)
+                ok = any_held
+                if (ok) call traction(kind, c, [normal(1, m), normal(2, m), 0.0_dp], &
+                                      q(1:size(outs)))
+            end select
+        end subroutine point_quantities
+
+        !> The point's vector (DX .. DRZ) or tensor (xx yy zz xy xz yz) in POST_RELEVE_T's
+        !> order, a component it lacks 0.
+        subroutine canonical(kind, slots, c, any_held)
+            integer, intent(in) :: kind, slots
+            real(dp), intent(out) :: c(6)
+            logical, intent(out) :: any_held
+            integer :: j, k
+            c = 0.0_dp
+            any_held = .false.
+            do j = 1, 6
+                k = 0
+                if (kind == KIND_VECTOR) k = field_component(f, trim(VECTOR_CMPS(j)))
+                if (kind == KIND_TENSOR .and. slots >= 1) &
+                    k = field_component(f, trim(TENSOR_SLOT_NAMES(j, slots)))
+                if (k == 0) cycle
+                if (.not. hv(k)) cycle
+                c(j) = v(k)
+                any_held = .true.
+            end do
+        end subroutine canonical
     end subroutine line_rows
+
+    !> The place of a component in the vector or tensor order (0: neither).
+    pure integer function slot_of(kind, slots, name) result(j)
+        integer, intent(in) :: kind, slots
+        character(len=*), intent(in) :: name
+        do j = 1, 6
+            if (kind == KIND_VECTOR) then
+                if (trim(VECTOR_CMPS(j)) == name) return
+            else if (slots >= 1) then
+                if (trim(TENSOR_SLOT_NAMES(j, slots)) == name) return
+            end if
+        end do
+        j = 0
+    end function slot_of
+
+    !> All the points in one plane z = constant (POST_RELEVE_T's rvegal, 1e-3 relative).
+    pure logical function in_one_plane(x)
+        real(dp), intent(in) :: x(:, :)
+        real(dp) :: threshold
+        integer :: i
+        threshold = 1.0e-3_dp
+        if (abs(x(3, 1)) >= 1.0e-3_dp) threshold = threshold * abs(x(3, 1))
+        in_one_plane = .true.
+        do i = 2, size(x, 2)
+            if (.not. abs(x(3, 1) - x(3, i)) < threshold) in_one_plane = .false.
+        end do
+    end function in_one_plane
+
+    pure logical function listed(list, name)
+        type(string_t), intent(in) :: list(:)
+        character(len=*), intent(in) :: name
+        integer :: k
+        listed = .false.
+        do k = 1, size(list)
+            if (list(k)%s == trim(name)) listed = .true.
+        end do
+    end function listed
+
+    function split_words(text) result(words)
+        character(len=*), intent(in) :: text
+        type(string_t), allocatable :: words(:)
+        integer :: a, b
+        allocate (words(0))
+        a = 1
+        do while (a <= len(text))
+            if (text(a:a) == ' ') then
+                a = a + 1
+                cycle
+            end if
+            b = index(text(a:) // ' ', ' ') + a - 2
+            words = [words, string_t(text(a:b))]
+            a = b + 2
+        end do
+    end function split_words
 
     !> The cells a point may fall in: those of the highest dimension carrying one of the
     !> components (a NOEU field: at every node of the cell; ELNO: held by the cell).
@@ -579,51 +635,6 @@ contains
         end do
         has = .true.
     end subroutine value_at
-
-    !> The components of a vector (DX DY DZ, DRX DRY DRZ, FLUX FLUY FLUZ) or a tensor
-    !> (SIXX .. SIYZ) turned: P v, P S P^T (a component the point lacks counts 0).
-    subroutine turn_values(mesh, f, loc, nom_cham, pgl, cmps, vals, has)
-        type(mesh_t), intent(in) :: mesh
-        type(field_t), intent(in) :: f
-        type(located_point_t), intent(in) :: loc
-        character(len=*), intent(in) :: nom_cham
-        real(dp), intent(in) :: pgl(3, 3)
-        type(string_t), intent(in) :: cmps(:)
-        real(dp), intent(inout) :: vals(:)
-        logical, intent(in) :: has(:)
-        if (nom_cham == 'DEPL') then
-            call turn_group([character(len=4) :: 'DX', 'DY', 'DZ'])
-            call turn_group([character(len=4) :: 'DRX', 'DRY', 'DRZ'])
-        else if (nom_cham(1:4) == 'FLUX') then
-            call turn_group([character(len=4) :: 'FLUX', 'FLUY', 'FLUZ'])
-        else
-            call turn_group([character(len=4) :: 'SIXX', 'SIYY', 'SIZZ', 'SIXY', 'SIXZ', &
-                             'SIYZ'])
-        end if
-    contains
-        subroutine turn_group(names)
-            character(len=4), intent(in) :: names(:)
-            real(dp) :: g(size(names)), turned(size(names))
-            logical :: present
-            integer :: k, j, kf
-            do k = 1, size(names)
-                g(k) = 0.0_dp
-                kf = field_component(f, trim(names(k)))
-                if (kf > 0) call value_at(mesh, f, loc, kf, g(k), present)
-                if (kf > 0 .and. .not. present) g(k) = 0.0_dp
-            end do
-            if (size(names) == 3) then
-                turned = rotate_vector(pgl, g)
-            else
-                turned = rotate_tensor(pgl, g)
-            end if
-            do j = 1, size(cmps)
-                do k = 1, size(names)
-                    if (has(j) .and. cmps(j)%s == trim(names(k))) vals(j) = turned(k)
-                end do
-            end do
-        end subroutine turn_group
-    end subroutine turn_values
 
     !> The components the field holds somewhere, in its quantity's order.
     function held_components(f) result(names)

@@ -19,8 +19,9 @@
 !> centre (ELEM). With RESULTAT the output is a result holding the fields changed, at the
 !> instants asked for (reuse: changed in place); with CHAM_GD a field.
 module modi_repere_command
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: string_t, to_text
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
@@ -611,16 +612,5 @@ contains
     end function join
 
     ! Locates a failed status at `key`.
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        call clear_status(st)
-        call kws%error_at(trim(key), message, st, code)
-    end subroutine relocate
 
 end module modi_repere_command

@@ -8,8 +8,9 @@
 !> cell's COQUE_NCOU is an error naming the cell and its layers. EXTR_TUYAU, EXTR_PMF,
 !> MIN_MAX_SP and COQU_EXCENT are refused as not built.
 module post_champ_command
+    use keyword_relocation, only: relocate => relocate_error
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, clear_status, STATUS_MODEL_ERROR, &
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, &
         STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text
     use deck_concept, only: concept_t
@@ -253,16 +254,5 @@ contains
             cells(cells_of_group(res%mesh, g)) = .true.
         end do
     end subroutine post_cells
-
-    !> Locates a failed status at `key` (STATUS_MODEL_ERROR).
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        message = st%message
-        call clear_status(st)
-        call kws%error_at(trim(key), message, st, STATUS_MODEL_ERROR)
-    end subroutine relocate
 
 end module post_champ_command

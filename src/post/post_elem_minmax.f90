@@ -18,8 +18,7 @@ module post_elem_minmax
     use status, only: status_t, STATUS_NOT_IMPLEMENTED
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
-    use mesh_types, only: mesh_t, find_cell_group, cells_of_group, nodes_of_cells, node_name, &
-        cell_name
+    use mesh_types, only: mesh_t, find_cell_group, cells_of_group, nodes_of_cells
     use field_types, only: field_t, FIELD_NOEU, field_component, field_position, &
         field_is_cell_field
     use field_concept, only: field_concept_t
@@ -27,7 +26,8 @@ module post_elem_minmax
     use result_access, only: result_field_at, result_mesh
     use result_instants, only: selected_instants
     use table_concept, only: table_t, table_add_column, table_add_rows, table_set_int, &
-        table_set_real, table_set_text, table_find_column, TABLE_INT, TABLE_REAL, TABLE_TEXT
+        table_set_real, table_set_text, table_find_column, TABLE_INT, TABLE_REAL, TABLE_TEXT, &
+        table_entity_label
     use table_keywords, only: relocate_at
     use crea_table_command, only: result_of_occurrence, mesh_of_support
     implicit none
@@ -195,10 +195,10 @@ contains
             if (nmax == 0) return
             call table_set_real(t, column('MAX_' // name, TABLE_REAL, 0), r, vmax, st)
             call table_set_text(t, column('NO_MAX_' // name, TABLE_TEXT, 16), r, &
-                node_name(mesh, nmax), st)
+                table_entity_label(nmax), st)
             call table_set_real(t, column('MIN_' // name, TABLE_REAL, 0), r, vmin, st)
             call table_set_text(t, column('NO_MIN_' // name, TABLE_TEXT, 16), r, &
-                node_name(mesh, nmin), st)
+                table_entity_label(nmin), st)
         end subroutine nodal_extrema
 
         subroutine cell_extrema(name, chosen, r)
@@ -235,12 +235,12 @@ contains
             if (cmax == 0) return
             call table_set_real(t, column('MAX_' // name, TABLE_REAL, 0), r, vmax, st)
             call table_set_text(t, column('MA_MAX_' // name, TABLE_TEXT, 16), r, &
-                cell_name(mesh, cmax), st)
+                table_entity_label(cmax), st)
             call table_set_int(t, column('PT_MAX_' // name, TABLE_INT, 0), r, &
                 int(pmax, i8), st)
             call table_set_real(t, column('MIN_' // name, TABLE_REAL, 0), r, vmin, st)
             call table_set_text(t, column('MA_MIN_' // name, TABLE_TEXT, 16), r, &
-                cell_name(mesh, cmin), st)
+                table_entity_label(cmin), st)
             call table_set_int(t, column('PT_MIN_' // name, TABLE_INT, 0), r, &
                 int(pmin, i8), st)
         end subroutine cell_extrema

@@ -40,8 +40,7 @@ module post_releve_command
     use deck_command, only: command_t, keyword_set_t
     use deck_catalog, only: split_words
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name, &
-        cell_name
+    use mesh_types, only: mesh_t, find_node, find_node_group, nodes_of_group, node_name
     use field_types, only: field_t, FIELD_NOEU, FIELD_ELNO, field_component, field_position, &
         field_location_name
     use field_concept, only: field_concept_t
@@ -50,13 +49,14 @@ module post_releve_command
     use result_instants, only: selected_instants
     use table_concept, only: table_t, table_init, table_add_column, table_add_rows, &
         table_find_column, table_set_int, table_set_real, table_set_text, TABLE_INT, &
-        TABLE_REAL, TABLE_TEXT, table_text_width_for
+        TABLE_REAL, TABLE_TEXT, table_text_width_for, table_entity_label
     use table_keywords, only: relocate_at, warn_at
     use crea_table_command, only: result_of_occurrence, mesh_of_support
     use crea_champ_command, only: selected_nodes, selected_cells
     use releve_frames, only: path_abscissae, plane_local_frames, polar_frame, &
         cylindrical_frame, user_frame, rotate_vector, rotate_tensor, tensor_invariants, &
-        principal_stresses, path_statistics
+        principal_stresses, path_statistics, KIND_VECTOR, KIND_TENSOR, KIND_OTHER, &
+        VECTOR_CMPS, TENSOR_SLOT_NAMES, value_kind, tensor_row, turned_value, traction
     implicit none
     private
 
@@ -65,17 +65,6 @@ module post_releve_command
     !> Quantities (Code_Aster's rvcpnc QUANT).
     integer, parameter :: Q_COMPONENTS = 1, Q_INVARIANTS = 2, Q_PRINCIPAL = 3, &
         Q_TRAC_NOR = 4, Q_TRAC_DIR = 5, Q_SUM = 6
-    !> The kinds of value a frame turns (rvcalq's TQ): vectors, symmetric tensors, others.
-    integer, parameter :: KIND_VECTOR = 1, KIND_TENSOR = 2, KIND_OTHER = 3
-
-    character(len=*), parameter :: VECTOR_CMPS(6) = [character(len=3) :: 'DX', 'DY', 'DZ', &
-        'DRX', 'DRY', 'DRZ']
-    !> Names of each tensor slot (xx yy zz xy xz yz) by quantity, as rvche1 maps them.
-    character(len=*), parameter :: TENSOR_SLOT_NAMES(6, 4) = reshape([character(len=4) :: &
-        'SIXX', 'SIYY', 'SIZZ', 'SIXY', 'SIXZ', 'SIYZ', &
-        'EPXX', 'EPYY', 'EPZZ', 'EPXY', 'EPXZ', 'EPYZ', &
-        'NXX ', 'NYY ', 'NXY ', 'MXX ', 'MYY ', 'MXY ', &
-        'N   ', 'VY  ', 'VZ  ', 'MT  ', 'MFY ', 'MFZ '], [6, 4])
     !> Largest magnitude of a value turned, summed or averaged (sums of a few thousand
     !> products with lengths up to MAX_LENGTH stay finite); DETER cubes values, 1e100.
     real(dp), parameter :: VALUE_LIMIT = 1.0e200_dp, CUBE_LIMIT = 1.0e100_dp
@@ -663,18 +652,6 @@ contains
         end if
     end subroutine path_rows
 
-    !> Vectors (DEPL_R, FORC_R), tensors (SIEF_R, EPSI_R) or others, as frames see them.
-    pure integer function value_kind(quantity)
-        character(len=*), intent(in) :: quantity
-        select case (quantity)
-        case ('DEPL_R', 'FORC_R')
-            value_kind = KIND_VECTOR
-        case ('SIEF_R', 'EPSI_R')
-            value_kind = KIND_TENSOR
-        case default
-            value_kind = KIND_OTHER
-        end select
-    end function value_kind
 
     !> The components read at each point (`raw`) and the quantities written (`out`).
     subroutine components_to_read(occ, act, src, kind, raw, out, st)
@@ -805,18 +782,6 @@ contains
         end do
     end function tensor_names
 
-    !> Which row of TENSOR_SLOT_NAMES names the field's tensor components: the first row
-    !> with a component the field has; 0 for none.
-    integer function tensor_row(f) result(row)
-        type(field_t), intent(in) :: f
-        integer :: j
-        do row = 1, size(TENSOR_SLOT_NAMES, 2)
-            do j = 1, 6
-                if (field_component(f, trim(TENSOR_SLOT_NAMES(j, row))) > 0) return
-            end do
-        end do
-        row = 0
-    end function tensor_row
 
     function split_names(text) result(names)
         character(len=*), intent(in) :: text
@@ -1393,77 +1358,7 @@ contains
         call move_alloc(q, pv%v)
     end subroutine compute_quantities
 
-    !> One component in the plane frame (a, b) (rvcalq, V3 and T3).
-    pure real(dp) function turned_value(kind, j, v, a, b) result(val)
-        integer, intent(in) :: kind, j
-        real(dp), intent(in) :: v(:), a(2), b(2)
-        real(dp) :: txx, tyy, txy
-        if (kind == KIND_VECTOR) then
-            select case (j)
-            case (1)
-                val = a(1) * v(1) + a(2) * v(2)
-            case (2)
-                val = b(1) * v(1) + b(2) * v(2)
-            case (4)
-                val = a(1) * v(4) + a(2) * v(5)
-            case (5)
-                val = b(1) * v(4) + b(2) * v(5)
-            case default
-                val = v(j)
-            end select
-        else
-            txx = v(1); tyy = v(2); txy = v(4)
-            select case (j)
-            case (1)
-                val = a(1) * (a(1) * txx + a(2) * txy) + a(2) * (a(1) * txy + a(2) * tyy)
-            case (2)
-                val = b(1) * (b(1) * txx + b(2) * txy) + b(2) * (b(1) * txy + b(2) * tyy)
-            case (4)
-                val = a(1) * (b(1) * txx + b(2) * txy) + a(2) * (b(1) * txy + b(2) * tyy)
-            case (5)
-                val = a(1) * v(5) + a(2) * v(6)
-            case (6)
-                val = b(1) * v(5) + b(2) * v(6)
-            case default
-                val = v(3)
-            end select
-        end if
-    end function turned_value
 
-    !> v.d for a vector, S d for a tensor (xx yy zz xy xz yz), the terms of zero direction
-    !> components left out as rvpstd leaves them out.
-    pure subroutine traction(kind, v, d, q)
-        integer, intent(in) :: kind
-        real(dp), intent(in) :: v(:), d(3)
-        real(dp), intent(out) :: q(:)
-        integer, parameter :: ROWS(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
-        integer :: i
-        q = 0.0_dp
-        if (kind == KIND_VECTOR) then
-            q(1) = dot(v(1:3))
-        else
-            do i = 1, 3
-                q(i) = dot([v(ROWS(1, i)), v(ROWS(2, i)), v(ROWS(3, i))])
-            end do
-        end if
-    contains
-        pure real(dp) function dot(w)
-            real(dp), intent(in) :: w(3)
-            integer :: j
-            logical :: started
-            dot = 0.0_dp
-            started = .false.
-            do j = 1, 3
-                if (.not. abs(d(j)) > 0.0_dp) cycle
-                if (started) then
-                    dot = dot + w(j) * d(j)
-                else
-                    dot = w(j) * d(j)
-                    started = .true.
-                end if
-            end do
-        end function dot
-    end subroutine traction
 
     ! ---- the rows ---------------------------------------------------------------------------
 
@@ -1562,9 +1457,9 @@ contains
         do m = 1, size(pv%node)
             n = pv%node(m)
             call start_row(t, act, src, r, st)
-            call put_text(t, 'NOEUD', r, node_name(mesh, int(n, i4)), 8, st)
-            if (pv%cell(m) > 0) call put_text(t, 'MAILLE', r, cell_name(mesh, &
-                int(pv%cell(m), i4)), 8, st)
+            call put_text(t, 'NOEUD', r, table_entity_label(n), 8, st)
+            if (pv%cell(m) > 0) call put_text(t, 'MAILLE', r, &
+                table_entity_label(pv%cell(m)), 8, st)
             call put_real(t, 'ABSC_CURV', r, absc(along(n)), st)
             call put_real(t, 'COOR_X', r, mesh%coords(1, n), st)
             call put_real(t, 'COOR_Y', r, mesh%coords(2, n), st)
@@ -1773,7 +1668,7 @@ contains
         do q = 1, 4
             call start_row(t, act, src, r, st)
             call put_text(t, 'EXTREMA', r, trim(KINDS(q)), 8, st)
-            call put_text(t, 'NOEUD', r, to_text(int(where(q), i4)), 8, st)
+            call put_text(t, 'NOEUD', r, table_entity_label(where(q)), 8, st)
             call put_text(t, 'CMP', r, src%f%components(which(q))%s, 8, st)
             call put_real(t, 'VALE', r, best(q), st)
             if (st%failed()) return

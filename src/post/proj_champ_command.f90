@@ -17,14 +17,15 @@
 !> field) at the instants asked for; CHAM_GD: a field; PROJECTION='NON': the
 !> correspondence (corresp_2_mailla), which MATR_PROJECTION reuses.
 module proj_champ_command
+    use keyword_relocation, only: relocate => relocate_error
+    use mesh_command_support, only: mark_cells, mark_nodes
     use kinds, only: dp, i4
     use status, only: status_t, clear_status, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
     use strings, only: string_t, to_text, real_e13
     use deck_concept, only: concept_t
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_t, find_cell_group, cells_of_group, find_node_group, &
-        nodes_of_group, find_node, find_cell, node_name
+    use mesh_types, only: mesh_t, node_name
     use mesh_cell_shapes, only: CELL_TYPE_DIM
     use model_types, only: model_t, ELEM_NONE
     use model_concept, only: model_concept_t
@@ -320,74 +321,8 @@ contains
     end subroutine occurrence_sides
 
     ! Marks the cells of GROUP_MA-like key `groups` and MAILLE-like key `names`.
-    subroutine mark_cells(occ, groups, names, mesh, mask, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: groups, names
-        type(mesh_t), intent(in) :: mesh
-        logical, intent(inout) :: mask(:)
-        type(status_t), intent(out) :: st
-        type(string_t), allocatable :: words(:)
-        integer(i4) :: k, g
-        if (occ%has(groups)) then
-            call occ%get_texts(groups, words, st)
-            if (st%failed()) return
-            do k = 1, size(words, kind=i4)
-                g = find_cell_group(mesh, words(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, groups, st)
-                    return
-                end if
-                mask(cells_of_group(mesh, g)) = .true.
-            end do
-        end if
-        if (occ%has(names)) then
-            call occ%get_texts(names, words, st)
-            if (st%failed()) return
-            do k = 1, size(words, kind=i4)
-                g = find_cell(mesh, words(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, names, st)
-                    return
-                end if
-                mask(g) = .true.
-            end do
-        end if
-    end subroutine mark_cells
 
     ! Marks the nodes of GROUP_NO-like key `groups` and NOEUD-like key `names`.
-    subroutine mark_nodes(occ, groups, names, mesh, mask, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: groups, names
-        type(mesh_t), intent(in) :: mesh
-        logical, intent(inout) :: mask(:)
-        type(status_t), intent(out) :: st
-        type(string_t), allocatable :: words(:)
-        integer(i4) :: k, g
-        if (occ%has(groups)) then
-            call occ%get_texts(groups, words, st)
-            if (st%failed()) return
-            do k = 1, size(words, kind=i4)
-                g = find_node_group(mesh, words(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, groups, st)
-                    return
-                end if
-                mask(nodes_of_group(mesh, g)) = .true.
-            end do
-        end if
-        if (occ%has(names)) then
-            call occ%get_texts(names, words, st)
-            if (st%failed()) return
-            do k = 1, size(words, kind=i4)
-                g = find_node(mesh, words(k)%s, st)
-                if (st%failed()) then
-                    call relocate(occ, names, st)
-                    return
-                end if
-                mask(g) = .true.
-            end do
-        end if
-    end subroutine mark_nodes
 
     ! The .mess line of the search, and ALARME's warnings: nodes found in no cell (farther
     ! than DISTANCE_ALARME when given) and nodes beyond DISTANCE_MAX.
@@ -618,17 +553,5 @@ contains
     end subroutine target_structure
 
     ! Locates a failed status at `key` (STATUS_MODEL_ERROR unless not built).
-    subroutine relocate(kws, key, st)
-        class(keyword_set_t), intent(in) :: kws
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        if (code /= STATUS_NOT_IMPLEMENTED) code = STATUS_MODEL_ERROR
-        call clear_status(st)
-        call kws%error_at(key, message, st, code)
-    end subroutine relocate
 
 end module proj_champ_command

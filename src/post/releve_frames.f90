@@ -11,17 +11,35 @@
 !>  - rotate_vector, rotate_tensor: u_local = P u, S_local = P S P^T (utpvgl, utpsgl);
 !>  - tensor_invariants   INVARIANT: VMIS, TRESCA, TRACE, DETER (rvinvt);
 !>  - path_statistics     MOYENNE: MOMENT_0, MOMENT_1, MINIMUM, MAXIMUM, MOYE_INT, MOYE_EXT
-!>                        of a value along the path (rvpstm).
+!>                        of a value along the path (rvpstm);
+!>  - turned_value        a component in a plane frame (a, b) (rvcalq, LOCAL and POLAIRE);
+!>  - traction            TRAC_DIR / TRAC_NOR: v.d or S d (rvpstd);
+!>  - value_kind, tensor_row: what a frame turns in a field (vectors, tensors and their
+!>                        component names). Shared by POST_RELEVE_T and MACR_LIGN_COUPE.
 !> Tensors are (xx, yy, zz, xy, xz, yz), Code_Aster's SIXX .. SIYZ order.
 module releve_frames
     use kinds, only: dp
     use element_discrete, only: nautical_rotation
     use field_transforms, only: symmetric_eigen
+    use field_types, only: field_t, field_component
     implicit none
     private
 
     public :: path_abscissae, plane_local_frames, polar_frame, cylindrical_frame, user_frame, &
-        rotate_vector, rotate_tensor, tensor_invariants, principal_stresses, path_statistics
+        rotate_vector, rotate_tensor, tensor_invariants, principal_stresses, path_statistics, &
+        value_kind, tensor_row, turned_value, traction
+
+    !> The kinds of value a frame turns (rvcalq's TQ): vectors, symmetric tensors, others.
+    integer, parameter, public :: KIND_VECTOR = 1, KIND_TENSOR = 2, KIND_OTHER = 3
+
+    character(len=*), parameter, public :: VECTOR_CMPS(6) = [character(len=3) :: 'DX', 'DY', 'DZ', &
+        'DRX', 'DRY', 'DRZ']
+    !> Names of each tensor slot (xx yy zz xy xz yz) by quantity, as rvche1 maps them.
+    character(len=*), parameter, public :: TENSOR_SLOT_NAMES(6, 4) = reshape([character(len=4) :: &
+        'SIXX', 'SIYY', 'SIZZ', 'SIXY', 'SIXZ', 'SIYZ', &
+        'EPXX', 'EPYY', 'EPZZ', 'EPXY', 'EPXZ', 'EPYZ', &
+        'NXX ', 'NYY ', 'NXY ', 'MXX ', 'MYY ', 'MXY ', &
+        'N   ', 'VY  ', 'VZ  ', 'MT  ', 'MFY ', 'MFZ '], [6, 4])
 
 contains
 
@@ -265,5 +283,103 @@ contains
         m2 = 6.0_dp * (m2 - m1)
         stats = [m1, m2, lo, hi, m1 - 0.5_dp * m2, m1 + 0.5_dp * m2]
     end subroutine path_statistics
+
+    !> Vectors (DEPL_R, FORC_R), tensors (SIEF_R, EPSI_R) or others, as frames see them.
+    pure integer function value_kind(quantity)
+        character(len=*), intent(in) :: quantity
+        select case (quantity)
+        case ('DEPL_R', 'FORC_R')
+            value_kind = KIND_VECTOR
+        case ('SIEF_R', 'EPSI_R')
+            value_kind = KIND_TENSOR
+        case default
+            value_kind = KIND_OTHER
+        end select
+    end function value_kind
+
+    !> Which row of TENSOR_SLOT_NAMES names the field's tensor components: the first row
+    !> with a component the field has; 0 for none.
+    integer function tensor_row(f) result(row)
+        type(field_t), intent(in) :: f
+        integer :: j
+        do row = 1, size(TENSOR_SLOT_NAMES, 2)
+            do j = 1, 6
+                if (field_component(f, trim(TENSOR_SLOT_NAMES(j, row))) > 0) return
+            end do
+        end do
+        row = 0
+    end function tensor_row
+
+    !> One component in the plane frame (a, b) (rvcalq, V3 and T3).
+    pure real(dp) function turned_value(kind, j, v, a, b) result(val)
+        integer, intent(in) :: kind, j
+        real(dp), intent(in) :: v(:), a(2), b(2)
+        real(dp) :: txx, tyy, txy
+        if (kind == KIND_VECTOR) then
+            select case (j)
+            case (1)
+                val = a(1) * v(1) + a(2) * v(2)
+            case (2)
+                val = b(1) * v(1) + b(2) * v(2)
+            case (4)
+                val = a(1) * v(4) + a(2) * v(5)
+            case (5)
+                val = b(1) * v(4) + b(2) * v(5)
+            case default
+                val = v(j)
+            end select
+        else
+            txx = v(1); tyy = v(2); txy = v(4)
+            select case (j)
+            case (1)
+                val = a(1) * (a(1) * txx + a(2) * txy) + a(2) * (a(1) * txy + a(2) * tyy)
+            case (2)
+                val = b(1) * (b(1) * txx + b(2) * txy) + b(2) * (b(1) * txy + b(2) * tyy)
+            case (4)
+                val = a(1) * (b(1) * txx + b(2) * txy) + a(2) * (b(1) * txy + b(2) * tyy)
+            case (5)
+                val = a(1) * v(5) + a(2) * v(6)
+            case (6)
+                val = b(1) * v(5) + b(2) * v(6)
+            case default
+                val = v(3)
+            end select
+        end if
+    end function turned_value
+
+    !> v.d for a vector, S d for a tensor (xx yy zz xy xz yz), the terms of zero direction
+    !> components left out as rvpstd leaves them out.
+    pure subroutine traction(kind, v, d, q)
+        integer, intent(in) :: kind
+        real(dp), intent(in) :: v(:), d(3)
+        real(dp), intent(out) :: q(:)
+        integer, parameter :: ROWS(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
+        integer :: i
+        q = 0.0_dp
+        if (kind == KIND_VECTOR) then
+            q(1) = dot(v(1:3))
+        else
+            do i = 1, 3
+                q(i) = dot([v(ROWS(1, i)), v(ROWS(2, i)), v(ROWS(3, i))])
+            end do
+        end if
+    contains
+        pure real(dp) function dot(w)
+            real(dp), intent(in) :: w(3)
+            integer :: j
+            logical :: started
+            dot = 0.0_dp
+            started = .false.
+            do j = 1, 3
+                if (.not. abs(d(j)) > 0.0_dp) cycle
+                if (started) then
+                    dot = dot + w(j) * d(j)
+                else
+                    dot = w(j) * d(j)
+                    started = .true.
+                end if
+            end do
+        end function dot
+    end subroutine traction
 
 end module releve_frames

@@ -64,9 +64,20 @@ module table_concept
         table_select_rows, table_select_columns, table_column_names, table_rename_column, &
         table_set_value_text, table_is_number, table_text_width_for, table_copy_cell, &
         table_append_title, table_remove_empty_rows, table_replace_rows, &
-        table_default_title, table_label
+        table_default_title, table_label, table_entity_label
 
 contains
+
+    !> The text a table's NOEUD or MAILLE cell (and POST_ELEM MINMAX's NO_/MA_ cells) holds
+    !> for the mesh's node or cell `number`: the number itself ('19'), as code_aster 17's
+    !> int_to_char8 writes it for a mesh without names, which every mesh LIRE_MAILLAGE
+    !> makes is (lrmast drops the .mail file's names; MED files' names are not read), so
+    !> that a deck's FILTRE VALE_K='19' finds the row of node N19.
+    function table_entity_label(number) result(label)
+        integer, intent(in) :: number
+        character(len=:), allocatable :: label
+        label = to_text(number)
+    end function table_entity_label
 
     function table_concept_type(self) result(name)
         class(table_t), intent(in) :: self

@@ -3,9 +3,10 @@
 !> PRECISION) read into table_filter_t and applied in order, each error located at the
 !> occurrence's keyword; the TRI factor keyword.
 module table_keywords
+    use keyword_relocation, only: relocate_at => relocate_error
     use kinds, only: dp, i4, i8
     use strings, only: string_t, to_text, join_words
-    use status, only: status_t, clear_status, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use deck_concept, only: concept_t, concept_display_name
     use deck_value, only: value_t, VK_INT, VK_REAL, VK_STR, VK_BOOL, VK_TUPLE, VK_LIST, &
         unpack_value, value_list_t, kind_label
@@ -221,19 +222,6 @@ contains
         call ctx%write_warning(file // ':' // to_text(int(line, i4)) // ':' // &
             to_text(int(col, i4)) // ': warning: ' // path // '/' // key // ': ' // message)
     end subroutine warn_at
-
-    !> Locates a failed status at `key` of `occ`, keeping its message.
-    subroutine relocate_at(occ, key, st)
-        class(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: key
-        type(status_t), intent(inout) :: st
-        character(len=:), allocatable :: message
-        integer :: code
-        message = st%message
-        code = st%code
-        call clear_status(st)
-        call occ%error_at(key, message, st, code)
-    end subroutine relocate_at
 
     !> The values of column `column` in rows `rows` (at most LISTED_VALUES, then '...'),
     !> absent cells as '-', for messages.

@@ -219,6 +219,15 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("plane_thermal", files, [],
                       {"case.export": "export", "thermal_plane.comm": "deck",
                        "thermal_tria6.mail": "mail", "thermal_quad8.mail": "mail"}, 0.6))
+    # The shrinkage strains of AFFE_VARC HYDR and SECH (B_ENDOGE, K_DESSIC, EVOL_SECH,
+    # HYDR_NOEU) and CALC_CHAMP's EPME_ELGA / EPSP_ELGA on the plane strips.
+    files = {"case.export": os.path.join(plane, "shrinkage_plane.export"),
+             "shrinkage_plane.comm": os.path.join(plane, "shrinkage_plane.comm")}
+    for cell in ("tria3", "tria6", "quad4", "quad8", "quad9"):
+        files["thermal_%s.mail" % cell] = os.path.join(plane, "thermal_%s.mail" % cell)
+    seeds.append(Seed("plane_shrinkage", files, [],
+                      {"case.export": "export", "shrinkage_plane.comm": "deck",
+                       "thermal_quad8.mail": "mail"}, 0.5))
     # ELAS_ORTH plane elements in AFFE_CARA_ELEM MASSIF frames (ANGL_REP, ORIG_AXE).
     files = {"case.export": os.path.join(plane, "orthotropic_plane.export"),
              "orthotropic_plane.comm": os.path.join(plane, "orthotropic_plane.comm")}
@@ -328,7 +337,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                       dict(comm_targets, **{"case.mail": "mail"}), 0.7))
     # Linear relations: LIAISON_DDL / OBLIQUE on the patch, FACE_IMPO DNOR, LIAISON_SOLIDE,
     # LIAISON_MAIL (MASSIF with DNOR and ELIM_MULT, COQUE); LIAISON_PROJ on PROJ_CHAMP's
-    # correspondence (IDENTITE on plane solids, EXCENTREMENT on plates);
+    # correspondence (IDENTITE on plane solids, EXCENTREMENT on plates); STAT_NON_LINE's
+    # follower PRES_REP (EXCIT TYPE_CHARGE='SUIV', functions of XF, YF);
     # the loads' resultants (PESANTEUR, FORCE_ARETE, FORCE_COQUE, FORCE_INTERNE, PRES_REP).
     for name, mesh in (("relations_patch", os.path.join(verif, "patch_plan.mail")),
                        ("face_impo_dnor", os.path.join(verif, "slanted_block.mail")),
@@ -338,7 +348,8 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        ("glued_plan", os.path.join(verif, "glued_plan.mail")),
                        ("glued_plate", os.path.join(verif, "glued_plate.mail")),
                        ("proj_plan", os.path.join(verif, "glued_plan.mail")),
-                       ("proj_plate", os.path.join(verif, "proj_plate.mail"))):
+                       ("proj_plate", os.path.join(verif, "proj_plate.mail")),
+                       ("follower_pressure", os.path.join(verif, "follower_square.mail"))):
         seeds.append(Seed(name, {"case.comm": os.path.join(verif, name + ".comm"),
                                  "case.mail": mesh}, [],
                           dict(comm_targets, **{"case.mail": "mail"}), 0.7))
@@ -397,6 +408,12 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "case.20": os.path.join(tables, "lign_coupe.mail")},
                       ["--unit", "20=case.20"],
                       dict(comm_targets, **{"case.20": "mail"}), 0.6))
+    # MACR_LIGN_COUPE's frames (POLAIRE, LOCAL on a node path, CYLINDRIQUE) and quantities
+    # (INVARIANT, ELEM_PRINCIPAUX, TRAC_NOR, TRAC_DIR) on the annulus and its turned copy.
+    seeds.append(Seed("lign_coupe_frames",
+                      {"case.comm": os.path.join(tables, "lign_coupe_frames.comm"),
+                       "case.mail": os.path.join(tables, "annulus.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.8))
     # POST_ELEM MASS_INER: a plane rectangle of four cell types, a tilted plate.
     seeds.append(Seed("post_elem",
                       {"case.comm": os.path.join(tables, "post_elem.comm"),
