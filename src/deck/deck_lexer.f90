@@ -242,7 +242,9 @@ contains
         type(lexer_t), intent(inout) :: lx
         if (lx%depth == 0) call push_newline(lx, lx%line, lx%col)
         lx%i = lx%i + 1; lx%line = lx%line + 1; lx%col = 1
-        lx%at_line_start = .true.
+        ! Inside brackets the logical line goes on: no indentation to measure there, nor
+        ! after the closing bracket that ends the line's brackets (`x = (1 +\n 2) * 3`).
+        lx%at_line_start = lx%depth == 0
     end subroutine lex_line_end
 
     !> Newlines and indentation: measures the indentation of a logical line (tabs to the next

@@ -10,7 +10,8 @@
 !>   EXTR  a field of a RESULTAT at NUME_ORDRE or INST (result_access), or the GEOMETRIE
 !>         (NOEU_GEOM_R: X Y Z) of a MAILLAGE; TYPE_CHAM must be the field's;
 !>   ASSE, COMB, EVAL  see crea_champ_combine;
-!>   NORMALE  the nodal normals of boundary cells (crea_champ_normale).
+!>   NORMALE  the nodal normals of boundary cells (crea_champ_normale);
+!>   DISC  a field moved to another location (crea_champ_disc).
 !> Every error names what exists: the quantity's components, the field's TYPE_CHAM, the
 !> groups of the mesh.
 module crea_champ_command
@@ -39,6 +40,7 @@ module crea_champ_command
     use crea_champ_combine, only: crea_asse, crea_comb, crea_eval, component_sets_of, &
         read_support
     use crea_champ_normale, only: crea_normale
+    use crea_champ_disc, only: crea_disc
     implicit none
     private
 
@@ -85,9 +87,11 @@ contains
             call crea_eval(cmd, location, quantity, out, st)
         case ('NORMALE')
             call crea_normale(cmd, type_cham, out, st)
+        case ('DISC')
+            call crea_disc(cmd, location, quantity, out, st)
         case default
             call cmd%error_at('OPERATION', 'OPERATION=''' // operation // ''' is not ' // &
-                'built in parasol (AFFE, EXTR, ASSE, COMB, EVAL and NORMALE are)', st, &
+                'built in parasol (AFFE, EXTR, ASSE, COMB, EVAL, NORMALE and DISC are)', st, &
                 STATUS_NOT_IMPLEMENTED)
         end select
         if (st%failed()) return

@@ -305,6 +305,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "dkq.mail": os.path.join(verif, "patch_dkq.mail")},
                       ["--unit", "20=disc.mail", "--unit", "21=dkq.mail"],
                       dict(comm_targets, **{"disc.mail": "mail"}), 0.4))
+    # CREA_CHAMP OPERATION='DISC' between locations on the plane family's five cell types.
+    files = {"case.comm": os.path.join(fields, "crea_champ_disc.comm")}
+    args = []
+    for unit, cell in enumerate(("tria3", "tria6", "quad4", "quad8", "quad9"), start=20):
+        files["patch_%s.mail" % cell] = os.path.join(plane, "patch_%s.mail" % cell)
+        args += ["--unit", "%d=patch_%s.mail" % (unit, cell)]
+    seeds.append(Seed("fields_disc", files, args,
+                      dict(comm_targets, **{"patch_quad8.mail": "mail"}), 0.4))
     # LIRE_MAILLAGE FORMAT='IDEAS': the universal file mutated.
     seeds.append(Seed("ideas_mesh",
                       {"case.comm": os.path.join(SOURCE, "tests", "mesh", "ideas_plate.comm"),
