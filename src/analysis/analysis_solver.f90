@@ -5,7 +5,7 @@
 !> with held equations when the singularity check is off (METHODE='MUMPS', NPREC < 0), and
 !> the solver lines of the .mess (factorizations, the largest loss of digits).
 module analysis_solver
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_SINGULAR
     use strings, only: to_text, real_e13, real_short
     use model_dof_numbering, only: describe_equation
@@ -192,7 +192,9 @@ contains
     !>  matrix : inout, the pattern in, the assembled matrix out
     !>  solver : inout, analysed (open_solver); factored on return
     !>  held   : out, the held equations
-    subroutine factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
+    !>  assembly_time : out, the assembly's wall and CPU seconds (the .mess summary)
+    subroutine factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
+                                          assembly_time)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -202,10 +204,11 @@ contains
         type(solver_options_t), intent(in) :: options
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
+        real(dp), intent(out) :: assembly_time(2)
         type(pivot_diagnosis_t) :: diag
         type(pivot_record_t) :: one
         call assemble_and_factor(s, map, u, .false., matrix, solver, diag, st, held=held, &
-            log=log)
+            log=log, assembly_time=assembly_time)
         if (st%failed()) return
         if (diag%kind /= PIVOT_FREE) call accumulate_pivots(diag, one)
         call log_add(log, solver_diagnostics_line(one, options%nprec, options%method))
@@ -220,8 +223,9 @@ contains
     !>  history : in, optional, DIS_CONTACT state at the start of the step
     !>  held  : inout, optional, the equations the factor holds (check off)
     !>  log   : inout, optional, gets the factorization line (method, ordering, size, time)
+    !>  assembly_time : out, optional, the assembly's wall and CPU seconds
     subroutine assemble_and_factor(s, map, u, elastic, matrix, solver, diag, st, cache, &
-                                   history, held, log)
+                                   history, held, log, assembly_time)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -234,10 +238,19 @@ contains
         type(contact_history_t), intent(in), optional :: history
         type(held_t), intent(inout), optional :: held
         type(analysis_log_t), intent(inout), optional :: log
+        real(dp), intent(out), optional :: assembly_time(2)
         real(dp), allocatable :: ksr(:, :)
+        real(dp) :: cpu0, cpu1
+        integer(i8) :: t0, t1, rate
         call progress_update(solver%progress, 'assembly of the ' // &
             trim(merge('elastic', 'tangent', elastic)) // ' matrix')
+        call system_clock(t0, rate)
+        call cpu_time(cpu0)
         call assemble_stiffness(s, map, u, elastic, matrix, st, cache, history)
+        call system_clock(t1)
+        call cpu_time(cpu1)
+        if (present(assembly_time)) assembly_time = [real(t1 - t0, dp) / &
+            real(max(rate, 1_i8), dp), cpu1 - cpu0]
         if (st%failed()) return
         call modes_support(s, map, solver, u, elastic, ksr, st, history)
         if (st%failed()) return

@@ -9,8 +9,11 @@
 !> The .mess says how many digits each answer holds: a last solve with the final residual
 !> estimates its error (answer_digits).
 !> DIS_CHOC is not a MECA_STATIQUE behaviour: s%choc must be all .false. (springs linear).
+!> The .mess ends with the wall and CPU time of each phase (numbering and the solver's
+!> analysis, assembly, factorization with its pivot diagnosis, loads and solves): what
+!> doc/performance.md's benchmarks read.
 module linear_static
-    use kinds, only: dp, i4
+    use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text
     use sparse_matrix, only: sym_matrix_t, sym_move
@@ -69,11 +72,13 @@ contains
             forc(:)
         type(elimination_t) :: elim
         integer(i4) :: k, n_eq, pass
+        real(dp) :: clock(2, 4), assembly_time(2)     ! (wall, CPU) at the phases' ends
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
                 'springs need STAT_NON_LINE')
             return
         end if
+        call read_clocks(clock(:, 1))
         n_eq = s%dofs%n_equations
         if (present(progress)) call progress_note(progress, 'MECA_STATIQUE: ' // &
             to_text(n_eq) // ' equations, ' // to_text(size(times, kind=i4)) // ' instant(s)')
@@ -94,8 +99,11 @@ contains
         allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
             x(map%n_free), du(n_eq), closed(0), fn(0))
         u = 0.0_dp
-        call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st)
+        call read_clocks(clock(:, 2))
+        call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
+            assembly_time)
         if (st%failed()) return
+        call read_clocks(clock(:, 3))
         call result_init(res, 'evol_elas', s%mesh, s%dofs, int(size(times), i4))
         do k = 1, int(size(times), i4)
             u = 0.0_dp
@@ -130,6 +138,37 @@ contains
                 // ')')
         end do
         if (len(solver%iteration_summary()) > 0) call log_add(log, solver%iteration_summary())
+        call read_clocks(clock(:, 4))
+        call log_add(log, 'MECA_STATIQUE times (wall / CPU s): numbering and analysis ' // &
+            pair(clock(:, 2) - clock(:, 1)) // ', assembly ' // pair(assembly_time) // &
+            ', factorization ' // pair(clock(:, 3) - clock(:, 2) - assembly_time) // &
+            ', loads and solves ' // pair(clock(:, 4) - clock(:, 3)))
     end subroutine meca_statique
+
+    ! Wall-clock and process CPU seconds now.
+    subroutine read_clocks(now)
+        real(dp), intent(out) :: now(2)
+        integer(i8) :: ticks, rate
+        call system_clock(ticks, rate)
+        now(1) = real(ticks, dp) / real(max(rate, 1_i8), dp)
+        call cpu_time(now(2))
+    end subroutine read_clocks
+
+    ! 'wall / CPU' seconds for the .mess.
+    function pair(t) result(text)
+        real(dp), intent(in) :: t(2)
+        character(len=:), allocatable :: text
+        text = seconds_text(t(1)) // ' / ' // seconds_text(t(2))
+    end function pair
+
+    ! Seconds with 3 decimals (a negative round-off shown as 0).
+    function seconds_text(t) result(text)
+        real(dp), intent(in) :: t
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        write (buf, '(f0.3)') max(t, 0.0_dp)
+        text = trim(buf)
+        if (text(1:1) == '.') text = '0' // text
+    end function seconds_text
 
 end module linear_static

@@ -593,23 +593,30 @@ contains
         end do
     end subroutine sort_rows
 
-    ! Rows r and q have the same equations with proportional coefficients.
+    ! Rows r and q have the same equations with proportional coefficients. Each row is
+    ! scaled by its largest coefficient first (entries in [-1, 1]), so that no ratio of two
+    ! coefficients is formed: a coefficient of 1e-308 beside one of 1 (a normal nearly along
+    ! an axis) overflowed the ratio.
     pure logical function same_row(rw, r, q)
         type(relation_rows_t), intent(in) :: rw
         integer(i4), intent(in) :: r, q
-        integer(i4) :: n, k, j
-        real(dp) :: ratio, a
+        integer(i4) :: n, k, ir, iq
+        real(dp) :: scale_r, scale_q, flip, u_r, u_q
         same_row = .false.
         n = rw%ptr(r + 1) - rw%ptr(r)
-        if (rw%ptr(q + 1) - rw%ptr(q) /= n) return
-        a = rw%coef(rw%ptr(r))
-        if (.not. abs(a) > 0.0_dp) return
-        ratio = rw%coef(rw%ptr(q)) / a
+        if (rw%ptr(q + 1) - rw%ptr(q) /= n .or. n == 0) return
+        ir = rw%ptr(r)
+        iq = rw%ptr(q)
+        scale_r = maxval(abs(rw%coef(ir:ir + n - 1)))
+        scale_q = maxval(abs(rw%coef(iq:iq + n - 1)))
+        if (.not. (scale_r > 0.0_dp .and. scale_q > 0.0_dp)) return
+        if (.not. abs(rw%coef(ir)) > 0.0_dp) return
+        flip = sign(1.0_dp, rw%coef(iq)) * sign(1.0_dp, rw%coef(ir))
         do k = 0, n - 1
-            j = rw%ptr(q) + k
-            if (rw%eq(j) /= rw%eq(rw%ptr(r) + k)) return
-            if (abs(rw%coef(j) - ratio * rw%coef(rw%ptr(r) + k)) > SAME_ROW_TOLERANCE * &
-                max(abs(rw%coef(j)), abs(ratio * rw%coef(rw%ptr(r) + k)))) return
+            if (rw%eq(iq + k) /= rw%eq(ir + k)) return
+            u_r = flip * (rw%coef(ir + k) / scale_r)
+            u_q = rw%coef(iq + k) / scale_q
+            if (abs(u_q - u_r) > SAME_ROW_TOLERANCE * max(abs(u_q), abs(u_r))) return
         end do
         same_row = .true.
     end function same_row

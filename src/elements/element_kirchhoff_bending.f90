@@ -25,6 +25,12 @@ module element_kirchhoff_bending
 
     public :: kirchhoff_bending_stiffness, kirchhoff_bending_b, kirchhoff_rotation_map
 
+    !> The rotation map of a cell (rotation_map) is held in fixed (MAP_ROWS, MAP_COLS)
+    !> arrays, rows 1:3nn and columns 1:2nn used: no allocation per call (gfortran puts
+    !> automatic arrays on the heap), and a caller that evaluates several points of a cell
+    !> computes it once (CALC_CHAMP, doc/performance.md).
+    integer(i4), parameter, public :: MAP_ROWS = 12, MAP_COLS = 8
+
 contains
 
     !> Bending stiffness of a DKT (nn = 3) or DKQ (nn = 4) element in its local plane.
@@ -64,15 +70,16 @@ contains
     !>  xi  : in, reference point (area coordinates (L2, L3) on the triangle, [-1,1]^2 on
     !>        the quadrilateral)
     !>  b   : out, b(3, 3nn); det : out, Jacobian determinant (b = 0 if det <= 0)
-    pure subroutine kirchhoff_bending_b(xy, nn, xi, b, det)
+    pure subroutine kirchhoff_bending_b(xy, nn, xi, b, det, map_x, map_y)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: xy(2, nn), xi(2)
         real(dp), intent(out) :: b(3, 3 * nn), det
-        real(dp) :: bx(3 * nn, 2 * nn), by(3 * nn, 2 * nn), dn(2, 8), dg(2, 4), jac(2, 2)
-        real(dp) :: dxy(2, 8)
-        integer(i4) :: a, nr
+        !> the cell's rotation map (kirchhoff_rotation_map), when the caller has it
+        real(dp), intent(in), optional :: map_x(MAP_ROWS, MAP_COLS), map_y(MAP_ROWS, MAP_COLS)
+        real(dp) :: bx(MAP_ROWS, MAP_COLS), by(MAP_ROWS, MAP_COLS), dn(2, 8), dg(2, 4)
+        real(dp) :: jac(2, 2), dxy(2, 8)
+        integer(i4) :: nr
         nr = 2 * nn
-        call rotation_map(xy, nn, bx, by)
         call quadratic_shape_derivatives(nn, xi, dn, dg)
         jac = matmul(dg(:, 1:nn), transpose(xy))
         det = jac(1, 1) * jac(2, 2) - jac(1, 2) * jac(2, 1)
@@ -80,32 +87,59 @@ contains
         if (.not. det > 0.0_dp) return
         dxy(1, 1:nr) = (jac(2, 2) * dn(1, 1:nr) - jac(1, 2) * dn(2, 1:nr)) / det
         dxy(2, 1:nr) = (-jac(2, 1) * dn(1, 1:nr) + jac(1, 1) * dn(2, 1:nr)) / det
-        do a = 1, nr
-            b(1, :) = b(1, :) + dxy(1, a) * bx(:, a)
-            b(2, :) = b(2, :) + dxy(2, a) * by(:, a)
-            b(3, :) = b(3, :) + dxy(2, a) * bx(:, a) + dxy(1, a) * by(:, a)
-        end do
+        if (present(map_x) .and. present(map_y)) then
+            call add_rotation_gradients(nn, dxy, map_x, map_y, b)
+        else
+            call rotation_map(xy, nn, bx, by)
+            call add_rotation_gradients(nn, dxy, bx, by, b)
+        end if
     end subroutine kirchhoff_bending_b
+
+    ! b += the x, y derivatives of the rotation map: kappa = (beta_x,x ; beta_y,y ;
+    ! beta_x,y + beta_y,x), dxy the derivatives of the 2nn rotation shape functions. Column
+    ! by column, each entry summed over the rotation nodes a = 1, 2, ... in turn.
+    pure subroutine add_rotation_gradients(nn, dxy, bx, by, b)
+        integer(i4), intent(in) :: nn
+        real(dp), intent(in) :: dxy(2, 8), bx(MAP_ROWS, MAP_COLS), by(MAP_ROWS, MAP_COLS)
+        real(dp), intent(inout) :: b(3, 3 * nn)
+        real(dp) :: b1, b2, b3
+        integer(i4) :: a, j
+        do j = 1, 3 * nn
+            b1 = b(1, j)
+            b2 = b(2, j)
+            b3 = b(3, j)
+            do a = 1, 2 * nn
+                b1 = b1 + dxy(1, a) * bx(j, a)
+                b2 = b2 + dxy(2, a) * by(j, a)
+                b3 = b3 + dxy(2, a) * bx(j, a) + dxy(1, a) * by(j, a)
+            end do
+            b(1, j) = b1
+            b(2, j) = b2
+            b(3, j) = b3
+        end do
+    end subroutine add_rotation_gradients
 
     !> The rotation map below, for the stress recovery (element_plate_fields: the shear
     !> forces need the second derivatives of the rotation field).
     pure subroutine kirchhoff_rotation_map(xy, nn, bx, by)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: xy(2, nn)
-        real(dp), intent(out) :: bx(3 * nn, 2 * nn), by(3 * nn, 2 * nn)
+        real(dp), intent(out) :: bx(MAP_ROWS, MAP_COLS), by(MAP_ROWS, MAP_COLS)
         call rotation_map(xy, nn, bx, by)
     end subroutine kirchhoff_rotation_map
 
     !> beta_x, beta_y at the corners and side midpoints as linear forms of the element DOFs:
     !> column a of bx/by holds the coefficients of beta_x/beta_y at rotation node a (corners
-    !> 1..nn, then midpoints of sides 1-2, 2-3, ..., nn-1).
+    !> 1..nn, then midpoints of sides 1-2, 2-3, ..., nn-1), rows 1:3nn (the rest 0).
     pure subroutine rotation_map(xy, nn, bx, by)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: xy(2, nn)
-        real(dp), intent(out) :: bx(3 * nn, 2 * nn), by(3 * nn, 2 * nn)
-        real(dp) :: d(2), length, c, s, bs_i(3 * nn), bs_j(3 * nn), bn_i(3 * nn), bn_j(3 * nn)
-        real(dp) :: bs(3 * nn), bn(3 * nn)
-        integer(i4) :: i, j, k
+        real(dp), intent(out) :: bx(MAP_ROWS, MAP_COLS), by(MAP_ROWS, MAP_COLS)
+        real(dp) :: d(2), length, c, s
+        real(dp) :: bs_i(MAP_ROWS), bs_j(MAP_ROWS), bn_i(MAP_ROWS), bn_j(MAP_ROWS)
+        real(dp) :: bs(MAP_ROWS), bn(MAP_ROWS)
+        integer(i4) :: i, j, k, m
+        m = 3 * nn
         bx = 0.0_dp
         by = 0.0_dp
         do i = 1, nn
@@ -120,16 +154,16 @@ contains
             if (.not. length > 0.0_dp) cycle   ! degenerate: caught by the Jacobian check
             c = d(1) / length
             s = d(2) / length
-            bs_i = c * bx(:, i) + s * by(:, i)
-            bs_j = c * bx(:, j) + s * by(:, j)
-            bn_i = s * bx(:, i) - c * by(:, i)
-            bn_j = s * bx(:, j) - c * by(:, j)
-            bs = -0.25_dp * (bs_i + bs_j)
+            bs_i(1:m) = c * bx(1:m, i) + s * by(1:m, i)
+            bs_j(1:m) = c * bx(1:m, j) + s * by(1:m, j)
+            bn_i(1:m) = s * bx(1:m, i) - c * by(1:m, i)
+            bn_j(1:m) = s * bx(1:m, j) - c * by(1:m, j)
+            bs(1:m) = -0.25_dp * (bs_i(1:m) + bs_j(1:m))
             bs(3 * j - 2) = bs(3 * j - 2) - 1.5_dp / length
             bs(3 * i - 2) = bs(3 * i - 2) + 1.5_dp / length
-            bn = 0.5_dp * (bn_i + bn_j)
-            bx(:, nn + k) = c * bs + s * bn
-            by(:, nn + k) = s * bs - c * bn
+            bn(1:m) = 0.5_dp * (bn_i(1:m) + bn_j(1:m))
+            bx(1:m, nn + k) = c * bs(1:m) + s * bn(1:m)
+            by(1:m, nn + k) = s * bs(1:m) - c * bn(1:m)
         end do
     end subroutine rotation_map
 

@@ -23,7 +23,8 @@
 module element_plate_fields
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use element_kirchhoff_bending, only: kirchhoff_bending_b, kirchhoff_rotation_map
+    use element_kirchhoff_bending, only: kirchhoff_bending_b, kirchhoff_rotation_map, &
+        MAP_ROWS, MAP_COLS
     implicit none
     private
 
@@ -62,20 +63,24 @@ contains
     !>  xi : in, (L2, L3) on the triangle, [-1, 1]^2 on the quadrilateral
     !>  e, k : out, (xx, yy, xy) engineering shear
     !>  det : out, the Jacobian determinant (<= 0: a degenerate cell, e = k = 0)
-    pure subroutine plate_point_strains(xy, nn, ul, xi, e, k, det)
+    !>  map_x, map_y : in, optional, the cell's rotation map (kirchhoff_rotation_map), for
+    !>        a caller evaluating several points of a cell
+    pure subroutine plate_point_strains(xy, nn, ul, xi, e, k, det, map_x, map_y)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: xy(2, nn), ul(6 * nn), xi(2)
         real(dp), intent(out) :: e(3), k(3), det
-        real(dp) :: bb(3, 3 * nn), ub(3 * nn), dxy(2, 4)
-        integer(i4) :: i
+        real(dp), intent(in), optional :: map_x(MAP_ROWS, MAP_COLS), map_y(MAP_ROWS, MAP_COLS)
+        real(dp) :: bb(3, MAP_ROWS), ub(MAP_ROWS), dxy(2, 4)
+        integer(i4) :: i, m
         e = 0.0_dp
         k = 0.0_dp
-        call kirchhoff_bending_b(xy, nn, xi, bb, det)
+        m = 3 * nn
+        call kirchhoff_bending_b(xy, nn, xi, bb, det, map_x, map_y)   ! bb(:, 1:3nn)
         if (.not. det > 0.0_dp) return
         do i = 1, nn
             ub(3 * i - 2:3 * i) = ul(6 * i - 3:6 * i - 1)
         end do
-        k = matmul(bb, ub)
+        k = matmul(bb(:, 1:m), ub(1:m))
         call linear_derivatives(xy, nn, xi, dxy)
         do i = 1, nn
             e(1) = e(1) + dxy(1, i) * ul(6 * i - 5)
@@ -114,27 +119,35 @@ contains
 
     !> Shear forces T = (Qx, Qy) at reference point xi (module header).
     !>  df : in, the bending rigidity;  other arguments as plate_point_strains
-    pure subroutine plate_point_shear(xy, nn, ul, df, xi, t, dk_out)
+    pure subroutine plate_point_shear(xy, nn, ul, df, xi, t, dk_out, map_x, map_y)
         integer(i4), intent(in) :: nn
         real(dp), intent(in) :: xy(2, nn), ul(6 * nn), df(3, 3), xi(2)
         real(dp), intent(out) :: t(2)
         !> the curvatures' gradient (d/dx, d/dy of k1 k2 k3), laminates' shear stresses (elem)
         real(dp), intent(out), optional :: dk_out(3, 2)
-        real(dp) :: bx(3 * nn, 2 * nn), by(3 * nn, 2 * nn), ub(3 * nn)
+        !> the cell's rotation map, as plate_point_strains
+        real(dp), intent(in), optional :: map_x(MAP_ROWS, MAP_COLS), map_y(MAP_ROWS, MAP_COLS)
+        real(dp) :: bx(MAP_ROWS, MAP_COLS), by(MAP_ROWS, MAP_COLS), ub(MAP_ROWS)
         real(dp) :: d2(3, 8), dg(2, 4), jac(2, 2), inv(2, 2), det
-        real(dp) :: bxv(8), byv(8), hx(3), hy(3), w(3, 3), dk(3, 2)
+        real(dp) :: bxv(8), byv(8), hx(3), hy(3), w(3, 3), dk(3, 2), h2(3)
         real(dp), parameter :: xc(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp]
         real(dp), parameter :: yc(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]
-        integer(i4) :: i, nr
+        integer(i4) :: i, nr, m
         t = 0.0_dp
         if (present(dk_out)) dk_out = 0.0_dp
         nr = 2 * nn
+        m = 3 * nn
         do i = 1, nn
             ub(3 * i - 2:3 * i) = ul(6 * i - 3:6 * i - 1)
         end do
-        call kirchhoff_rotation_map(xy, nn, bx, by)
-        bxv(1:nr) = matmul(ub, bx)          ! beta_x, beta_y at the 2nn rotation nodes
-        byv(1:nr) = matmul(ub, by)
+        if (present(map_x) .and. present(map_y)) then
+            bxv(1:nr) = matmul(ub(1:m), map_x(1:m, 1:nr))  ! beta_x, beta_y at the 2nn nodes
+            byv(1:nr) = matmul(ub(1:m), map_y(1:m, 1:nr))
+        else
+            call kirchhoff_rotation_map(xy, nn, bx, by)
+            bxv(1:nr) = matmul(ub(1:m), bx(1:m, 1:nr))
+            byv(1:nr) = matmul(ub(1:m), by(1:m, 1:nr))
+        end if
         call quadratic_second_derivatives(nn, xi, d2)
         dg = 0.0_dp
         if (nn == 3) then
@@ -158,8 +171,11 @@ contains
         w(2, :) = [inv(2, 1)**2, inv(2, 2)**2, 2.0_dp * inv(2, 1) * inv(2, 2)]
         w(3, :) = [inv(1, 1) * inv(2, 1), inv(1, 2) * inv(2, 2), &
                    inv(1, 1) * inv(2, 2) + inv(1, 2) * inv(2, 1)]
-        hx = matmul(w, matmul(d2(:, 1:nr), bxv(1:nr)))    ! beta_x,xx ,yy ,xy
-        hy = matmul(w, matmul(d2(:, 1:nr), byv(1:nr)))    ! beta_y,xx ,yy ,xy
+        ! (the inner products into h2: a temporary of the nested matmul is allocated)
+        h2 = matmul(d2(:, 1:nr), bxv(1:nr))
+        hx = matmul(w, h2)                                 ! beta_x,xx ,yy ,xy
+        h2 = matmul(d2(:, 1:nr), byv(1:nr))
+        hy = matmul(w, h2)                                 ! beta_y,xx ,yy ,xy
         ! curvature derivatives: dk(:, 1) = d/dx (k1, k2, k3), dk(:, 2) = d/dy
         dk(:, 1) = [hx(1), hy(3), hx(3) + hy(1)]
         dk(:, 2) = [hx(3), hy(2), hx(2) + hy(3)]

@@ -87,7 +87,7 @@ contains
         type(component_set_t) :: sets(4)
         integer(i4), allocatable :: n_points(:), n_sub(:), cell_set(:), spring_of(:)
         integer(i4) :: c, kind
-        logical :: want
+        logical :: want, linear_springs
         if (.not. res%has_structure) then
             call set_error(st, STATUS_MODEL_ERROR, 'SIEF_ELGA: the result does not know ' // &
                 'the model it was computed on')
@@ -134,7 +134,18 @@ contains
             call plane_rule_error(res, n_points, cell_set, st)
             return
         end if
-        if (any(cell_set == 2 .or. cell_set == 3)) then
+        ! the structure (a copy of the mesh and model) only for linear springs' K u: the
+        ! analysis stored the DIS_CHOC springs' forces
+        linear_springs = .false.
+        do c = 1, res%mesh%n_cells
+            if (cell_set(c) /= 2 .and. cell_set(c) /= 3) cycle
+            if (spring_of(c) > 0) then
+                if (res%choc(c)) cycle
+            end if
+            linear_springs = .true.
+            exit
+        end do
+        if (linear_springs) then
             call result_structure(res, s, st)
             if (st%failed()) return
         end if

@@ -69,8 +69,15 @@ contains
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: n_points(:)
         real(dp) :: e(MAX_CELL_NODES, MAX_GAUSS_POINTS)
-        integer(i4) :: c, nn, ng, n_sub, n_cmp, node, p, s, j, a, b
+        integer(i4) :: c, nn, ng, n_sub, n_cmp, node, p, j, a, b
         integer(i8) :: base_in, base_out
+        ! the matrices made so far, by (element, cell type, points): a matrix depends on
+        ! nothing else, and making it (the element's families, a least-squares fit) cost
+        ! more than extrapolating (doc/performance.md, "CALC_CHAMP")
+        integer(i4), parameter :: MAX_KEPT = 16
+        real(dp) :: kept(MAX_CELL_NODES, MAX_GAUSS_POINTS, MAX_KEPT)
+        integer(i4) :: kept_key(4, MAX_KEPT), n_kept, key(3), hit, stride
+        real(dp) :: total
         call field_init_cells(fe, FIELD_ELNO, fg%quantity, fg%components, fg%n_cells, st)
         if (st%failed()) return
         allocate (n_points(fg%n_cells), source=0_i4)
@@ -79,26 +86,45 @@ contains
         end do
         call field_define_cells(fe, n_points, fg%n_subpoints, fg%cell_set, fg%sets, st)
         if (st%failed()) return
+        n_kept = 0
         do c = 1, fg%n_cells
             ng = fg%n_points(c)
             if (ng == 0) cycle
-            call extrapolation_matrix(mesh, model, c, ng, e, nn, st)
-            if (st%failed()) return
+            key = [model%element(c), mesh%cell_type(c), ng]
+            hit = 0
+            do j = 1, n_kept
+                if (all(kept_key(1:3, j) == key)) then
+                    hit = j
+                    exit
+                end if
+            end do
+            if (hit > 0) then
+                e = kept(:, :, hit)
+                nn = kept_key(4, hit)
+            else
+                call extrapolation_matrix(mesh, model, c, ng, e, nn, st)
+                if (st%failed()) return
+                if (n_kept < MAX_KEPT) then
+                    n_kept = n_kept + 1
+                    kept(:, :, n_kept) = e
+                    kept_key(:, n_kept) = [key, nn]
+                end if
+            end if
             n_sub = fg%n_subpoints(c)
             n_cmp = size(fg%sets(fg%cell_set(c))%cmp, kind=i4)
             base_in = fg%offset(c)
             base_out = fe%offset(c)
+            ! each value: the sum over the points p = 1, 2, ... in turn
+            stride = n_sub * n_cmp
             do node = 1, nn
-                do s = 1, n_sub
-                    do j = 1, n_cmp
-                        b = ((node - 1) * n_sub + (s - 1)) * n_cmp + j
-                        fe%values(base_out + b) = 0.0_dp
-                        do p = 1, ng
-                            a = ((p - 1) * n_sub + (s - 1)) * n_cmp + j
-                            fe%values(base_out + b) = fe%values(base_out + b) + &
-                                e(node, p) * fg%values(base_in + a)
-                        end do
+                do b = 1, stride
+                    total = 0.0_dp
+                    a = b
+                    do p = 1, ng
+                        total = total + e(node, p) * fg%values(base_in + a)
+                        a = a + stride
                     end do
+                    fe%values(base_out + (node - 1) * stride + b) = total
                 end do
             end do
         end do

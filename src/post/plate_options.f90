@@ -20,6 +20,7 @@ module plate_options
     use model_material, only: material_field_t, material_of_cell
     use model_cara_elem, only: cara_elem_t
     use element_plate, only: plate_local_frame
+    use element_kirchhoff_bending, only: kirchhoff_rotation_map, MAP_ROWS, MAP_COLS
     use element_plate_fields, only: plate_point_strains, plate_point_shear, plate_user_turn, &
         turn_plate_tensor, turn_plate_vector, plate_rigidities
     use model_plate_section, only: plate_section_t
@@ -52,6 +53,8 @@ module plate_options
         !> (assembly_varc, elem's), when the cell has some: the stresses and forces leave
         !> them out (sigma = D (e + z k - eps_th), N = Dm e - int D eps_th, ...)
         real(dp), allocatable :: eps_th(:, :)
+        !> the cell's rotation map (element_kirchhoff_bending), made once for all its points
+        real(dp) :: map_x(MAP_ROWS, MAP_COLS), map_y(MAP_ROWS, MAP_COLS)
     end type plate_cell_t
 
     public :: plate_prepare, plate_values, plate_value_count
@@ -106,6 +109,7 @@ contains
             st%message = cell_label(mesh, cell) // ': ' // st%message
             return
         end if
+        call kirchhoff_rotation_map(pc%xy(:, 1:pc%nn), pc%nn, pc%map_x, pc%map_y)
         do i = 1, 2 * pc%nn                  ! translations and rotations to the local frame
             pc%ul(3 * i - 2:3 * i) = matmul(pc%rot, ue(3 * i - 2:3 * i))
         end do
@@ -154,9 +158,9 @@ contains
         layer_h = h / real(pc%layers, dp)
         do p = 1, np
             call plate_point_strains(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), xi(:, p), &
-                e, k, det)
+                e, k, det, pc%map_x, pc%map_y)
             call plate_point_shear(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), pc%df, &
-                xi(:, p), t)
+                xi(:, p), t, map_x=pc%map_x, map_y=pc%map_y)
             base = (p - 1) * nv
             select case (kind)
             case (PLATE_FORCES)
@@ -247,9 +251,9 @@ contains
             mid = sec%offset
             do p = 1, np
                 call plate_point_strains(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), &
-                    xi(:, p), e, k, det)
+                    xi(:, p), e, k, det, pc%map_x, pc%map_y)
                 call plate_point_shear(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), sec%df, &
-                    xi(:, p), t, dk)
+                    xi(:, p), t, dk, pc%map_x, pc%map_y)
                 g = matmul(dci, t)
                 base = (p - 1) * nv
                 select case (kind)

@@ -433,6 +433,13 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                        "case.21": os.path.join(tables, "post_elem_plate.mail")},
                       ["--unit", "20=case.20", "--unit", "21=case.21"],
                       dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
+    # POST_ELEM VOLUMOGRAMME: per-cell ELGA / ELNO values, SEUIL, BORNES, a layered plate.
+    seeds.append(Seed("post_elem_volumogramme",
+                      {"case.comm": os.path.join(tables, "post_elem_volumogramme.comm"),
+                       "case.20": os.path.join(tables, "lign_coupe.mail"),
+                       "case.21": os.path.join(tables, "elga_plate.mail")},
+                      ["--unit", "20=case.20", "--unit", "21=case.21"],
+                      dict(comm_targets, **{"case.20": "mail", "case.21": "mail"}), 0.6))
     seeds.append(Seed("post_elem_energy",
                       {"case.comm": os.path.join(tables, "post_elem_energy.comm"),
                        "case.20": os.path.join(tables, "lign_coupe.mail"),
