@@ -37,6 +37,7 @@ module post_elem_command
         table_set_real, table_set_text, TABLE_REAL, TABLE_TEXT
     use table_keywords, only: relocate_at
     use post_elem_minmax, only: minmax_rows
+    use post_elem_volumogramme, only: volumogramme_rows
     use post_elem_energy, only: ener_pot_rows, trav_ext_rows, mesh_concept_name
     implicit none
     private
@@ -45,7 +46,7 @@ module post_elem_command
     !> The options of Code_Aster's POST_ELEM other than MASS_INER (not built).
     character(len=*), parameter :: OTHER_OPTIONS = 'ENER_CIN ' // &
         'WEIBULL RICE_TRACEY CARA_GEOM CHAR_LIMITE NORME CARA_POUTRE INDIC_ENER ' // &
-        'INDIC_SEUIL VOLUMOGRAMME AIRE_INTERNE ENER_ELAS ENER_ELTR ENER_TOTALE ENER_DISS ' // &
+        'INDIC_SEUIL AIRE_INTERNE ENER_ELAS ENER_ELTR ENER_TOTALE ENER_DISS ' // &
         'INTEGRALE'
     character(len=*), parameter :: COLUMNS = 'MASSE CDG_X CDG_Y CDG_Z IX_G IY_G IZ_G ' // &
         'IXY_G IXZ_G IYZ_G IX_PRIN_G IY_PRIN_G IZ_PRIN_G ALPHA BETA GAMMA'
@@ -90,7 +91,8 @@ contains
             b = index(OTHER_OPTIONS(a:) // ' ', ' ') + a - 2
             if (cmd%count(OTHER_OPTIONS(a:b)) > 0) then
                 call cmd%error_at(OTHER_OPTIONS(a:b), 'POST_ELEM ' // OTHER_OPTIONS(a:b) // &
-                    ' is not built by parasol: MASS_INER, ENER_POT, TRAV_EXT and MINMAX are', &
+                    ' is not built by parasol: MASS_INER, ENER_POT, TRAV_EXT, MINMAX and ' // &
+                    'VOLUMOGRAMME are', &
                     st, &
                     STATUS_NOT_IMPLEMENTED)
                 return
@@ -98,15 +100,17 @@ contains
             a = b + 2
         end do
         if (cmd%count('ENER_POT') > 0 .or. cmd%count('TRAV_EXT') > 0 .or. &
-            cmd%count('MINMAX') > 0) then
+            cmd%count('MINMAX') > 0 .or. cmd%count('VOLUMOGRAMME') > 0) then
             allocate (t)
             call table_init(t)
             if (cmd%count('ENER_POT') > 0) then
                 call ener_pot_rows(ctx, cmd, t, st)
             else if (cmd%count('TRAV_EXT') > 0) then
                 call trav_ext_rows(cmd, t, st)
-            else
+            else if (cmd%count('MINMAX') > 0) then
                 call minmax_rows(cmd, t, st)
+            else
+                call volumogramme_rows(cmd, t, st)
             end if
             if (st%failed()) return
             if (cmd%has('TITRE')) call cmd%get_texts('TITRE', t%title, st)
