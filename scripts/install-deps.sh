@@ -10,6 +10,7 @@ packages=(gfortran cmake ninja-build liblapack-dev libblas-dev libopenblas-dev l
           libmumps-dev libopenmpi-dev openmpi-bin python3-matplotlib
           libmedc-dev libmed-tools python3-h5py    # MED plug-in; mdump and h5py check MED files
           python3-mpmath                           # tests/extremes/slab_reference.py: exact
+          python3-scipy                            # tests/ec8/ec8_reference.py: Bessel, quadrature
           valgrind)                                 # the valgrind.* tests (memcheck)
 missing=()
 for p in "${packages[@]}"; do

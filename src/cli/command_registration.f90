@@ -5,6 +5,7 @@ module command_registration
     use run_context, only: run_context_t
     use session_commands, only: run_debut, run_poursuite, run_fin, run_debug, &
         run_defi_fichier, run_detruire
+    use defi_pres_ec8_command, only: run_defi_pres_ec8
     use function_commands, only: run_defi_constante, run_defi_fonction, run_formule, &
         run_defi_list_reel
     use test_resu_command, only: run_test_resu
@@ -68,6 +69,7 @@ contains
         call ctx%register('DEFI_FONCTION', run_defi_fonction, at_check=.true.)
         call ctx%register('FORMULE', run_formule, at_check=.true.)
         call ctx%register('DEFI_LIST_REEL', run_defi_list_reel, at_check=.true.)
+        call ctx%register('DEFI_PRES_EC8', run_defi_pres_ec8, at_check=.true.)
         call ctx%register('TEST_RESU', run_test_resu)
         call ctx%register('IMPR_RESU', run_impr_resu)
         call ctx%register('CREA_CHAMP', run_crea_champ)

@@ -395,6 +395,10 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     # Functions by points: CALC_FONCTION's operations, TEST_FONCTION, IMPR_FONCTION.
     seeds.append(Seed("functions", {"case.comm": os.path.join(tables, "functions.comm")},
                       [], comm_targets, 1.0))
+    # DEFI_PRES_EC8: the tank pressure's numbers and the points it is evaluated at.
+    seeds.append(Seed("defi_pres_ec8",
+                      {"case.comm": os.path.join(SOURCE, "tests", "ec8", "defi_pres_ec8.comm")},
+                      [], comm_targets, 0.5))
     # POST_RELEVE_T on formula fields of the annulus, and on SSNL130's reactions.
     seeds.append(Seed("post_releve", {"case.comm": os.path.join(tables, "post_releve.comm"),
                                       "case.mail": os.path.join(tables, "annulus.mail")},
