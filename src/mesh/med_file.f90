@@ -92,6 +92,359 @@ module med_file
         med_write_localization, med_write_entity_values, med_field_steps, &
         med_field_part_count, med_field_part_info, med_read_entity_values, med_read_profile
 
+    !> The operations, in submodules: med_file_mesh (meshes: counts, coordinates,
+    !> connectivity, names, families), med_file_fields (fields, profiles, Gauss point
+    !> localizations), med_file_requests (the request exchange, failures, buffers). The
+    !> session (open, close, versions) is here.
+    interface
+
+        !> Number of meshes in the file.
+        integer(i4) module function med_mesh_count(file, st) result(n)
+            type(med_file_t), intent(in) :: file
+            type(status_t), intent(out) :: st
+        end function med_mesh_count
+
+        !> Mesh number `it`: name, space dimension, structured (a grid), computation steps.
+        !>  st : out, STATUS_MESH_ERROR for a space dimension outside 1..3; read errors
+        module subroutine med_mesh_info(file, it, name, spacedim, structured, nstep, st)
+            type(med_file_t), intent(in) :: file
+            integer(i4), intent(in) :: it
+            character(len=:), allocatable, intent(out) :: name
+            integer(i4), intent(out) :: spacedim, nstep
+            logical, intent(out) :: structured
+            type(status_t), intent(out) :: st
+        end subroutine med_mesh_info
+
+        !> Computation step `it` of mesh `mesh`: its (numdt, numit).
+        module subroutine med_mesh_step(file, mesh, it, numdt, numit, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: it
+            integer(i4), intent(out) :: numdt, numit
+            type(status_t), intent(out) :: st
+        end subroutine med_mesh_step
+
+        !> A count (MED_COUNT_*) of mesh `mesh` at step (numdt, numit); 0 when absent.
+        !>  what_text : in, what is counted, for the message
+        !>  st        : out, read errors (a negative count from MED)
+        integer(i4) module function med_count(file, mesh, numdt, numit, what, geotype, what_text, st) &
+            result(n)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh, what_text
+            integer(i4), intent(in) :: numdt, numit, what, geotype
+            type(status_t), intent(out) :: st
+        end function med_count
+
+        !> MED type code of cell type number `it` of the mesh (1..MED_COUNT_CELL_TYPES count).
+        module subroutine med_cell_type(file, mesh, numdt, numit, it, geotype, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: numdt, numit, it
+            integer(i4), intent(out) :: geotype
+            type(status_t), intent(out) :: st
+        end subroutine med_cell_type
+
+        !> Node coordinates into coords(spacedim * n), interlaced.
+        module subroutine med_read_coordinates(file, mesh, numdt, numit, coords, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: numdt, numit
+            real(dp), intent(out) :: coords(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_read_coordinates
+
+        !> Connectivity of the cells of MED type `geotype` into conn(nodes per cell * n).
+        module subroutine med_read_connectivity(file, mesh, numdt, numit, geotype, conn, type_name, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh, type_name
+            integer(i4), intent(in) :: numdt, numit, geotype
+            integer(i4), intent(out) :: conn(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_read_connectivity
+
+        !> The n names of the nodes (MED_NODES) or of the cells of type `geotype` (MED_CELLS),
+        !> trailing blanks removed.
+        module subroutine med_read_names(file, mesh, numdt, numit, entity, geotype, n, names, &
+                                  what_text, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh, what_text
+            integer(i4), intent(in) :: numdt, numit, entity, geotype, n
+            character(len=MED_SNAME_LEN), intent(out) :: names(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_read_names
+
+        !> Family numbers of the nodes (MED_NODES) or of the cells of type `geotype`.
+        module subroutine med_read_families(file, mesh, numdt, numit, entity, geotype, numbers, &
+                                     what_text, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh, what_text
+            integer(i4), intent(in) :: numdt, numit, entity, geotype
+            integer(i4), intent(out) :: numbers(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_read_families
+
+        !> Number of families of mesh `mesh`.
+        integer(i4) module function med_family_count(file, mesh, st) result(n)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            type(status_t), intent(out) :: st
+        end function med_family_count
+
+        !> Number of groups of family `it` (1-based iterator).
+        integer(i4) module function med_family_group_count(file, mesh, it, st) result(n)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: it
+            type(status_t), intent(out) :: st
+        end function med_family_group_count
+
+        !> Family `it`: name, number, and its groups (size(groups) = its group count, from
+        !> med_family_group_count), trailing blanks removed.
+        module subroutine med_family_info(file, mesh, it, name, number, groups, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: it
+            character(len=:), allocatable, intent(out) :: name
+            integer(i4), intent(out) :: number
+            character(len=MED_LNAME_LEN), intent(out) :: groups(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_family_info
+
+        !> Creates unstructured mesh `mesh` of space dimension 2 or 3.
+        module subroutine med_create_mesh(file, mesh, spacedim, description, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh, description
+            integer(i4), intent(in) :: spacedim
+            type(status_t), intent(out) :: st
+        end subroutine med_create_mesh
+
+        !> Writes the node coordinates coords(spacedim, n).
+        module subroutine med_write_coordinates(file, mesh, coords, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            real(dp), intent(in) :: coords(:, :)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_coordinates
+
+        !> Writes the cells of MED type `geotype`: conn(nodes per cell, n).
+        module subroutine med_write_connectivity(file, mesh, geotype, conn, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: geotype
+            integer(i4), intent(in) :: conn(:, :)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_connectivity
+
+        !> Writes entity names (each at most 16 characters).
+        module subroutine med_write_names(file, mesh, entity, geotype, names, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: entity, geotype
+            character(len=MED_SNAME_LEN), intent(in) :: names(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_names
+
+        !> Writes family numbers of the nodes (MED_NODES) or the cells of type `geotype`.
+        module subroutine med_write_families(file, mesh, entity, geotype, numbers, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh
+            integer(i4), intent(in) :: entity, geotype
+            integer(i4), intent(in) :: numbers(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_families
+
+        !> Creates family `name` (number > 0 nodes, < 0 cells, 0 none) holding `groups`.
+        module subroutine med_create_family(file, mesh, name, number, groups, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: mesh, name
+            integer(i4), intent(in) :: number
+            character(len=MED_LNAME_LEN), intent(in) :: groups(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_create_family
+
+        !> Number of fields in the file.
+        integer(i4) module function med_field_count(file, st) result(n)
+            type(med_file_t), intent(in) :: file
+            type(status_t), intent(out) :: st
+        end function med_field_count
+
+        !> Field `it`: name, mesh and component names (at most `capacity` components).
+        !>  components : out, allocated to the field's component count
+        module subroutine med_field_info(file, it, name, mesh, components, st)
+            type(med_file_t), intent(in) :: file
+            integer(i4), intent(in) :: it
+            character(len=:), allocatable, intent(out) :: name, mesh
+            character(len=MED_SNAME_LEN), allocatable, intent(out) :: components(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_field_info
+
+        !> Creates float64 field `field` on mesh `mesh` with the given components (no units).
+        module subroutine med_create_field(file, field, mesh, components, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field, mesh
+            character(len=MED_SNAME_LEN), intent(in) :: components(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_create_field
+
+        !> Number of profiles in the file.
+        integer(i4) module function med_profile_count(file, st) result(n)
+            type(med_file_t), intent(in) :: file
+            type(status_t), intent(out) :: st
+        end function med_profile_count
+
+        !> Writes profile `name`: the node numbers a field is given on.
+        module subroutine med_write_profile(file, name, numbers, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: name
+            integer(i4), intent(in) :: numbers(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_profile
+
+        !> Writes node field values(components, n) at step (numdt, numit), time dt, on the nodes
+        !> of profile `profile` ('' = every node of the mesh).
+        module subroutine med_write_field_values(file, field, numdt, numit, dt, values, profile, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field, profile
+            integer(i4), intent(in) :: numdt, numit
+            real(dp), intent(in) :: dt
+            real(dp), intent(in) :: values(:, :)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_field_values
+
+        !> The names of the Gauss-point localisations in the file.
+        module subroutine med_localization_names(file, names, st)
+            type(med_file_t), intent(in) :: file
+            type(string_t), allocatable, intent(out) :: names(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_localization_names
+
+        !> Writes Gauss-point localisation `name` on reference cells of MED type `geotype`:
+        !> refcoo(dim, nodes) the reference nodes, gscoo(dim, points) the points, their weights.
+        module subroutine med_write_localization(file, name, geotype, refcoo, gscoo, weights, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: name
+            integer(i4), intent(in) :: geotype
+            real(dp), intent(in) :: refcoo(:, :), gscoo(:, :), weights(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_localization
+
+        !> Writes field values on cells of MED type `geotype`: entity MED_ENTITY_CELL (points of
+        !> localisation `localization`, '' one per cell) or MED_ENTITY_NODE_ELEMENT (the cells'
+        !> nodes); values(components x points, n_cells); profile '' = every cell of the type.
+        module subroutine med_write_entity_values(file, field, numdt, numit, dt, entity, geotype, values, &
+                                           profile, localization, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field, profile, localization
+            integer(i4), intent(in) :: numdt, numit, entity, geotype
+            real(dp), intent(in) :: dt
+            real(dp), intent(in) :: values(:, :)
+            type(status_t), intent(out) :: st
+        end subroutine med_write_entity_values
+
+        !> The computation steps of field `field`: numbers and times.
+        module subroutine med_field_steps(file, field, numdt, numit, dt, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field
+            integer(i4), allocatable, intent(out) :: numdt(:), numit(:)
+            real(dp), allocatable, intent(out) :: dt(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_field_steps
+
+        !> How many (profile, localisation) parts field `field` has at a step on an entity
+        !> (MED_ENTITY_*) and MED cell type (0 for nodes).
+        integer(i4) module function med_field_part_count(file, field, numdt, numit, entity, geotype, st) &
+            result(n)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field
+            integer(i4), intent(in) :: numdt, numit, entity, geotype
+            type(status_t), intent(out) :: st
+        end function med_field_part_count
+
+        !> Part `it` of field `field` at a step on an entity and type: its profile ('' none) and
+        !> localisation names, points per entity and number of entities.
+        module subroutine med_field_part_info(file, field, numdt, numit, entity, geotype, it, profile, &
+                                       localization, n_points, n_entities, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field
+            integer(i4), intent(in) :: numdt, numit, entity, geotype, it
+            character(len=:), allocatable, intent(out) :: profile, localization
+            integer(i4), intent(out) :: n_points, n_entities
+            type(status_t), intent(out) :: st
+        end subroutine med_field_part_info
+
+        !> Reads the values of part `profile` of field `field` at a step on an entity and type
+        !> into values (entities x points x components, interlaced: the caller sizes it from
+        !> med_field_part_info).
+        module subroutine med_read_entity_values(file, field, numdt, numit, entity, geotype, profile, &
+                                          values, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: field, profile
+            integer(i4), intent(in) :: numdt, numit, entity, geotype
+            real(dp), intent(out) :: values(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_read_entity_values
+
+        !> Reads profile `name`: the entity numbers (at most `capacity`).
+        module subroutine med_read_profile(file, name, capacity, numbers, st)
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: name
+            integer(i4), intent(in) :: capacity
+            integer(i4), allocatable, intent(out) :: numbers(:)
+            type(status_t), intent(out) :: st
+        end subroutine med_read_profile
+
+        ! The exchange of one request and its reply with the server, and its failures
+        ! (med_file_requests).
+
+        !> Sends a request to the file's server and receives its reply; returns the result code
+        !> and leaves the reply at its outputs.
+        !>  verb, object : in, what is asked (messages: "cannot read the nodes of mesh M")
+        !>  st    : out, the server died (the message says how, naming the file), or the result
+        !>          code is < 0 (fail's message) unless check = .false.
+        !>  writing : in, optional, the file is being written (default: as its open mode)
+        integer(c_int) module function exchange(file, q, r, verb, object, st, check, writing) result(rc)
+            type(med_file_t), intent(in) :: file
+            type(message_t), intent(in) :: q
+            type(message_t), intent(inout) :: r
+            character(len=*), intent(in) :: verb, object
+            type(status_t), intent(out) :: st
+            logical, intent(in), optional :: check, writing
+        end function exchange
+
+        module subroutine server_died(st, file, verb, object)
+            type(status_t), intent(inout) :: st
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: verb, object
+        end subroutine server_died
+
+        module subroutine fail(st, file, verb, object, rc, err, writing)
+            type(status_t), intent(inout) :: st
+            type(med_file_t), intent(in) :: file
+            character(len=*), intent(in) :: verb, object
+            integer(c_int), intent(in) :: rc
+            integer, intent(in) :: err
+            logical, intent(in), optional :: writing
+        end subroutine fail
+
+        ! Conversions shared by the submodules (med_file_requests).
+
+        module subroutine quiet_signaling_nans(values)
+            real(dp), intent(inout) :: values(:)
+        end subroutine quiet_signaling_nans
+
+        module function fixed_chars(names, width) result(buffer)
+            character(len=*), intent(in) :: names(:)
+            integer, intent(in) :: width
+            character(kind=c_char), allocatable :: buffer(:)
+        end function fixed_chars
+
+        module function buffer_text(buffer, start, length) result(text)
+            character(kind=c_char), intent(in) :: buffer(:)
+            integer, intent(in) :: start, length
+            character(len=:), allocatable :: text
+        end function buffer_text
+    end interface
+
 contains
 
     logical function med_file_is_open(self)
@@ -289,19 +642,6 @@ contains
     ! file may hold any bit pattern, and the mere test of a signaling NaN (ieee_is_finite,
     ! a comparison) raises IEEE invalid, which the checked build traps (SIGFPE; the fuzzer
     ! found it in a damaged MED 2.3.6 mesh). The readers then refuse it as not finite.
-    subroutine quiet_signaling_nans(values)
-        real(dp), intent(inout) :: values(:)
-        integer(i8), parameter :: EXPONENT = int(z'7FF0000000000000', i8), &
-            MANTISSA = int(z'000FFFFFFFFFFFFF', i8), QUIET = int(z'0008000000000000', i8)
-        integer(i8) :: bits
-        integer :: k
-        do k = 1, size(values)
-            bits = transfer(values(k), bits)
-            if (iand(bits, EXPONENT) == EXPONENT .and. iand(bits, MANTISSA) /= 0 .and. &
-                iand(bits, QUIET) == 0) values(k) = transfer(ior(bits, QUIET), values(k))
-        end do
-    end subroutine quiet_signaling_nans
-
     ! "2.3.6", or "an unknown version" when it could not be read.
     function version_text(major, minor, release, rc) result(text)
         integer(c_int), intent(in) :: major, minor, release, rc
@@ -339,858 +679,20 @@ contains
         if (present(st)) st = closing
     end subroutine med_close
 
-    !> Sends a request to the file's server and receives its reply; returns the result code
-    !> and leaves the reply at its outputs.
-    !>  verb, object : in, what is asked (messages: "cannot read the nodes of mesh M")
-    !>  st    : out, the server died (the message says how, naming the file), or the result
-    !>          code is < 0 (fail's message) unless check = .false.
-    !>  writing : in, optional, the file is being written (default: as its open mode)
-    integer(c_int) function exchange(file, q, r, verb, object, st, check, writing) result(rc)
-        type(med_file_t), intent(in) :: file
-        type(message_t), intent(in) :: q
-        type(message_t), intent(inout) :: r
-        character(len=*), intent(in) :: verb, object
-        type(status_t), intent(out) :: st
-        logical, intent(in), optional :: check, writing
-        integer :: err
-        logical :: ok, checking
-        checking = .true.
-        if (present(check)) checking = check
-        rc = -1
-        if (.not. associated(file%link)) then
-            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ' is not open')
-            return
-        end if
-        if (file%link%lost) then
-            call server_died(st, file, verb, object)
-            return
-        end if
-        call send_message(file%link%server%fd, q, ok)
-        if (ok) call receive_message(file%link%server%fd, r, ok)
-        if (.not. ok) then
-            call reap_child(file%link%server)
-            file%link%lost = .true.
-            file%link%lost_how = child_end_text(file%link%server)
-            call server_died(st, file, verb, object)
-            return
-        end if
-        rc = r%get_int()
-        err = r%get_int()
-        if (r%bad) then
-            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': the MED ' // &
-                'server gave a short reply (a bug: please report it)')
-            rc = -1
-            return
-        end if
-        if (rc < 0 .and. checking) call fail(st, file, verb, object, rc, err, writing)
-    end function exchange
-
     ! The file's server died (killed by a signal, or exited) while asked to VERB OBJECT:
     ! "MED file P is damaged: the MED library died reading family 1 of mesh M (killed by
     ! signal 11 (SIGSEGV))", or for a file being written "cannot write P: the MED library
     ! died writing ...".
-    subroutine server_died(st, file, verb, object)
-        type(status_t), intent(inout) :: st
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: verb, object
-        character(len=:), allocatable :: doing
-        select case (verb)
-        case ('read', 'count', 'open')
-            doing = verb // 'ing'
-        case ('write', 'create', 'close')
-            doing = verb(1:len(verb) - 1) // 'ing'
-        case default
-            doing = 'asked to ' // verb
-        end select
-        if (file%mode == MED_READ) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ' is damaged: ' &
-                // 'the MED library died ' // doing // ' ' // object // ' (' // &
-                file%link%lost_how // ')')
-        else
-            call set_error(st, STATUS_IO_ERROR, 'cannot write ' // file%path // ': the MED ' &
-                // 'library died ' // doing // ' ' // object // ' (' // file%link%lost_how &
-                // ')')
-        end if
-    end subroutine server_died
-
     ! A failed MED call on the file: "MED file PATH: cannot VERB OBJECT (MED error RC; ...)"
     ! (STATUS_MESH_ERROR: reading, the file's contents are at fault), or for a file being
     ! written "cannot write PATH: <the system's reason> (MED could not VERB OBJECT)" when
     ! the failure came from the disk (errno), else "cannot write PATH: MED could not VERB
     ! OBJECT (MED error RC)" (STATUS_IO_ERROR).
-    subroutine fail(st, file, verb, object, rc, err, writing)
-        type(status_t), intent(inout) :: st
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: verb, object
-        integer(c_int), intent(in) :: rc
-        integer, intent(in) :: err
-        logical, intent(in), optional :: writing
-        logical :: written
-        written = file%mode /= MED_READ
-        if (present(writing)) written = writing
-        if (written) then
-            select case (err)
-            case (EIO, EFBIG, ENOSPC, EROFS, EDQUOT)
-                call set_error(st, STATUS_IO_ERROR, 'cannot write ' // file%path // ': ' // &
-                    errno_text(err) // ' (MED could not ' // verb // ' ' // object // ')')
-            case default
-                call set_error(st, STATUS_IO_ERROR, 'cannot write ' // file%path // ': MED ' &
-                    // 'could not ' // verb // ' ' // object // ' (MED error ' // &
-                    to_text(int(rc, i4)) // ')')
-            end select
-        else if (rc == PLUGIN_BAD_SIZE) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': cannot ' // &
-                verb // ' ' // object // ' (it holds more than parasol expects)')
-        else
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': cannot ' // &
-                verb // ' ' // object // ' (MED error ' // to_text(int(rc, i4)) // &
-                '; the file is damaged, truncated or inconsistent)')
-        end if
-    end subroutine fail
-
-    !> Number of meshes in the file.
-    integer(i4) function med_mesh_count(file, st) result(n)
-        type(med_file_t), intent(in) :: file
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call q%put_int(OP_MESH_COUNT)
-        n = exchange(file, q, r, 'count', 'its meshes', st, writing=.false.)
-    end function med_mesh_count
-
-    !> Mesh number `it`: name, space dimension, structured (a grid), computation steps.
-    !>  st : out, STATUS_MESH_ERROR for a space dimension outside 1..3; read errors
-    subroutine med_mesh_info(file, it, name, spacedim, structured, nstep, st)
-        type(med_file_t), intent(in) :: file
-        integer(i4), intent(in) :: it
-        character(len=:), allocatable, intent(out) :: name
-        integer(i4), intent(out) :: spacedim, nstep
-        logical, intent(out) :: structured
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        character(kind=c_char), allocatable :: buffer(:)
-        integer(c_int) :: rc, meshdim
-        call q%put_int(OP_MESH_INFO)
-        call q%put_int(int(it))
-        rc = exchange(file, q, r, 'read', 'the description of mesh ' // to_text(it), st, &
-                      check=.false.)
-        call r%get_chars(buffer)
-        name = buffer_text(buffer, 1, MED_NAME_LEN)
-        spacedim = r%get_int()
-        meshdim = r%get_int()                      ! not used: parasol takes spacedim
-        structured = r%get_int() /= 0
-        nstep = r%get_int()
-        if (st%failed()) return
-        if (rc == PLUGIN_BAD_SIZE) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': mesh ' // &
-                to_text(it) // ' has ' // to_text(spacedim) // ' coordinate axes (a mesh ' // &
-                'has 1 to 3)')
-        else if (rc < 0) then
-            call fail(st, file, 'read', 'the description of mesh ' // to_text(it), rc, 0, &
-                      writing=.false.)
-        end if
-    end subroutine med_mesh_info
-
-    !> Computation step `it` of mesh `mesh`: its (numdt, numit).
-    subroutine med_mesh_step(file, mesh, it, numdt, numit, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: it
-        integer(i4), intent(out) :: numdt, numit
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_MESH_STEP)
-        call q%put_text(mesh)
-        call q%put_int(int(it))
-        rc = exchange(file, q, r, 'read', 'the computation steps of mesh ' // mesh, st, &
-                      writing=.false.)
-        numdt = r%get_int()
-        numit = r%get_int()
-    end subroutine med_mesh_step
-
-    !> A count (MED_COUNT_*) of mesh `mesh` at step (numdt, numit); 0 when absent.
-    !>  what_text : in, what is counted, for the message
-    !>  st        : out, read errors (a negative count from MED)
-    integer(i4) function med_count(file, mesh, numdt, numit, what, geotype, what_text, st) &
-        result(n)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh, what_text
-        integer(i4), intent(in) :: numdt, numit, what, geotype
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call step_request(q, OP_COUNT, mesh, numdt, numit)
-        call q%put_int(int(what))
-        call q%put_int(int(geotype))
-        n = exchange(file, q, r, 'count', 'the ' // what_text // ' of mesh ' // mesh, st, &
-                     writing=.false.)
-    end function med_count
-
-    !> MED type code of cell type number `it` of the mesh (1..MED_COUNT_CELL_TYPES count).
-    subroutine med_cell_type(file, mesh, numdt, numit, it, geotype, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: numdt, numit, it
-        integer(i4), intent(out) :: geotype
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call step_request(q, OP_CELL_TYPE, mesh, numdt, numit)
-        call q%put_int(int(it))
-        rc = exchange(file, q, r, 'read', 'the cell types of mesh ' // mesh, st, &
-                      writing=.false.)
-        geotype = r%get_int()
-    end subroutine med_cell_type
-
-    !> Node coordinates into coords(spacedim * n), interlaced.
-    subroutine med_read_coordinates(file, mesh, numdt, numit, coords, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: numdt, numit
-        real(dp), intent(out) :: coords(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        real(dp), allocatable :: values(:)
-        integer(c_int) :: rc
-        coords = 0.0_dp
-        call step_request(q, OP_READ_COORDINATES, mesh, numdt, numit)
-        call q%put_int(size(coords))
-        rc = exchange(file, q, r, 'read', 'the node coordinates of mesh ' // mesh, st, &
-                      writing=.false.)
-        if (st%failed()) return
-        call r%get_reals(values)
-        call quiet_signaling_nans(values)
-        call take_size(st, file, r, size(values), size(coords))
-        if (st%ok()) coords = values
-    end subroutine med_read_coordinates
-
-    !> Connectivity of the cells of MED type `geotype` into conn(nodes per cell * n).
-    subroutine med_read_connectivity(file, mesh, numdt, numit, geotype, conn, type_name, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh, type_name
-        integer(i4), intent(in) :: numdt, numit, geotype
-        integer(i4), intent(out) :: conn(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(i4), allocatable :: values(:)
-        integer(c_int) :: rc
-        conn = 0
-        call step_request(q, OP_READ_CONNECTIVITY, mesh, numdt, numit)
-        call q%put_int(int(geotype))
-        call q%put_int(size(conn))
-        rc = exchange(file, q, r, 'read', 'the ' // type_name // ' cells of mesh ' // mesh, st, &
-                      writing=.false.)
-        if (st%failed()) return
-        call r%get_ints(values)
-        call take_size(st, file, r, size(values), size(conn))
-        if (st%ok()) conn = values
-    end subroutine med_read_connectivity
-
     ! The reply carried the n values asked for (else an internal error: client and server
     ! disagree).
-    subroutine take_size(st, file, r, got, wanted)
-        type(status_t), intent(inout) :: st
-        type(med_file_t), intent(in) :: file
-        type(message_t), intent(in) :: r
-        integer, intent(in) :: got, wanted
-        if (r%bad .or. got /= wanted) call set_error(st, STATUS_INTERNAL, 'MED file ' // &
-            file%path // ': the MED server sent ' // to_text(int(got, i4)) // ' values for ' &
-            // to_text(int(wanted, i4)) // ' (a bug: please report it)')
-    end subroutine take_size
-
-    !> The n names of the nodes (MED_NODES) or of the cells of type `geotype` (MED_CELLS),
-    !> trailing blanks removed.
-    subroutine med_read_names(file, mesh, numdt, numit, entity, geotype, n, names, &
-                              what_text, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh, what_text
-        integer(i4), intent(in) :: numdt, numit, entity, geotype, n
-        character(len=MED_SNAME_LEN), intent(out) :: names(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        character(kind=c_char), allocatable :: buffer(:)
-        integer(c_int) :: rc
-        integer(i8) :: bytes
-        integer(i4) :: k, j
-        names = ' '
-        bytes = int(MED_SNAME_LEN, i8) * n + 1
-        if (bytes > huge(1_c_int)) then
-            call set_error(st, STATUS_MESH_ERROR, 'MED file ' // file%path // ': it claims ' &
-                // to_text(int(n, i8)) // ' ' // what_text // ' names, more than this ' // &
-                'machine can hold')
-            return
-        end if
-        call step_request(q, OP_READ_NAMES, mesh, numdt, numit)
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_int(int(bytes))
-        rc = exchange(file, q, r, 'read', 'the names of the ' // what_text // ' of mesh ' // &
-                      mesh, st, writing=.false.)
-        if (st%failed()) return
-        call r%get_chars(buffer)
-        call take_size(st, file, r, size(buffer), int(bytes))
-        if (st%failed()) return
-        do k = 1, min(n, size(names, kind=i4))   ! blank-padded fields of 16 characters
-            names(k) = transfer(buffer((k - 1) * MED_SNAME_LEN + 1:k * MED_SNAME_LEN), names(k))
-            j = index(names(k), c_null_char)      ! a writer that pads with NULs instead
-            if (j > 0) names(k)(j:) = ' '
-        end do
-    end subroutine med_read_names
-
-    !> Family numbers of the nodes (MED_NODES) or of the cells of type `geotype`.
-    subroutine med_read_families(file, mesh, numdt, numit, entity, geotype, numbers, &
-                                 what_text, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh, what_text
-        integer(i4), intent(in) :: numdt, numit, entity, geotype
-        integer(i4), intent(out) :: numbers(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(i4), allocatable :: values(:)
-        integer(c_int) :: rc
-        numbers = 0
-        call step_request(q, OP_READ_FAMILIES, mesh, numdt, numit)
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_int(size(numbers))
-        rc = exchange(file, q, r, 'read', 'the family numbers of the ' // what_text // &
-                      ' of mesh ' // mesh, st, writing=.false.)
-        if (st%failed()) return
-        call r%get_ints(values)
-        call take_size(st, file, r, size(values), size(numbers))
-        if (st%ok()) numbers = values
-    end subroutine med_read_families
-
-    !> Number of families of mesh `mesh`.
-    integer(i4) function med_family_count(file, mesh, st) result(n)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call q%put_int(OP_FAMILY_COUNT)
-        call q%put_text(mesh)
-        n = exchange(file, q, r, 'count', 'the families of mesh ' // mesh, st, writing=.false.)
-    end function med_family_count
-
-    !> Number of groups of family `it` (1-based iterator).
-    integer(i4) function med_family_group_count(file, mesh, it, st) result(n)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: it
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call q%put_int(OP_FAMILY_GROUP_COUNT)
-        call q%put_text(mesh)
-        call q%put_int(int(it))
-        n = exchange(file, q, r, 'read', 'family ' // to_text(it) // ' of mesh ' // mesh, st, &
-                     writing=.false.)
-    end function med_family_group_count
-
-    !> Family `it`: name, number, and its groups (size(groups) = its group count, from
-    !> med_family_group_count), trailing blanks removed.
-    subroutine med_family_info(file, mesh, it, name, number, groups, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: it
-        character(len=:), allocatable, intent(out) :: name
-        integer(i4), intent(out) :: number
-        character(len=MED_LNAME_LEN), intent(out) :: groups(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        character(kind=c_char), allocatable :: name_buffer(:), buffer(:)
-        integer(c_int) :: rc
-        integer(i4) :: k
-        groups = ' '
-        call q%put_int(OP_FAMILY_INFO)
-        call q%put_text(mesh)
-        call q%put_int(int(it))
-        call q%put_int(size(groups))
-        rc = exchange(file, q, r, 'read', 'family ' // to_text(it) // ' of mesh ' // mesh, st, &
-                      writing=.false.)
-        call r%get_chars(name_buffer)
-        name = buffer_text(name_buffer, 1, MED_NAME_LEN)
-        number = r%get_int()
-        if (st%failed()) return
-        call r%get_chars(buffer)
-        do k = 1, size(groups, kind=i4)
-            groups(k) = buffer_text(buffer, (k - 1) * MED_LNAME_LEN + 1, MED_LNAME_LEN)
-        end do
-    end subroutine med_family_info
-
-    !> Creates unstructured mesh `mesh` of space dimension 2 or 3.
-    subroutine med_create_mesh(file, mesh, spacedim, description, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh, description
-        integer(i4), intent(in) :: spacedim
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_CREATE_MESH)
-        call q%put_text(mesh)
-        call q%put_int(int(spacedim))
-        call q%put_text(description)
-        rc = exchange(file, q, r, 'create', 'mesh ' // mesh, st, writing=.true.)
-    end subroutine med_create_mesh
-
-    !> Writes the node coordinates coords(spacedim, n).
-    subroutine med_write_coordinates(file, mesh, coords, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        real(dp), intent(in) :: coords(:, :)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_COORDINATES)
-        call q%put_text(mesh)
-        call q%put_int(size(coords, 2))
-        call q%put_reals(reshape(coords, [size(coords)]))
-        rc = exchange(file, q, r, 'write', 'the nodes of mesh ' // mesh, st, writing=.true.)
-    end subroutine med_write_coordinates
-
-    !> Writes the cells of MED type `geotype`: conn(nodes per cell, n).
-    subroutine med_write_connectivity(file, mesh, geotype, conn, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: geotype
-        integer(i4), intent(in) :: conn(:, :)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_CONNECTIVITY)
-        call q%put_text(mesh)
-        call q%put_int(int(geotype))
-        call q%put_int(size(conn, 2))
-        call q%put_ints(reshape(conn, [size(conn)]))
-        rc = exchange(file, q, r, 'write', 'the cells of mesh ' // mesh, st, writing=.true.)
-    end subroutine med_write_connectivity
-
-    !> Writes entity names (each at most 16 characters).
-    subroutine med_write_names(file, mesh, entity, geotype, names, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: entity, geotype
-        character(len=MED_SNAME_LEN), intent(in) :: names(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_NAMES)
-        call q%put_text(mesh)
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_int(size(names))
-        call q%put_chars(fixed_chars(names, MED_SNAME_LEN))
-        rc = exchange(file, q, r, 'write', 'the entity names of mesh ' // mesh, st, &
-                      writing=.true.)
-    end subroutine med_write_names
-
-    !> Writes family numbers of the nodes (MED_NODES) or the cells of type `geotype`.
-    subroutine med_write_families(file, mesh, entity, geotype, numbers, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: entity, geotype
-        integer(i4), intent(in) :: numbers(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_FAMILIES)
-        call q%put_text(mesh)
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_ints(numbers)
-        rc = exchange(file, q, r, 'write', 'the family numbers of mesh ' // mesh, st, &
-                      writing=.true.)
-    end subroutine med_write_families
-
-    !> Creates family `name` (number > 0 nodes, < 0 cells, 0 none) holding `groups`.
-    subroutine med_create_family(file, mesh, name, number, groups, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: mesh, name
-        integer(i4), intent(in) :: number
-        character(len=MED_LNAME_LEN), intent(in) :: groups(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_CREATE_FAMILY)
-        call q%put_text(mesh)
-        call q%put_text(name)
-        call q%put_int(int(number))
-        call q%put_int(size(groups))
-        call q%put_chars(fixed_chars(groups, MED_LNAME_LEN))
-        rc = exchange(file, q, r, 'write', 'family ' // name // ' of mesh ' // mesh, st, &
-                      writing=.true.)
-    end subroutine med_create_family
-
-    !> Number of fields in the file.
-    integer(i4) function med_field_count(file, st) result(n)
-        type(med_file_t), intent(in) :: file
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call q%put_int(OP_FIELD_COUNT)
-        n = exchange(file, q, r, 'count', 'its fields', st, writing=.false.)
-    end function med_field_count
-
-    !> Field `it`: name, mesh and component names (at most `capacity` components).
-    !>  components : out, allocated to the field's component count
-    subroutine med_field_info(file, it, name, mesh, components, st)
-        type(med_file_t), intent(in) :: file
-        integer(i4), intent(in) :: it
-        character(len=:), allocatable, intent(out) :: name, mesh
-        character(len=MED_SNAME_LEN), allocatable, intent(out) :: components(:)
-        type(status_t), intent(out) :: st
-        integer, parameter :: CAPACITY = 64
-        type(message_t) :: q, r
-        character(kind=c_char), allocatable :: name_buffer(:), mesh_buffer(:), buffer(:)
-        integer(c_int) :: rc, ncomponent
-        integer(i4) :: k
-        call q%put_int(OP_FIELD_INFO)
-        call q%put_int(int(it))
-        call q%put_int(CAPACITY)
-        rc = exchange(file, q, r, 'read', 'the description of field ' // to_text(it), st, &
-                      writing=.false.)
-        call r%get_chars(name_buffer)
-        call r%get_chars(mesh_buffer)
-        ncomponent = r%get_int()
-        call r%get_chars(buffer)
-        name = buffer_text(name_buffer, 1, MED_NAME_LEN)
-        mesh = buffer_text(mesh_buffer, 1, MED_NAME_LEN)
-        allocate (components(0))
-        if (st%failed()) return
-        deallocate (components)
-        allocate (components(max(0, min(ncomponent, CAPACITY))))
-        do k = 1, size(components, kind=i4)
-            components(k) = buffer_text(buffer, (k - 1) * MED_SNAME_LEN + 1, MED_SNAME_LEN)
-        end do
-    end subroutine med_field_info
-
-    !> Creates float64 field `field` on mesh `mesh` with the given components (no units).
-    subroutine med_create_field(file, field, mesh, components, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field, mesh
-        character(len=MED_SNAME_LEN), intent(in) :: components(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        character(len=MED_SNAME_LEN) :: units(size(components))
-        integer(c_int) :: rc
-        units = ' '
-        call q%put_int(OP_CREATE_FIELD)
-        call q%put_text(field)
-        call q%put_text(mesh)
-        call q%put_int(size(components))
-        call q%put_chars(fixed_chars(components, MED_SNAME_LEN))
-        call q%put_chars(fixed_chars(units, MED_SNAME_LEN))
-        rc = exchange(file, q, r, 'create', 'field ' // field, st, writing=.true.)
-    end subroutine med_create_field
-
-    !> Number of profiles in the file.
-    integer(i4) function med_profile_count(file, st) result(n)
-        type(med_file_t), intent(in) :: file
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call q%put_int(OP_PROFILE_COUNT)
-        n = exchange(file, q, r, 'count', 'its profiles', st, writing=.false.)
-    end function med_profile_count
-
-    !> Writes profile `name`: the node numbers a field is given on.
-    subroutine med_write_profile(file, name, numbers, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: name
-        integer(i4), intent(in) :: numbers(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_PROFILE)
-        call q%put_text(name)
-        call q%put_ints(numbers)
-        rc = exchange(file, q, r, 'write', 'profile ' // name, st, writing=.true.)
-    end subroutine med_write_profile
-
-    !> Writes node field values(components, n) at step (numdt, numit), time dt, on the nodes
-    !> of profile `profile` ('' = every node of the mesh).
-    subroutine med_write_field_values(file, field, numdt, numit, dt, values, profile, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field, profile
-        integer(i4), intent(in) :: numdt, numit
-        real(dp), intent(in) :: dt
-        real(dp), intent(in) :: values(:, :)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_FIELD_VALUES)
-        call q%put_text(field)
-        call q%put_int(int(numdt))
-        call q%put_int(int(numit))
-        call q%put_real(dt)
-        call q%put_int(size(values, 2))
-        call q%put_text(profile)
-        call q%put_reals(reshape(values, [size(values)]))
-        rc = exchange(file, q, r, 'write', 'field ' // field // ' at step ' // &
-                      to_text(numdt), st, writing=.true.)
-    end subroutine med_write_field_values
-
-    !> The names of the Gauss-point localisations in the file.
-    subroutine med_localization_names(file, names, st)
-        type(med_file_t), intent(in) :: file
-        type(string_t), allocatable, intent(out) :: names(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        character(kind=c_char), allocatable :: buffer(:)
-        integer(c_int) :: n, rc
-        integer :: k
-        allocate (names(0))
-        call q%put_int(OP_LOCALIZATION_COUNT)
-        n = exchange(file, q, r, 'count', 'its localisations', st, writing=.false.)
-        if (st%failed()) return
-        deallocate (names)
-        allocate (names(max(n, 0_c_int)))
-        do k = 1, size(names)
-            call q%clear()
-            call q%put_int(OP_LOCALIZATION_NAME)
-            call q%put_int(k)
-            rc = exchange(file, q, r, 'read', 'localisation ' // to_text(int(k, i4)), st, &
-                          writing=.false.)
-            if (st%failed()) return
-            call r%get_chars(buffer)
-            names(k)%s = buffer_text(buffer, 1, MED_NAME_LEN)
-        end do
-    end subroutine med_localization_names
-
-    !> Writes Gauss-point localisation `name` on reference cells of MED type `geotype`:
-    !> refcoo(dim, nodes) the reference nodes, gscoo(dim, points) the points, their weights.
-    subroutine med_write_localization(file, name, geotype, refcoo, gscoo, weights, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: name
-        integer(i4), intent(in) :: geotype
-        real(dp), intent(in) :: refcoo(:, :), gscoo(:, :), weights(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        if (size(gscoo, 1) /= size(refcoo, 1) .or. size(gscoo, 2) /= size(weights)) then
-            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': localisation ' &
-                // name // ': inconsistent sizes')
-            return
-        end if
-        call q%put_int(OP_WRITE_LOCALIZATION)
-        call q%put_text(name)
-        call q%put_int(int(geotype))
-        call q%put_int(size(refcoo, 1))
-        call q%put_reals(reshape(refcoo, [size(refcoo)]))
-        call q%put_int(size(weights))
-        call q%put_reals(reshape(gscoo, [size(gscoo)]))
-        call q%put_reals(weights)
-        rc = exchange(file, q, r, 'write', 'localisation ' // name, st, writing=.true.)
-    end subroutine med_write_localization
-
-    !> Writes field values on cells of MED type `geotype`: entity MED_ENTITY_CELL (points of
-    !> localisation `localization`, '' one per cell) or MED_ENTITY_NODE_ELEMENT (the cells'
-    !> nodes); values(components x points, n_cells); profile '' = every cell of the type.
-    subroutine med_write_entity_values(file, field, numdt, numit, dt, entity, geotype, values, &
-                                       profile, localization, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field, profile, localization
-        integer(i4), intent(in) :: numdt, numit, entity, geotype
-        real(dp), intent(in) :: dt
-        real(dp), intent(in) :: values(:, :)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: rc
-        call q%put_int(OP_WRITE_ENTITY_VALUES)
-        call q%put_text(field)
-        call q%put_int(int(numdt))
-        call q%put_int(int(numit))
-        call q%put_real(dt)
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_int(size(values, 2))
-        call q%put_text(profile)
-        call q%put_text(localization)
-        call q%put_reals(reshape(values, [size(values)]))
-        rc = exchange(file, q, r, 'write', 'field ' // field // ' at step ' // &
-                      to_text(numdt) // ' on cells of MED type ' // to_text(geotype), st, &
-                      writing=.true.)
-    end subroutine med_write_entity_values
-
-    !> The computation steps of field `field`: numbers and times.
-    subroutine med_field_steps(file, field, numdt, numit, dt, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field
-        integer(i4), allocatable, intent(out) :: numdt(:), numit(:)
-        real(dp), allocatable, intent(out) :: dt(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: n, rc
-        integer :: k
-        allocate (numdt(0), numit(0), dt(0))
-        call q%put_int(OP_FIELD_STEP_COUNT)
-        call q%put_text(field)
-        n = exchange(file, q, r, 'read', 'the steps of field ' // field, st, writing=.false.)
-        if (st%failed()) return
-        deallocate (numdt, numit, dt)
-        allocate (numdt(max(n, 0_c_int)), numit(max(n, 0_c_int)), dt(max(n, 0_c_int)))
-        do k = 1, size(numdt)
-            call q%clear()
-            call q%put_int(OP_FIELD_STEP_INFO)
-            call q%put_text(field)
-            call q%put_int(k)
-            rc = exchange(file, q, r, 'read', 'step ' // to_text(int(k, i4)) // &
-                          ' of field ' // field, st, writing=.false.)
-            if (st%failed()) return
-            numdt(k) = r%get_int()
-            numit(k) = r%get_int()
-            dt(k) = r%get_real()
-        end do
-    end subroutine med_field_steps
-
-    !> How many (profile, localisation) parts field `field` has at a step on an entity
-    !> (MED_ENTITY_*) and MED cell type (0 for nodes).
-    integer(i4) function med_field_part_count(file, field, numdt, numit, entity, geotype, st) &
-        result(n)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field
-        integer(i4), intent(in) :: numdt, numit, entity, geotype
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        call q%put_int(OP_FIELD_PART_COUNT)
-        call q%put_text(field)
-        call q%put_int(int(numdt))
-        call q%put_int(int(numit))
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        n = exchange(file, q, r, 'count', 'the parts of field ' // field, st, writing=.false.)
-    end function med_field_part_count
-
-    !> Part `it` of field `field` at a step on an entity and type: its profile ('' none) and
-    !> localisation names, points per entity and number of entities.
-    subroutine med_field_part_info(file, field, numdt, numit, entity, geotype, it, profile, &
-                                   localization, n_points, n_entities, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field
-        integer(i4), intent(in) :: numdt, numit, entity, geotype, it
-        character(len=:), allocatable, intent(out) :: profile, localization
-        integer(i4), intent(out) :: n_points, n_entities
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        character(kind=c_char), allocatable :: pbuf(:), lbuf(:)
-        integer(c_int) :: n
-        profile = ''
-        localization = ''
-        n_points = 0
-        call q%put_int(OP_FIELD_PART_INFO)
-        call q%put_text(field)
-        call q%put_int(int(numdt))
-        call q%put_int(int(numit))
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_int(int(it))
-        n = exchange(file, q, r, 'read', 'part ' // to_text(it) // ' of field ' // field, st, &
-                     writing=.false.)
-        n_entities = n
-        if (st%failed()) return
-        call r%get_chars(pbuf)
-        call r%get_chars(lbuf)
-        n_points = r%get_int()
-        profile = buffer_text(pbuf, 1, MED_NAME_LEN)
-        localization = buffer_text(lbuf, 1, MED_NAME_LEN)
-        if (profile == 'MED_NO_PROFILE_INTERNAL') profile = ''
-    end subroutine med_field_part_info
-
-    !> Reads the values of part `profile` of field `field` at a step on an entity and type
-    !> into values (entities x points x components, interlaced: the caller sizes it from
-    !> med_field_part_info).
-    subroutine med_read_entity_values(file, field, numdt, numit, entity, geotype, profile, &
-                                      values, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: field, profile
-        integer(i4), intent(in) :: numdt, numit, entity, geotype
-        real(dp), intent(out) :: values(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        real(dp), allocatable :: got(:)
-        integer(c_int) :: rc
-        values = 0.0_dp
-        call q%put_int(OP_READ_ENTITY_VALUES)
-        call q%put_text(field)
-        call q%put_int(int(numdt))
-        call q%put_int(int(numit))
-        call q%put_int(int(entity))
-        call q%put_int(int(geotype))
-        call q%put_text(profile)
-        call q%put_int(size(values))
-        rc = exchange(file, q, r, 'read', 'the values of field ' // field, st, writing=.false.)
-        if (st%failed()) return
-        call r%get_reals(got)
-        call quiet_signaling_nans(got)
-        if (size(got) /= size(values)) then
-            call set_error(st, STATUS_INTERNAL, 'MED file ' // file%path // ': field ' // &
-                field // ': ' // to_text(size(got)) // ' values read, ' // &
-                to_text(size(values)) // ' expected')
-            return
-        end if
-        values = got
-    end subroutine med_read_entity_values
-
-    !> Reads profile `name`: the entity numbers (at most `capacity`).
-    subroutine med_read_profile(file, name, capacity, numbers, st)
-        type(med_file_t), intent(in) :: file
-        character(len=*), intent(in) :: name
-        integer(i4), intent(in) :: capacity
-        integer(i4), allocatable, intent(out) :: numbers(:)
-        type(status_t), intent(out) :: st
-        type(message_t) :: q, r
-        integer(c_int) :: n
-        allocate (numbers(0))
-        call q%put_int(OP_READ_PROFILE)
-        call q%put_text(name)
-        call q%put_int(int(capacity))
-        n = exchange(file, q, r, 'read', 'profile ' // name, st, writing=.false.)
-        if (st%failed()) return
-        deallocate (numbers)
-        call r%get_ints(numbers)
-    end subroutine med_read_profile
-
     ! The head of a request on a mesh at a computation step: the operation, the mesh's name,
     ! numdt and numit.
-    subroutine step_request(q, op, mesh, numdt, numit)
-        type(message_t), intent(inout) :: q
-        integer, intent(in) :: op
-        character(len=*), intent(in) :: mesh
-        integer(i4), intent(in) :: numdt, numit
-        call q%put_int(op)
-        call q%put_text(mesh)
-        call q%put_int(int(numdt))
-        call q%put_int(int(numit))
-    end subroutine step_request
-
     ! Fixed-width names as one C buffer (each `width` characters, blank-padded), NUL-ended.
-    function fixed_chars(names, width) result(buffer)
-        character(len=*), intent(in) :: names(:)
-        integer, intent(in) :: width
-        character(kind=c_char), allocatable :: buffer(:)
-        integer :: k, j
-        allocate (buffer(width * size(names) + 1))
-        do k = 1, size(names)
-            do j = 1, width
-                buffer((k - 1) * width + j) = names(k)(j:j)
-            end do
-        end do
-        buffer(size(buffer)) = c_null_char
-    end function fixed_chars
-
     ! Characters start .. start+length-1 of a C buffer, up to the first NUL, trailing blanks
     ! removed.
-    function buffer_text(buffer, start, length) result(text)
-        character(kind=c_char), intent(in) :: buffer(:)
-        integer, intent(in) :: start, length
-        character(len=:), allocatable :: text
-        integer :: k, n
-        n = 0
-        do k = start, min(start + length - 1, size(buffer))
-            if (buffer(k) == c_null_char) exit
-            n = n + 1
-        end do
-        text = repeat(' ', n)
-        do k = 1, n
-            text(k:k) = buffer(start + k - 1)
-        end do
-        text = trim(text)
-    end function buffer_text
-
 end module med_file

@@ -58,6 +58,7 @@ module mesh_types
         mesh_add_cell_group, mesh_finish, mesh_release, mesh_remove_node_groups, &
         mesh_remove_cell_groups
     public :: find_node, find_cell, find_node_group, find_cell_group, node_name, cell_name, &
+        first_rank_name_conflict, &
         node_group_name, cell_group_name, cells_of_group, nodes_of_group, nodes_of_cells, &
         cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message, &
         cell_label
@@ -415,10 +416,62 @@ contains
         integer(i4), intent(in) :: kind
         character(len=*), intent(in) :: name
         type(status_t), intent(inout) :: st
-        index = name_find(names, name)
+        index = 0
+        if (kind == ENTITY_NODE) index = entity_by_number(name, mesh%n_nodes)
+        if (kind == ENTITY_CELL) index = entity_by_number(name, mesh%n_cells)
+        if (index == 0) index = name_find(names, name)
         if (index == 0) call set_error(st, STATUS_MESH_ERROR, &
             not_found_message(mesh, names, kind, name))
     end function find_entity
+
+    !> A node or cell named by its number, as code_aster 17 reads NOEUD= / MAILLE= (its
+    !> char8_to_int: 'N19', 'M19' or '19' is entity 19, its meshes keeping no names, a .mail
+    !> file's dropped by lrmast): the number when `name` is N or M and digits, or digits
+    !> alone, within 1 .. n; 0 otherwise (the name is then looked up among the file's).
+    pure integer(i4) function entity_by_number(name, n) result(index)
+        character(len=*), intent(in) :: name
+        integer(i4), intent(in) :: n
+        integer :: first, k, value
+        index = 0
+        first = 1
+        if (len(name) >= 1) then
+            if (name(1:1) == 'N' .or. name(1:1) == 'M') first = 2
+        end if
+        if (len(name) < first .or. len(name) - first + 1 > 8) return
+        value = 0
+        do k = first, len(name)
+            if (name(k:k) < '0' .or. name(k:k) > '9') return
+            value = 10 * value + (ichar(name(k:k)) - ichar('0'))
+        end do
+        if (value >= 1 .and. value <= n) index = int(value, i4)
+    end function entity_by_number
+
+    !> The first node (which = 'N') or cell ('M') whose file name reads as another entity's
+    !> number (entity_by_number: the file names node 4 'N5', which a deck's NOEUD='N5'
+    !> means node 5 by): its rank and name; rank 0 when there is none.
+    subroutine first_rank_name_conflict(mesh, which, rank, name)
+        type(mesh_t), intent(in) :: mesh
+        character, intent(in) :: which
+        integer(i4), intent(out) :: rank
+        character(len=:), allocatable, intent(out) :: name
+        integer(i4) :: j, n, k
+        rank = 0
+        n = mesh%n_nodes
+        if (which == 'M') n = mesh%n_cells
+        do j = 1, n
+            if (which == 'M') then
+                name = cell_name(mesh, j)
+            else
+                name = node_name(mesh, j)
+            end if
+            k = entity_by_number(name, n)
+            if (k /= 0 .and. k /= j) then
+                rank = j
+                return
+            end if
+        end do
+        name = ''
+    end subroutine first_rank_name_conflict
 
     !> "no node named X in mesh.mail (did you mean Y?)" for entity kind ENTITY_*.
     function not_found_message(mesh, names, kind, name) result(text)
