@@ -136,8 +136,9 @@ contains
         call c%key('DIRECTION', 'R', min=3, max=3, req=.true., vmin=-MAX_MODULUS, &
                    vmax=MAX_MODULUS)
         call c%end_fact()
-        ! FORCE_COQUE_FO: a pressure on plates given by a function of space (Code_Aster has
-        ! it in AFFE_CHAR_MECA only), as AFFE_CHAR_MECA_F's FORCE_COQUE PRES
+        ! FORCE_COQUE_FO: a pressure on plates given by a function of space, not of time
+        ! (Code_Aster has it in AFFE_CHAR_MECA only), evaluated once per cell at its centre
+        ! with X, Y, Z, EP, RHO (model/force_coque_fo)
         call c%fact('FORCE_COQUE_FO', max=MANY)
         call c%key('TOUT', 'TXM', into='OUI')
         call c%key('GROUP_MA', 'TXM', max=MANY)

@@ -45,6 +45,7 @@ contains
         integer(i4) :: i
         cara => null()
         mater => null()
+        if (.not. occ%has('PRES')) return        ! optional in Code_Aster's catalog: no load
         call occ%get_concept('PRES', p, st)
         if (st%failed()) return
         if (cmd%has('CARA_ELEM')) then
