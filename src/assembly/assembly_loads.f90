@@ -231,10 +231,10 @@ contains
                         c = item%cells(i)
                         select case (item%kind)
                         case (LOAD_FORCE_COQUE)
-                            call plate_cell_forces(s, item, c, t, factor, fext, st)
+                            call plate_cell_forces(s, item, i, t, factor, fext, st)
                         case (LOAD_PRES_REP)
                             if (is_plate(s%model%element(c))) then
-                                call plate_cell_forces(s, item, c, t, factor, fext, st)
+                                call plate_cell_forces(s, item, i, t, factor, fext, st)
                             else
                                 call edge_cell_forces(s, item, c, t, factor, fext, st)
                             end if
@@ -386,17 +386,19 @@ contains
     !> PRES_REP function is refused where it is not zero, as Code_Aster refuses it on
     !> plates (message ELEMENTS4_92: a pressure function on shells goes through
     !> FORCE_COQUE).
-    subroutine plate_cell_forces(s, item, c, t, factor, fext, st)
+    !>  i : in, the cell's index in item%cells (FORCE_COQUE_FO: its PRES in item%cell_pres)
+    subroutine plate_cell_forces(s, item, i, t, factor, fext, st)
         type(structure_t), intent(in) :: s
         type(load_item_t), intent(in) :: item
-        integer(i4), intent(in) :: c
+        integer(i4), intent(in) :: i
         real(dp), intent(in) :: t, factor
         real(dp), intent(inout) :: fext(:)
         type(status_t), intent(out) :: st
         real(dp) :: x(3, 4), q(6, 4), pres(4), fe(6, 4), area, rot(3, 3), xy(2, 4), cu, su
         real(dp) :: user(3, 3), dist, fp(12)
-        integer(i4) :: nn, a, comp, p0, eq
+        integer(i4) :: nn, a, comp, p0, eq, c
         logical :: pressure
+        c = item%cells(i)
         if (.not. is_plate(s%model%element(c))) then
             call set_error(st, STATUS_MODEL_ERROR, trim(LOAD_KIND_NAMES(item%kind)) // &
                 ' applies to plate (DKT) cells, not to ' // cell_label(s%mesh, c, item%group))
@@ -410,7 +412,14 @@ contains
         pres = 0.0_dp
         area = cell_measure(s%mesh, c)      ! the nodal forces are values times parts of it
         do a = 1, nn
-            if (pressure) then
+            if (pressure .and. allocated(item%cell_pres)) then
+                ! FORCE_COQUE_FO: one value per cell, evaluated at its centre (force_coque_fo)
+                pres(a) = item%cell_pres(i)
+                call check_factor(area, pres(a), item%kind, SLOT_PRES, st)
+                if (st%ok()) call check_factor(factor, pres(a) * area, item%kind, SLOT_PRES, &
+                                               st)
+                call load_locate(item, SLOT_PRES, st)
+            else if (pressure) then
                 call load_value_at(item%values(SLOT_PRES), item%kind, SLOT_PRES, t, x(:, a), &
                     pres(a), st)
                 if (st%ok()) call check_factor(area, pres(a), item%kind, SLOT_PRES, st)

@@ -415,10 +415,35 @@ contains
         integer(i4), intent(in) :: kind
         character(len=*), intent(in) :: name
         type(status_t), intent(inout) :: st
-        index = name_find(names, name)
+        index = 0
+        if (kind == ENTITY_NODE) index = entity_by_number(name, mesh%n_nodes)
+        if (kind == ENTITY_CELL) index = entity_by_number(name, mesh%n_cells)
+        if (index == 0) index = name_find(names, name)
         if (index == 0) call set_error(st, STATUS_MESH_ERROR, &
             not_found_message(mesh, names, kind, name))
     end function find_entity
+
+    !> A node or cell named by its number, as code_aster 17 reads NOEUD= / MAILLE= (its
+    !> char8_to_int: 'N19', 'M19' or '19' is entity 19, its meshes keeping no names, a .mail
+    !> file's dropped by lrmast): the number when `name` is N or M and digits, or digits
+    !> alone, within 1 .. n; 0 otherwise (the name is then looked up among the file's).
+    pure integer(i4) function entity_by_number(name, n) result(index)
+        character(len=*), intent(in) :: name
+        integer(i4), intent(in) :: n
+        integer :: first, k, value
+        index = 0
+        first = 1
+        if (len(name) >= 1) then
+            if (name(1:1) == 'N' .or. name(1:1) == 'M') first = 2
+        end if
+        if (len(name) < first .or. len(name) - first + 1 > 8) return
+        value = 0
+        do k = first, len(name)
+            if (name(k:k) < '0' .or. name(k:k) > '9') return
+            value = 10 * value + (ichar(name(k:k)) - ichar('0'))
+        end do
+        if (value >= 1 .and. value <= n) index = int(value, i4)
+    end function entity_by_number
 
     !> "no node named X in mesh.mail (did you mean Y?)" for entity kind ENTITY_*.
     function not_found_message(mesh, names, kind, name) result(text)

@@ -22,6 +22,7 @@ module load_commands
         SLOT_ANGLES, PLAN_SUP, PLAN_INF, PLAN_MOY, load_set_location, LOAD_PRE_EPSI, &
         LOAD_PRE_EPSI_PLATE
     use function_concept, only: function_concept_t
+    use force_coque_fo, only: force_coque_fo_pressures
     use relation_commands, only: select_nodes, face_impo_item, liaison_ddl_item, &
         liaison_oblique_item, liaison_unif_item, liaison_solide_item, liaison_rbe3_item, &
         liaison_group_item
@@ -200,10 +201,13 @@ contains
                     FORCE_COQUE_KEYS, functions, cm%loads, st)
                 if (st%failed()) return
             end do
-            ! FORCE_COQUE_FO (AFFE_CHAR_MECA): its PRES is a function of space
+            ! FORCE_COQUE_FO (AFFE_CHAR_MECA): its PRES is a function of space, evaluated
+            ! here once per cell at the cell's centre (force_coque_fo)
             do i = 1, cmd%count('FORCE_COQUE_FO')
                 call cell_item(cmd%occurrence('FORCE_COQUE_FO', i), p, LOAD_FORCE_COQUE, &
                     FORCE_COQUE_FO_KEYS, .true., cm%loads, st)
+                if (st%ok()) call force_coque_fo_pressures(cmd, &
+                    cmd%occurrence('FORCE_COQUE_FO', i), p, cm%loads, cm%loads%n_items, st)
                 if (st%failed()) return
             end do
             do i = 1, cmd%count('PRES_REP')

@@ -111,6 +111,9 @@ module model_loads
         !> FORCE_COQUE F1, F2, F3, MF1, MF2: in the plate's user frame (COQUE/ANGL_REP)
         logical :: local_frame = .false.
         integer(i4) :: plan = PLAN_MAIL               !< FORCE_COQUE/PLAN (PLAN_*)
+        !> FORCE_COQUE_FO: PRES of each of `cells` (same order), a constant per cell
+        !> evaluated when the load is defined (force_coque_fo; Code_Aster char_eval_fonc)
+        real(dp), allocatable :: cell_pres(:)
         logical :: angles = .false.                   !< FORCE_NODALE/ANGL_NAUT given
         !> RELATION items: relation r has the terms rel_ptr(r) .. rel_ptr(r+1)-1 of
         !> (rel_node, rel_comp, rel_coef); its right-hand side is values(rel_slot(r))
@@ -132,7 +135,7 @@ module model_loads
         logical :: kinematic = .false.               !< AFFE_CHAR_CINE(_F)
     end type load_set_t
 
-    public :: load_add_item, load_set_constant, load_set_function, load_value_at, &
+    public :: load_add_item, load_set_constant, load_set_function, load_set_cell_pressures, load_value_at, &
         load_has_kind, load_set_location, load_locate, load_item_where, load_slot_name, &
         load_add_relation, item_slot_name
 
@@ -185,6 +188,7 @@ contains
         to%angles = from%angles
         call move_alloc(from%nodes, to%nodes)
         call move_alloc(from%cells, to%cells)
+        if (allocated(from%cell_pres)) call move_alloc(from%cell_pres, to%cell_pres)
         to%n_rel = from%n_rel
         if (allocated(from%rel_ptr)) call move_alloc(from%rel_ptr, to%rel_ptr)
         if (allocated(from%rel_node)) call move_alloc(from%rel_node, to%rel_node)
@@ -287,6 +291,18 @@ contains
         set%items(index)%values(slot)%constant = value
         set%items(index)%values(slot)%func => null()
     end subroutine load_set_constant
+
+    !> Sets the PRES slot of item `index` to one constant per cell of the item
+    !> (FORCE_COQUE_FO, evaluated at the cells' centres), values(k) for cells(k).
+    subroutine load_set_cell_pressures(set, index, values)
+        type(load_set_t), intent(inout) :: set
+        integer(i4), intent(in) :: index
+        real(dp), intent(in) :: values(:)
+        set%items(index)%values(SLOT_PRES)%given = .true.
+        set%items(index)%values(SLOT_PRES)%func => null()
+        set%items(index)%values(SLOT_PRES)%constant = 0.0_dp
+        set%items(index)%cell_pres = values
+    end subroutine load_set_cell_pressures
 
     !> Sets slot `slot` of item `index` to a function of (INST, X, Y, Z), bound once here.
     !>  func : in, target owned by the run context (see the module header)

@@ -399,6 +399,11 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     seeds.append(Seed("defi_pres_ec8",
                       {"case.comm": os.path.join(SOURCE, "tests", "ec8", "defi_pres_ec8.comm")},
                       [], comm_targets, 0.5))
+    seeds.append(Seed("force_coque_fo_ec8",
+                      {"case.comm": os.path.join(SOURCE, "tests", "ec8", "ec8_plate_load.comm"),
+                       "case.mail": os.path.join(SOURCE, "tests", "verification",
+                                                 "loaded_plate.mail")},
+                      [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
     # POST_RELEVE_T on formula fields of the annulus, and on SSNL130's reactions.
     seeds.append(Seed("post_releve", {"case.comm": os.path.join(tables, "post_releve.comm"),
                                       "case.mail": os.path.join(tables, "annulus.mail")},
