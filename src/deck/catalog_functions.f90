@@ -83,7 +83,7 @@ contains
         call c%key('GRAVITE', 'R', def='0.0', vmin=0.0_dp, vmax=MAX_ACCELERATION)
         call c%key('PRES_SURF_LIBR', 'R', def='0.0', vmin=-MAX_MODULUS, vmax=MAX_MODULUS)
         call c%key('NEWMARK', 'TXM', def='PC+', into='PC+ PC-')
-        ! EVAL: declared as Code_Aster has it, refused by the handler (tables not built)
+        ! EVAL: a table of the pressure's parts per occurrence (post/defi_pres_ec8_command)
         call c%fact('EVAL', max=MANY)
         call c%key('RHO', 'R', req=.true.)
         call c%key('LIST_H', 'R', max=MANY, vmin=0.0_dp)

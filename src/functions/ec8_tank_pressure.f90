@@ -28,7 +28,7 @@
 !>   p = sign(cos theta) sqrt((p_ir + p_if)^2 + p_c1^2) +- 0.4 (p_rv + p_fv) + p_h + P_SURF_LIBR
 !> Above the free surface (z > H) the pressure is PRES_SURF_LIBR alone; below the bottom it
 !> is an error, as is a point farther than R (1 + 1 %) from the axis (Code_Aster CHARGES7_17,
-!> CHARGES7_19).
+!> CHARGES7_19), a negative EP or RHO (EP = 0: a shell without mass).
 module ec8_tank_pressure
     use kinds, only: dp
     use strings, only: to_text
@@ -72,28 +72,36 @@ module ec8_tank_pressure
         real(dp) :: phydr = 0.0_dp, total = 0.0_dp
     end type ec8_parts_t
 
-    public :: ec8_pressure
+    public :: ec8_pressure, ec8_pressure_above_bottom
 
 contains
 
     !> The pressure at (x, y, z) on a shell of thickness ep and density rho_s.
     !>  parts : out, the parts and the total (all 0 but total = p_free above the surface)
-    !>  st    : out, z below the bottom, r beyond R (1 + 1 %), a thickness <= 0 or a
-!>          density < 0 (or beyond number_limits)
+    !>  st    : out, z below the bottom, r beyond R (1 + 1 %), a thickness or a density < 0
+    !>          (or beyond number_limits)
     subroutine ec8_pressure(tank, x, y, z, ep, rho_s, parts, st)
         type(ec8_tank_t), intent(in) :: tank
         real(dp), intent(in) :: x, y, z, ep, rho_s
         type(ec8_parts_t), intent(out) :: parts
         type(status_t), intent(out) :: st
-        real(dp) :: r, h, zb, cos_t, phi, horizontal
         if (z < tank%z_bottom) then
             call set_error(st, STATUS_MODEL_ERROR, 'the point is below the bottom of the ' // &
                 'tank: Z = ' // to_text(z) // ' < Z_FOND = ' // to_text(tank%z_bottom) // &
                 ' (apply the pressure to cells of the tank only)')
             return
         end if
+        call ec8_pressure_above_bottom(tank, x, y, z - tank%z_bottom, ep, rho_s, parts, st)
+    end subroutine ec8_pressure
+
+    !> The same at height zb >= 0 above the bottom (DEFI_PRES_EC8 EVAL's LIST_H).
+    subroutine ec8_pressure_above_bottom(tank, x, y, zb, ep, rho_s, parts, st)
+        type(ec8_tank_t), intent(in) :: tank
+        real(dp), intent(in) :: x, y, zb, ep, rho_s
+        type(ec8_parts_t), intent(out) :: parts
+        type(status_t), intent(out) :: st
+        real(dp) :: r, h, cos_t, phi, horizontal
         h = tank%height
-        zb = z - tank%z_bottom
         if (zb > h) then
             parts%total = tank%p_free
             return
@@ -105,9 +113,10 @@ contains
                 to_text(tank%radius) // ' (+1 %)')
             return
         end if
-        if (.not. (ep > 0.0_dp .and. ep <= MAX_LENGTH)) then
+        ! EP = 0 is a shell without mass (m = 0): psi stays finite, its denominator > 0
+        if (.not. (ep >= 0.0_dp .and. ep <= MAX_LENGTH)) then
             call set_error(st, STATUS_MODEL_ERROR, 'the shell thickness EP = ' // &
-                to_text(ep) // ' must be > 0 and <= ' // to_text(MAX_LENGTH))
+                to_text(ep) // ' must be >= 0 and <= ' // to_text(MAX_LENGTH))
             return
         end if
         if (.not. (rho_s >= 0.0_dp .and. rho_s <= MAX_MODULUS)) then
@@ -129,7 +138,7 @@ contains
         if (cos_t < 0.0_dp) horizontal = -horizontal
         parts%total = horizontal + tank%newmark_sign * NEWMARK_COEF * (parts%prv + parts%pfv) &
             + tank%p_free + parts%phydr
-    end subroutine ec8_pressure
+    end subroutine ec8_pressure_above_bottom
 
     !> p_ir = C0 rho A_rh H cos(theta), the series C0 summed over n = 0 .. 20.
     subroutine rigid_impulsive(tank, r, phi, cos_t, pir, st)

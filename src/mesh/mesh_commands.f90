@@ -7,10 +7,10 @@ module mesh_commands
     use deck_concept, only: concept_t
     use deck_command, only: command_t
     use run_context, only: run_context_t
-    use mesh_types, only: mesh_summary
+    use mesh_types, only: mesh_t, mesh_summary, first_rank_name_conflict
     use mesh_reader, only: read_mesh
     use mesh_concept, only: mesh_concept_t
-    use mesh_command_support, only: relocate_error
+    use mesh_command_support, only: relocate_error, warn_at
     use mesh_gibi_reader, only: gibi_to_aster
     use atomic_file, only: atomic_file_t, open_atomic
     implicit none
@@ -101,8 +101,45 @@ contains
                 call ctx%write_mess('    ' // notes(k)%s)
             end do
         end if
+        call warn_rank_names(ctx, cmd, mc%mesh)
         call move_alloc(mc, result)
     end subroutine run_lire_maillage
+
+    !> An alarm when the file gives a node (a cell) a name that reads as another one's
+    !> number (the file names node 4 N5): a command's NOEUD='N5' means node 5, as code_aster
+    !> 17 reads it (mesh_types entity_by_number), not the node the file calls N5.
+    subroutine warn_rank_names(ctx, cmd, mesh)
+        type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
+        type(mesh_t), intent(in) :: mesh
+        character(len=:), allocatable :: name, word
+        integer(i4) :: rank
+        integer :: w
+        do w = 1, 2
+            if (w == 1) then
+                call first_rank_name_conflict(mesh, 'N', rank, name)
+                word = 'node'
+            else
+                call first_rank_name_conflict(mesh, 'M', rank, name)
+                word = 'cell'
+            end if
+            if (rank == 0) cycle
+            call warn_at(ctx, cmd, '', 'the file names ' // word // ' ' // to_text(rank) // &
+                ' ' // name // ', but a command''s ' // name // ' is ' // word // ' ' // &
+                digits_of(name) // ': as code_aster 17, which keeps no ' // word // &
+                ' names, parasol reads a name made of a number as that number')
+        end do
+    end subroutine warn_rank_names
+
+    !> The digits of a name N<k>, M<k> or <k>.
+    function digits_of(name) result(digits)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: digits
+        digits = name
+        if (len(name) > 0) then
+            if (name(1:1) == 'N' .or. name(1:1) == 'M') digits = name(2:)
+        end if
+    end function digits_of
 
     !> PRE_GIBI(UNITE_GIBI=19, UNITE_MAILLAGE=20): the GIBI file of UNITE_GIBI converted as
     !> Code_Aster converts it (mesh_gibi_reader) and written as a .mail on UNITE_MAILLAGE: the

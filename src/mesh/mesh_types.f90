@@ -58,6 +58,7 @@ module mesh_types
         mesh_add_cell_group, mesh_finish, mesh_release, mesh_remove_node_groups, &
         mesh_remove_cell_groups
     public :: find_node, find_cell, find_node_group, find_cell_group, node_name, cell_name, &
+        first_rank_name_conflict, &
         node_group_name, cell_group_name, cells_of_group, nodes_of_group, nodes_of_cells, &
         cell_node_list, cell_measure, cell_centre, mesh_summary, not_found_message, &
         cell_label
@@ -444,6 +445,33 @@ contains
         end do
         if (value >= 1 .and. value <= n) index = int(value, i4)
     end function entity_by_number
+
+    !> The first node (which = 'N') or cell ('M') whose file name reads as another entity's
+    !> number (entity_by_number: the file names node 4 'N5', which a deck's NOEUD='N5'
+    !> means node 5 by): its rank and name; rank 0 when there is none.
+    subroutine first_rank_name_conflict(mesh, which, rank, name)
+        type(mesh_t), intent(in) :: mesh
+        character, intent(in) :: which
+        integer(i4), intent(out) :: rank
+        character(len=:), allocatable, intent(out) :: name
+        integer(i4) :: j, n, k
+        rank = 0
+        n = mesh%n_nodes
+        if (which == 'M') n = mesh%n_cells
+        do j = 1, n
+            if (which == 'M') then
+                name = cell_name(mesh, j)
+            else
+                name = node_name(mesh, j)
+            end if
+            k = entity_by_number(name, n)
+            if (k /= 0 .and. k /= j) then
+                rank = j
+                return
+            end if
+        end do
+        name = ''
+    end subroutine first_rank_name_conflict
 
     !> "no node named X in mesh.mail (did you mean Y?)" for entity kind ENTITY_*.
     function not_found_message(mesh, names, kind, name) result(text)

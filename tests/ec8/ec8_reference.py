@@ -94,6 +94,8 @@ CASES = [
     ((-R, 0.0, 8.0), FULL),
     ((0.0, 0.0, 0.0), FULL),
     ((R * 0.9, 0.3, 0.0), FULL),
+    # EVAL's LIST_R_FOND: rigid impulsive on the bottom at r = R/2 (PIR of the table)
+    ((R / 2, 0.0, 0.0), dict(arh=A, afhn=A)),
 ]
 
 
