@@ -28,6 +28,7 @@ module load_commands
         liaison_group_item
     use relation_mail, only: liaison_mail_item
     use relation_proj, only: liaison_proj_item
+    use load_occurrences, only: locate_item
     implicit none
     private
 
@@ -804,16 +805,5 @@ contains
                 'FORMULE), got ' // f%type_name(), st)
         end select
     end subroutine set_slot
-
-    ! Records where the occurrence of item `index` is, for errors found when it is applied.
-    subroutine locate_item(occ, loads, index)
-        type(keyword_set_t), intent(in) :: occ
-        type(load_set_t), intent(inout) :: loads
-        integer(i4), intent(in) :: index
-        character(len=:), allocatable :: file
-        integer :: line, col
-        call occ%location('', file, line, col)
-        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
-    end subroutine locate_item
 
 end module load_commands

@@ -18,10 +18,11 @@ module relation_commands
         DOF_DRX
     use model_concept, only: model_concept_t
     use model_loads, only: load_set_t, load_add_item, load_set_constant, load_set_function, &
-        load_set_location, load_add_relation, LOAD_RELATION, LOAD_DDL_IMPO
+        load_add_relation, LOAD_RELATION, LOAD_DDL_IMPO
     use model_relations, only: relation_list_t, node_directions, nautical_frame, &
         rigid_body_relations, rbe3_coefficients, pair_nodes, shortest_edge, DIST_MIN_FRACTION
     use function_concept, only: function_concept_t
+    use load_occurrences, only: locate_item, three_reals
     implicit none
     private
 
@@ -190,11 +191,8 @@ contains
         character(len=*), intent(in) :: label
         type(load_set_t), intent(inout) :: loads
         integer(i4), intent(out) :: index
-        character(len=:), allocatable :: file
-        integer :: line, col
         call load_add_item(loads, LOAD_RELATION, [integer(i4) ::], index, label)
-        call occ%location('', file, line, col)
-        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
+        call locate_item(occ, loads, index)
     end subroutine new_relation_item
 
     ! Checks that node has component comp in the model; error at `key` otherwise.
@@ -244,7 +242,7 @@ contains
         end do
         if (any_value) then
             call load_add_item(loads, LOAD_DDL_IMPO, nodes, index, label)
-            call locate(occ, loads, index)
+            call locate_item(occ, loads, index)
             loads%items(index)%blocage = .true.     ! the components each node has
             do k = 1, 6
                 if (.not. occ%has(trim(DOFS(k)))) cycle
@@ -604,8 +602,8 @@ contains
         tran = 0.0_dp
         centre = 0.0_dp
         call nautical_frame([0.0_dp], frame)
-        if (occ%has('TRAN')) call three(occ, 'TRAN', tran, st)
-        if (st%ok() .and. occ%has('CENTRE')) call three(occ, 'CENTRE', centre, st)
+        if (occ%has('TRAN')) call three_reals(occ, 'TRAN', tran, st)
+        if (st%ok() .and. occ%has('CENTRE')) call three_reals(occ, 'CENTRE', centre, st)
         if (st%ok() .and. occ%has('ANGL_NAUT')) then
             call occ%get_reals('ANGL_NAUT', v, st)
             if (st%ok()) call nautical_frame(v, frame)
@@ -715,28 +713,5 @@ contains
         call node_directions(mc%mesh, cells, nodes, .false., normals, st)
         call relocate_error(occ, 'GROUP_MA_' // side, st)
     end subroutine normals_if_needed
-
-    ! Up to 3 reals of `key` (missing ones 0).
-    subroutine three(occ, key, v, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: key
-        real(dp), intent(out) :: v(3)
-        type(status_t), intent(out) :: st
-        real(dp), allocatable :: given(:)
-        v = 0.0_dp
-        call occ%get_reals(key, given, st)
-        if (st%ok()) v(1:min(3, size(given))) = given(1:min(3, size(given)))
-    end subroutine three
-
-    ! Records where an item's occurrence is.
-    subroutine locate(occ, loads, index)
-        type(keyword_set_t), intent(in) :: occ
-        type(load_set_t), intent(inout) :: loads
-        integer(i4), intent(in) :: index
-        character(len=:), allocatable :: file
-        integer :: line, col
-        call occ%location('', file, line, col)
-        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
-    end subroutine locate
 
 end module relation_commands

@@ -39,9 +39,10 @@ module relation_mail
     use model_types, only: ELEM_NONE, is_plate, is_plane_solid
     use model_dof_numbering, only: COMPONENT_NAMES, N_COMPONENTS, DOF_DX, DOF_DY, DOF_DZ
     use model_concept, only: model_concept_t
-    use model_loads, only: load_set_t, load_add_item, load_set_location, load_add_relation, &
+    use model_loads, only: load_set_t, load_add_item, load_add_relation, &
         LOAD_RELATION
     use model_relations, only: node_directions, nautical_frame
+    use load_occurrences, only: locate_item, three_reals
     implicit none
     private
 
@@ -173,9 +174,9 @@ contains
         angles = 0.0_dp
         centre = 0.0_dp
         tran = 0.0_dp
-        if (rotate) call three(occ, 'ANGL_NAUT', angles, st)
-        if (st%ok() .and. occ%has('CENTRE')) call three(occ, 'CENTRE', centre, st)
-        if (st%ok() .and. occ%has('TRAN')) call three(occ, 'TRAN', tran, st)
+        if (rotate) call three_reals(occ, 'ANGL_NAUT', angles, st)
+        if (st%ok() .and. occ%has('CENTRE')) call three_reals(occ, 'CENTRE', centre, st)
+        if (st%ok() .and. occ%has('TRAN')) call three_reals(occ, 'TRAN', tran, st)
         if (st%failed()) return
         if (rotate .and. dim == 2 .and. any(abs(angles(2:3)) > 0.0_dp)) then
             call occ%error_at('ANGL_NAUT', 'in a 2D mesh the rotation is about Z: give ' // &
@@ -213,7 +214,7 @@ contains
         if (st%failed()) return
 
         call load_add_item(loads, LOAD_RELATION, [integer(i4) ::], index, label)
-        call locate(occ, loads, index)
+        call locate_item(occ, loads, index)
         call grid_build(mc%mesh, masters, grid)
         do s = 1, size(slaves)
             x = mc%mesh%coords(:, slaves(s))
@@ -666,28 +667,5 @@ contains
             if (trim(COMPONENT_NAMES(k)) == trim(name)) comp = k
         end do
     end function component_of
-
-    ! Up to 3 reals of `key` into v (the missing ones 0).
-    subroutine three(occ, key, v, st)
-        type(keyword_set_t), intent(in) :: occ
-        character(len=*), intent(in) :: key
-        real(dp), intent(inout) :: v(3)
-        type(status_t), intent(out) :: st
-        real(dp), allocatable :: r(:)
-        call occ%get_reals(key, r, st)
-        if (st%failed()) return
-        v = 0.0_dp
-        v(1:min(3, size(r))) = r(1:min(3, size(r)))
-    end subroutine three
-
-    subroutine locate(occ, loads, index)
-        type(keyword_set_t), intent(in) :: occ
-        type(load_set_t), intent(inout) :: loads
-        integer(i4), intent(in) :: index
-        character(len=:), allocatable :: file
-        integer :: line, col
-        call occ%location('', file, line, col)
-        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
-    end subroutine locate
 
 end module relation_mail

@@ -32,8 +32,9 @@ module relation_proj
     use model_dof_numbering, only: COMPONENT_NAMES, DOF_DX, DOF_DY, DOF_DZ, DOF_DRX, &
         DOF_DRY, DOF_DRZ, component_index
     use model_concept, only: model_concept_t
-    use model_loads, only: load_set_t, load_add_item, load_set_location, load_add_relation, &
+    use model_loads, only: load_set_t, load_add_item, load_add_relation, &
         LOAD_RELATION
+    use load_occurrences, only: locate_item
     implicit none
     private
 
@@ -135,7 +136,7 @@ contains
         end do
 
         call load_add_item(loads, LOAD_RELATION, [integer(i4) ::], index, label)
-        call locate(occ, loads, index)
+        call locate_item(occ, loads, index)
         n_self = 0
         first_self = 0
         n_rel = 0
@@ -243,15 +244,5 @@ contains
             coefs = [coefs, -coef]
         end subroutine lever_term
     end subroutine liaison_proj_item
-
-    subroutine locate(occ, loads, index)
-        type(keyword_set_t), intent(in) :: occ
-        type(load_set_t), intent(inout) :: loads
-        integer(i4), intent(in) :: index
-        character(len=:), allocatable :: file
-        integer :: line, col
-        call occ%location('', file, line, col)
-        call load_set_location(loads, index, file, line, col, occ%command, occ%scope)
-    end subroutine locate
 
 end module relation_proj

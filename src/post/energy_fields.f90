@@ -8,9 +8,14 @@
 !>             from sig_zz = 0, D_PLAN's restrained expansion counted through SIZZ); with
 !>             eps_th = 0 it is 1/2 sig : C^-1 sig;
 !>             DKT/DKQ plates, with N = Dm e + Dmf k, M = Dmf e + Df k, T (the DKT's shear
-!>             from the moments' derivatives) and gamma = Dc^-1 T:
+!>             from the moments' derivatives) and g = Dc^-1 T / 2 (DEGE's GAX GAY, half the
+!>             engineering distortion, as Code_Aster's dktedg/dkqedg):
 !>               MEMBRANE = 1/2 e . Dm e, FLEXION = 1/2 k . Df k, COUPL_MF = e . Dmf k,
-!>               CISAILLE = 1/2 T . gamma, TOTALE their sum
+!>               CISAILLE = 1/2 g . Dc g = 1/8 T . Dc^-1 T, TOTALE their sum
+!>             (Code_Aster's te0412, linear case: it doubles DEGE's EXY and KXY back to
+!>             engineering values but takes GAX GAY as they are, so its CISAILLE is a
+!>             quarter of the shear strain energy 1/2 T . Dc^-1 T; parasol reports
+!>             Code_Aster's quantity)
 !>             (e, k engineering membrane strains and curvatures; the section's rigidities
 !>             of model_plate_section: ELAS, ELAS_COQUE, laminates, EXCENTREMENT);
 !>  ENEL_ELEM  its integral over the cell, sum_g w_g |J_g| (density at g), same components;
@@ -305,7 +310,8 @@ contains
         type(status_t), intent(out) :: st
         type(plate_cell_t) :: pc
         type(gauss_rule_t) :: rule
-        real(dp) :: dm(3, 3), dmf(3, 3), df(3, 3), dci(2, 2), ddet, e(3), k(3), tt(2), det
+        real(dp) :: dm(3, 3), dmf(3, 3), df(3, 3), dc(2, 2), dci(2, 2), ddet, e(3), k(3), &
+            tt(2), gam(2), det
         real(dp), allocatable :: eps_th(:, :)
         logical :: has
         integer(i4) :: g
@@ -329,18 +335,18 @@ contains
         if (pc%homogeneous) then
             dm = pc%dm
             df = pc%df
+            dc = reshape([pc%dc, 0.0_dp, 0.0_dp, pc%dc], [2, 2])
             if (pc%dc > 0.0_dp) dci = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2]) / pc%dc
         else
             dm = pc%section%dm
             dmf = pc%section%dmf
             df = pc%section%df
-            associate (dc => pc%section%dc)
-                ddet = dc(1, 1) * dc(2, 2) - dc(1, 2) * dc(2, 1)
-                if (abs(ddet) > 0.0_dp) then
-                    dci(1, :) = [dc(2, 2), -dc(1, 2)] / ddet
-                    dci(2, :) = [-dc(2, 1), dc(1, 1)] / ddet
-                end if
-            end associate
+            dc = pc%section%dc
+            ddet = dc(1, 1) * dc(2, 2) - dc(1, 2) * dc(2, 1)
+            if (abs(ddet) > 0.0_dp) then
+                dci(1, :) = [dc(2, 2), -dc(1, 2)] / ddet
+                dci(2, :) = [-dc(2, 1), dc(1, 1)] / ddet
+            end if
         end if
         do g = 1, np
             call plate_point_strains(pc%xy(:, 1:pc%nn), pc%nn, pc%ul(1:6 * pc%nn), &
@@ -349,7 +355,8 @@ contains
                 rule%xi(:, g), tt)
             dens(2, g) = 0.5_dp * dot_product(e, matmul(dm, e))
             dens(3, g) = 0.5_dp * dot_product(k, matmul(df, k))
-            dens(4, g) = 0.5_dp * dot_product(tt, matmul(dci, tt))
+            gam = 0.5_dp * matmul(dci, tt)      ! DEGE's GAX GAY (tensor shear strains)
+            dens(4, g) = 0.5_dp * dot_product(gam, matmul(dc, gam))
             dens(5, g) = dot_product(e, matmul(dmf, k))
             dens(1, g) = sum(dens(2:5, g))
             wdet(g) = rule%w(g) * abs(det)
