@@ -207,6 +207,13 @@ contains
                 if (.not. (step > 0.0_dp)) then
                     call occ%error_at('PAS', 'PAS must be positive', st); return
                 end if
+                ! more than MAX_LIST steps is refused before the division, which a step
+                ! of 4.9e-324 (a denormal) would overflow
+                if ((finish - start) / real(MAX_LIST, dp) > step) then
+                    call occ%error_at('PAS', 'PAS = ' // to_text(step) // ' makes more ' // &
+                        'than ' // to_text(int(MAX_LIST, i4)) // ' steps in [' // &
+                        to_text(start) // ', ' // to_text(finish) // ']', st); return
+                end if
                 count = (finish - start) / step
                 if (count > real(MAX_LIST, dp) .or. abs(count - anint(count)) > &
                     STEP_TOLERANCE * max(1.0_dp, count)) then
