@@ -396,7 +396,7 @@ contains
         type(status_t), intent(out) :: st
         real(dp) :: x(3, 4), q(6, 4), pres(4), fe(6, 4), area, rot(3, 3), xy(2, 4), cu, su
         real(dp) :: user(3, 3), dist, fp(12)
-        integer(i4) :: nn, a, comp, p0, eq, c
+        integer(i4) :: nn, a, comp, p0, c
         logical :: pressure
         c = item%cells(i)
         if (.not. is_plate(s%model%element(c))) then
@@ -481,12 +481,7 @@ contains
                 cell_label(s%mesh, c, item%group) // ': ' // st%message)
             return
         end if
-        do a = 1, nn
-            do comp = 1, 6
-                eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
-                if (eq > 0) fext(eq) = fext(eq) + factor * fe(comp, a)
-            end do
-        end do
+        call add_cell_forces(s, c, factor, fe(:, 1:nn), fext)
     end subroutine plate_cell_forces
 
     pure function cross(a, b) result(c)
@@ -567,12 +562,7 @@ contains
             end if
         end do
         call edge_line_forces(pts, q(:, 1:pts%n), fe(1:2 * nn))
-        do a = 1, nn
-            do comp = 1, 2
-                eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
-                if (eq > 0) fext(eq) = fext(eq) + factor * fe(2 * (a - 1) + comp)
-            end do
-        end do
+        call add_cell_forces(s, c, factor, reshape(fe(1:2 * nn), [2, nn]), fext)
     end subroutine edge_cell_forces
 
     !> FORCE_ARETE FX..MZ (per unit length, global) on one SEG2 edge of a DKT model: half of
@@ -663,7 +653,7 @@ contains
         type(status_t), intent(out) :: st
         type(area_points_t) :: pts
         real(dp) :: gd(3), rho, x(3, 4), q(6, 4), fe(6, 4), qa(2, MAX_GAUSS_POINTS)
-        integer(i4) :: kind, m, nn, p0, a, comp, eq
+        integer(i4) :: kind, m, nn, p0, a, comp
         kind = s%model%element(c)
         if (kind == ELEM_NONE .or. is_load_edge(kind)) return
         if (is_discrete(kind)) then
@@ -699,12 +689,7 @@ contains
                     item%group) // ': ' // st%message)
                 return
             end if
-            do a = 1, nn
-                do comp = 1, 3
-                    eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
-                    if (eq > 0) fext(eq) = fext(eq) + factor * fe(comp, a)
-                end do
-            end do
+            call add_cell_forces(s, c, factor, fe(1:3, 1:nn), fext)
         else if (is_plane_solid(kind)) then
             call cell_area_points(s, c, pts, st)
             if (st%failed()) then
@@ -741,15 +726,8 @@ contains
         real(dp), intent(in) :: q(:, :), factor
         real(dp), intent(inout) :: fext(:)
         real(dp) :: fe(2 * MAX_CELL_NODES)
-        integer(i4) :: a, comp, eq, p0
-        p0 = s%mesh%cell_ptr(c)
         call area_forces(pts, q(:, 1:pts%n), fe(1:2 * pts%nn))
-        do a = 1, pts%nn
-            do comp = 1, 2
-                eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
-                if (eq > 0) fext(eq) = fext(eq) + factor * fe(2 * (a - 1) + comp)
-            end do
-        end do
+        call add_cell_forces(s, c, factor, reshape(fe(1:2 * pts%nn), [2, pts%nn]), fext)
     end subroutine add_area_forces
 
     ! A load value times a factor (the FONC_MULT of its EXCIT, an integration weight) must
@@ -764,5 +742,23 @@ contains
             load_slot_name(kind, slot) // ' = ' // to_text(value) // ' times ' // &
             to_text(factor) // ' (FONC_MULT, or the area or length it acts on) overflows')
     end subroutine check_factor
+
+    !> fext += factor * fe: fe(comp, a) is component comp (DX, DY, DZ, DRX ... in DOF
+    !> order) of the force on the a-th node of cell c; components without an equation
+    !> (imposed or absent) are skipped.
+    subroutine add_cell_forces(s, c, factor, fe, fext)
+        type(structure_t), intent(in) :: s
+        integer(i4), intent(in) :: c
+        real(dp), intent(in) :: factor, fe(:, :)
+        real(dp), intent(inout) :: fext(:)
+        integer(i4) :: a, comp, eq, p0
+        p0 = s%mesh%cell_ptr(c)
+        do a = 1, size(fe, 2, kind=i4)
+            do comp = 1, size(fe, 1, kind=i4)
+                eq = s%dofs%equation(comp, s%mesh%cell_nodes(p0 + a - 1))
+                if (eq > 0) fext(eq) = fext(eq) + factor * fe(comp, a)
+            end do
+        end do
+    end subroutine add_cell_forces
 
 end module assembly_loads
