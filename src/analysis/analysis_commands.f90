@@ -11,7 +11,7 @@ module analysis_commands
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
     use mesh_command_support, only: group_cells, all_cells
-    use mesh_types, only: cell_name
+    use mesh_types, only: cell_name, cell_label
     use model_types, only: is_discrete
     use model_concept, only: model_concept_t
     use material_concept, only: material_field_concept_t
@@ -23,6 +23,7 @@ module analysis_commands
     use real_list, only: real_list_t
     use time_stepping, only: list_inst_concept_t, step_cutting_t, step_cutting_for
     use assembly_system, only: structure_t, structure_check
+    use assembly_unsymmetric, only: first_unsymmetric_cell
     use assembly_loads, only: check_imposed_owners, record_imposed, follower_refusal
     use model_loads, only: load_item_where
     use function_concept, only: param_binding_t
@@ -87,6 +88,7 @@ contains
         options%deadline = ctx%deadline            ! polled between Newton iterations
         options%progress => ctx%progress           ! a line per step, work under way
         call structure_check(s, st)
+        if (st%ok()) call refuse_unsymmetric(cmd, s, st)
         if (st%ok()) call check_records(cmd, 'INCREMENT', 'LIST_INST', size(times, kind=i8), &
             s%dofs%n_equations, count(s%choc), options%iter_glob_maxi, st)
         if (st%ok()) call check_imposed(s, excit, times(2:), st)
@@ -128,6 +130,22 @@ contains
         call keep_structure(cmd, s, res)
         call move_alloc(res, result)
     end subroutine run_stat_non_line
+
+    ! STAT_NON_LINE factors symmetric tangents only (its contact Newton updates them by
+    ! symmetric blocks): a discrete with SYME='NON' and a matrix that is not symmetric is
+    ! solved by MECA_STATIQUE (unsymmetric_correction), not here.
+    subroutine refuse_unsymmetric(cmd, s, st)
+        type(command_t), intent(in) :: cmd
+        type(structure_t), intent(in) :: s
+        type(status_t), intent(out) :: st
+        integer(i4) :: c
+        c = first_unsymmetric_cell(s)
+        if (c == 0) return
+        call cmd%error_at('CARA_ELEM', cell_label(s%mesh, c) // ' has a discrete ' // &
+            'stiffness with SYME=''NON'' that is not symmetric: STAT_NON_LINE does not ' // &
+            'build unsymmetric tangents; MECA_STATIQUE solves it, or give a symmetric ' // &
+            'matrix', st, STATUS_NOT_IMPLEMENTED)
+    end subroutine refuse_unsymmetric
 
     !> MECA_STATIQUE: linear statics at INST / LIST_INST (default: INST = 0).
     subroutine run_meca_statique(ctx, cmd, result, st)

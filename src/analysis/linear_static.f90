@@ -8,13 +8,15 @@
 !> forces, and the residual of the refinement, carry no round-off of the rigid motion.
 !> The .mess says how many digits each answer holds: a last solve with the final residual
 !> estimates its error (answer_digits).
+!> Discretes with SYME='NON' and a matrix that is not symmetric: the factor is of the
+!> symmetric part, every solve corrected to one with K (unsymmetric_correction).
 !> DIS_CHOC is not a MECA_STATIQUE behaviour: s%choc must be all .false. (springs linear).
 !> The .mess ends with the wall and CPU time of each phase (numbering and the solver's
 !> analysis, assembly, factorization with its pivot diagnosis, loads and solves): what
 !> doc/performance.md's benchmarks read.
 module linear_static
     use kinds, only: dp, i4, i8
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_SINGULAR
     use strings, only: to_text
     use sparse_matrix, only: sym_matrix_t, sym_move
     use direct_solver, only: direct_solver_t, solver_options_t
@@ -28,6 +30,8 @@ module linear_static
     use analysis_solver, only: factor_and_diagnose_linear, open_solver, log_numbering, &
         solve_held, held_t, answer_digits, real_digits
     use two_level_solver, only: from_hat, hat_body_part
+    use unsymmetric_correction, only: skew_correction_t, skew_prepare, skew_correct
+    use assembly_unsymmetric, only: first_unsymmetric_cell
     use strings, only: real_short
     use analysis_result, only: result_concept_t, result_init, result_store
     use analysis_log, only: analysis_log_t, log_add
@@ -71,6 +75,7 @@ contains
         real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:), du(:), &
             forc(:)
         type(elimination_t) :: elim
+        type(skew_correction_t) :: skew
         integer(i4) :: k, n_eq, pass
         real(dp) :: clock(2, 4), assembly_time(2)     ! (wall, CPU) at the phases' ends
         if (any(s%choc)) then
@@ -102,6 +107,13 @@ contains
         call read_clocks(clock(:, 2))
         call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
             assembly_time)
+        if (st%code == STATUS_SINGULAR .and. first_unsymmetric_cell(s) > 0) &
+            call set_error(st, st%code, st%message // ' (with discretes of SYME=''NON'' ' // &
+                'parasol factors the symmetric part of K, (K + K^T)/2, and corrects for the ' // &
+                'rest: that part must be regular even where K is)')
+        if (st%failed()) return
+        ! discretes with SYME='NON': K = S + skew part, S factored (unsymmetric_correction)
+        call skew_prepare(s, map, matrix, solver, held, options, times(1), log, skew, st)
         if (st%failed()) return
         call read_clocks(clock(:, 3))
         call result_init(res, 'evol_elas', s%mesh, s%dofs, int(size(times), i4))
@@ -116,6 +128,7 @@ contains
                 call gather_free(map, fext - fint, r)
                 call solve_held(s, map, matrix, solver, held, r, times(k), log, st)
                 if (st%failed()) return
+                call skew_correct(map, solver, skew, r)
                 call from_hat(solver, r, x)
                 ! the last solve only estimates the error of the answer
                 if (pass == 2 + REFINEMENT_STEPS) exit

@@ -16,7 +16,7 @@ module assembly_system
         ELEM_DIS_T_POI1, ELEM_2D_DIS_T_POI1, ELEMENT_NAMES
     use model_material, only: material_field_t, material_t, material_of_cell, elastic_behaviour
     use model_cara_elem, only: cara_elem_t, CARA_NONE, REPERE_GLOBAL, ORIENT_ANGL_VRIL, &
-        ORIENT_ANGL_NAUT, cara_is_diagonal, cara_is_rotational
+        ORIENT_ANGL_NAUT, cara_is_diagonal, cara_is_rotational, discrete_is_unsymmetric
     use model_dof_numbering, only: dof_numbering_t, element_components, N_COMPONENTS
     use element_plate, only: plate_local_frame, plate_local_stiffness, &
         plate_section_stiffness, plate_forces_from_local, &
@@ -118,7 +118,7 @@ module assembly_system
         spring_block_width, gather_free, scatter_free, free_residual_max, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
         spring_lines, linear_product, body_product, support_product, is_body_cell, &
-        cell_response
+        cell_response, discrete_matrix
 
 contains
 
@@ -502,6 +502,10 @@ contains
                 history)
         else
             call discrete_response(s, c, x, ue, n, elastic, ke, fe, closed, fn, st)
+            ! SYME='NON': the matrices hold the symmetric part; the analysis corrects for
+            ! the skew part (assembly_unsymmetric); the forces above used K whole
+            if (want_matrix .and. discrete_is_unsymmetric(s%cara, c)) &
+                ke = 0.5_dp * (ke + transpose(ke))
         end if
         if (st%failed()) call set_error(st, st%code, cell_label(s%mesh, c) // ': ' // &
             st%message)
@@ -585,7 +589,10 @@ contains
         if (s%cara%orientation(c) == ORIENT_ANGL_NAUT) angles = &
             s%cara%orientation_values(:, c) * DEGREE
         ke = 0.0_dp
-        if (.not. (cara_is_diagonal(code) .and. .not. cara_is_rotational(code))) then
+        ! a 2D discrete turned by ANGL_NAUT with BETA or GAMMA: the general path (the XY
+        ! block of the 3D rotation, as Code_Aster turns it; zzzz274b)
+        if (.not. (cara_is_diagonal(code) .and. .not. cara_is_rotational(code)) .or. &
+            (kind == ELEM_2D_DIS_T_POI1 .and. any(abs(angles(2:3)) > 0.0_dp))) then
             call general_discrete_matrix(s, c, x, n, kv, global, angles, ke, st)
             return
         end if
@@ -638,6 +645,11 @@ contains
             r(3, 3) = 1.0_dp
         else if (n_nodes == 2) then
             call segment_rotation(x(1:3, 1), x(1:3, 2), angles(3), r, st)
+        else if (two_d .and. any(abs(angles(2:3)) > 0.0_dp)) then
+            ! ANGL_NAUT with BETA or GAMMA on a 2D discrete: Code_Aster turns its matrix
+            ! by the 3D rotation and keeps the XY block (zzzz274b: the GLOBAL matrix it
+            ! gives equals the LOCAL one turned so)
+            call nautical_rotation(angles, r)
         else if (two_d) then
             r = plane_rotation(angles(1))
         else

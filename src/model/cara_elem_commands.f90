@@ -211,8 +211,6 @@ contains
                 n_skipped=skipped)
             if (index(st%message, 'values in VALE') > 0) then
                 call relocate_error(occ, 'VALE', st)
-            else if (index(st%message, 'SYME') > 0) then
-                call relocate_error(occ, 'SYME', st)
             else
                 call relocate_error(occ, 'CARA', st)
             end if

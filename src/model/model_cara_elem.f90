@@ -2,7 +2,7 @@
 !> stored per cell. RIGI_PARASOL (model_rigi_parasol) fills the DISCRET data of springs.
 module model_cara_elem
     use kinds, only: dp, i4
-    use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
+    use status, only: status_t, set_error, STATUS_MODEL_ERROR
     use strings, only: to_text, to_upper
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, CELL_SEG2
     use model_types, only: model_t, is_plate, is_discrete, is_discrete_2d, &
@@ -26,6 +26,10 @@ module model_cara_elem
     !> A full discrete matrix (K_T_N, K_T_L, K_TR_N, K_TR_L), in the frame of its REPERE.
     type, public :: discrete_matrix_t
         real(dp), allocatable :: k(:, :)
+        !> .false.: K(i,j) /= K(j,i) somewhere (SYME='NON' with values that are not
+        !> symmetric): the analyses factor its symmetric part and correct for the rest
+        !> (unsymmetric_discretes)
+        logical :: symmetric = .true.
     end type discrete_matrix_t
     integer(i4), parameter, public :: REPERE_GLOBAL = 1, REPERE_LOCAL = 2
     integer(i4), parameter, public :: ORIENT_NONE = 0, ORIENT_ANGL_VRIL = 1, &
@@ -68,7 +72,8 @@ module model_cara_elem
 
     public :: cara_elem_init, assign_coque, assign_discrete, assign_orientation, &
         material_axis_angle, assign_massif, discrete_value_count, discrete_misfit, parse_cara, parse_repere, cara_is_rotational, &
-        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix
+        cara_is_diagonal, cara_on_link, discrete_node_dofs, discrete_full_matrix, &
+        discrete_is_unsymmetric
 
 contains
 
@@ -270,19 +275,27 @@ contains
         end if
     end function inertia_value_count
 
+    !> Whether cell c's stiffness is a full matrix that is not symmetric (SYME='NON').
+    pure logical function discrete_is_unsymmetric(cara, c)
+        type(cara_elem_t), intent(in) :: cara
+        integer(i4), intent(in) :: c
+        integer(i4) :: id
+        discrete_is_unsymmetric = .false.
+        if (.not. allocated(cara%discrete_matrix)) return
+        if (c < 1 .or. c > size(cara%discrete_matrix)) return
+        id = cara%discrete_matrix(c)
+        if (id > 0) discrete_is_unsymmetric = .not. cara%matrices(id)%symmetric
+    end function discrete_is_unsymmetric
+
     !> The full matrix of a full stiffness CARA from its VALE: the upper triangle by column
     !> (K11, K12, K22, K13, ... : Code_Aster's vecma), or with symmetric = .false. the whole
-    !> matrix by column.
-    !>  st : out, STATUS_NOT_IMPLEMENTED for values that are not symmetric (SYME='NON'):
-    !>       parasol's matrices and solvers are symmetric
-    subroutine discrete_full_matrix(values, order, symmetric, k, st)
+    !> matrix by column (SYME='NON', U4.42.01 §5: K(i,j) may differ from K(j,i)).
+    pure subroutine discrete_full_matrix(values, order, symmetric, k)
         real(dp), intent(in) :: values(:)
         integer(i4), intent(in) :: order
         logical, intent(in) :: symmetric
         real(dp), allocatable, intent(out) :: k(:, :)
-        type(status_t), intent(out) :: st
         integer(i4) :: i, j, p
-        real(dp) :: scale
         allocate (k(order, order), source=0.0_dp)
         p = 0
         do j = 1, order
@@ -292,11 +305,6 @@ contains
                 if (symmetric) k(j, i) = values(p)
             end do
         end do
-        if (symmetric) return
-        scale = maxval(abs(k))
-        if (maxval(abs(k - transpose(k))) > 1.0e-12_dp * scale) call set_error(st, &
-            STATUS_NOT_IMPLEMENTED, 'SYME=''NON'' with a matrix that is not symmetric ' // &
-            '(K(i,j) /= K(j,i)) is not built: parasol''s matrices and solvers are symmetric')
     end subroutine discrete_full_matrix
 
     !> Checks that a discrete characteristic fits cell c (modelisation and cell type);
@@ -361,8 +369,7 @@ contains
     !>  values    : in, as many as the catalog says (discrete_value_count)
     !>  repere    : in, 'GLOBAL' | 'LOCAL'
     !>  st        : out, STATUS_MODEL_ERROR for an unknown CARA or REPERE, a wrong value
-    !>              count, a characteristic that does not fit a cell (naming it);
-    !>              STATUS_NOT_IMPLEMENTED for a non-symmetric matrix (SYME='NON')
+    !>              count, a characteristic that does not fit a cell (naming it)
     !>  symmetric : in, optional, SYME='OUI' (default) or 'NON'
     !>  verify    : in, optional, VERIF='MAILLE' (default .true.): a cell of the groups that
     !>              carries no discrete element is an error; without it (Code_Aster's
@@ -412,8 +419,7 @@ contains
         matrix = 0
         if (what == 'K' .and. .not. diagonal) then
             n = discrete_node_dofs(rotational, two_d) * merge(2, 1, on_link)
-            call discrete_full_matrix(values, n, sym, k, st)
-            if (st%failed()) return
+            call discrete_full_matrix(values, n, sym, k)
         end if
         do i = 1, size(cells)
             c = cells(i)
@@ -448,6 +454,8 @@ contains
             end if
             cara%n_matrices = cara%n_matrices + 1
             cara%matrices(cara%n_matrices)%k = k
+            ! exact comparison: any difference is the user's K and is solved for
+            cara%matrices(cara%n_matrices)%symmetric = .not. any(abs(k - transpose(k)) > 0.0_dp)
             index = cara%n_matrices
         end subroutine store_matrix
     end subroutine assign_discrete

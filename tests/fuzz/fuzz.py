@@ -268,6 +268,14 @@ def make_seeds(parasol, work, wanted, aster_med=None):
                                                                     "discrete_2d.mail")},
                       [], {"case.export": "export", "discrete.comm": "deck",
                            "discrete_3d.mail": "mail", "discrete_2d.mail": "mail"}, 0.8))
+    # SYME='NON': the unsymmetric discretes' correction of the symmetric factor
+    seeds.append(Seed("discrete_unsymmetric",
+                      {"case.export": os.path.join(discrete, "unsymmetric.export"),
+                       "unsymmetric.comm": os.path.join(discrete, "unsymmetric.comm"),
+                       "unsymmetric_3d.mail": os.path.join(discrete, "unsymmetric_3d.mail"),
+                       "unsymmetric_2d.mail": os.path.join(discrete, "unsymmetric_2d.mail")},
+                      [], {"case.export": "export", "unsymmetric.comm": "deck",
+                           "unsymmetric_3d.mail": "mail", "unsymmetric_2d.mail": "mail"}, 0.8))
     # Fields: CREA_CHAMP (AFFE, EXTR, ASSE, COMB, EVAL) and TEST_RESU on field concepts.
     fields = os.path.join(SOURCE, "tests", "fields")
     seeds.append(Seed("fields", {"case.comm": os.path.join(fields, "crea_champ.comm"),
