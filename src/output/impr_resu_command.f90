@@ -45,6 +45,7 @@ module impr_resu_command
     use field_listing, only: field_table_lines
     use field_viewer_data, only: node_field_of, cell_arrays_of, field_columns
     use mesh_listing, only: aster_mesh_lines
+    use unit_text_output, only: write_unit_text
     implicit none
     private
 
@@ -83,7 +84,7 @@ contains
             case ('VTK', 'GMSH')
                 call write_viewer_file(ctx, format, bound_path, set, st)
             case default
-                call write_tables(ctx, set)
+                call write_tables(ctx, cmd, set, st)
             end select
             if (st%failed()) return
         end do
@@ -151,30 +152,35 @@ contains
         end do
     end subroutine check_finite
 
-    !> FORMAT='RESULTAT': one table per field and instant in the .resu; a mesh alone in
-    !> Code_Aster's ASTER format.
-    subroutine write_tables(ctx, set)
+    !> FORMAT='RESULTAT': one table per field and instant in the listing of UNITE (8, the
+    !> .resu, by default; another unit goes to its file as IMPR_TABLE's do:
+    !> unit_text_output); a mesh alone in Code_Aster's ASTER format.
+    !>  st : STATUS_IO_ERROR located at UNITE when its file cannot be written
+    subroutine write_tables(ctx, cmd, set, st)
         type(run_context_t), intent(inout) :: ctx
+        type(command_t), intent(in) :: cmd
         type(print_set_t), intent(in) :: set
-        type(string_t), allocatable :: lines(:)
-        integer :: k, i
+        type(status_t), intent(out) :: st
+        type(string_t), allocatable :: lines(:), all_lines(:)
+        character(len=:), allocatable :: what, where
+        integer :: k
+        integer(i4) :: unit
+        call cmd%get_int('UNITE', unit, st)
+        if (st%failed()) return
         if (set%mesh_only) then
-            call aster_mesh_lines(set%mesh, lines)
-            do i = 1, size(lines)
-                call ctx%write_resu(lines(i)%s)
+            call aster_mesh_lines(set%mesh, all_lines)
+            what = 'the mesh (' // to_text(set%mesh%n_nodes) // ' nodes, ' // &
+                to_text(set%mesh%n_cells) // ' cells)'
+        else
+            allocate (all_lines(0))
+            do k = 1, size(set%items)
+                call field_table_lines(set, set%items(k), lines)
+                all_lines = [all_lines, lines]
             end do
-            call ctx%write_mess('    IMPR_RESU: the mesh (' // to_text(set%mesh%n_nodes) // &
-                ' nodes, ' // to_text(set%mesh%n_cells) // ' cells) written to the .resu')
-            return
+            what = to_text(size(set%items, kind=i4)) // ' table(s) of ' // set%owner
         end if
-        do k = 1, size(set%items)
-            call field_table_lines(set, set%items(k), lines)
-            do i = 1, size(lines)
-                call ctx%write_resu(lines(i)%s)
-            end do
-        end do
-        call ctx%write_mess('    IMPR_RESU: ' // to_text(size(set%items, kind=i4)) // &
-            ' table(s) of ' // set%owner // ' written to the .resu')
+        call write_unit_text(ctx, unit, all_lines, where, st, cmd, 'UNITE')
+        if (st%ok()) call ctx%write_mess('    IMPR_RESU: ' // what // ' written to ' // where)
     end subroutine write_tables
 
     !> FORMAT='VTK' or 'GMSH': the mesh with every field of every instant: node fields as

@@ -118,6 +118,9 @@ check(h[:3] == ["MAILLE", "NOEUD", "NXX"] and len(efge) == 20, ".resu: EFGE_ELNO
 t = table(" ---- CHAM_GD TEMP  NOEU_TEMP_R")
 check([r.split()[1] for r in t[2:10]] == ["2.000000000000E+01"] * 4 + ["5.000000000000E+01"] * 4,
       ".resu: CHAM_GD TEMP")
+check(len(re.findall(r" ---- CHAM_GD TEMP ", resu)) == 1, ".resu: CHAM_GD TEMP printed once")
+unit38 = open(os.path.join(work, "field_output.38")).read()
+check(unit38.rstrip().splitlines() == t[:10], "UNITE=38: the CHAM_GD TEMP table, as in the .resu")
 # the mesh in ASTER format, read back
 listing = resu[resu.index("TITRE\n"):resu.index("\nFIN\n") + 5]
 back_mail = os.path.join(work, "back.mail")
