@@ -193,8 +193,9 @@ contains
     !>  solver : inout, analysed (open_solver); factored on return
     !>  held   : out, the held equations
     !>  assembly_time : out, the assembly's wall and CPU seconds (the .mess summary)
+    !>  cache  : in, optional, built: the plate and plane matrices are taken from it
     subroutine factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
-                                          assembly_time)
+                                          assembly_time, cache)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
         real(dp), intent(in) :: u(:)
@@ -205,10 +206,11 @@ contains
         type(analysis_log_t), intent(inout) :: log
         type(status_t), intent(out) :: st
         real(dp), intent(out) :: assembly_time(2)
+        type(linear_cache_t), intent(in), optional :: cache
         type(pivot_diagnosis_t) :: diag
         type(pivot_record_t) :: one
-        call assemble_and_factor(s, map, u, .false., matrix, solver, diag, st, held=held, &
-            log=log, assembly_time=assembly_time)
+        call assemble_and_factor(s, map, u, .false., matrix, solver, diag, st, cache=cache, &
+            held=held, log=log, assembly_time=assembly_time)
         if (st%failed()) return
         if (diag%kind /= PIVOT_FREE) call accumulate_pivots(diag, one)
         call log_add(log, solver_diagnostics_line(one, options%nprec, options%method))

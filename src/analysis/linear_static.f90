@@ -2,7 +2,9 @@
 !> on the instant: it is assembled and factored once; per instant the imposed values are
 !> put into u, then K_ff u_f = f_ext,f - K_fi u_i is solved as u_f = K^-1 (f_ext - f_int(u))
 !> from u_f = 0 (elimination of the imposed equations; reactions = f_int - f_ext there),
-!> followed by REFINEMENT_STEPS corrections with the same factor. Bodies held only by
+!> followed by REFINEMENT_STEPS corrections with the same factor; the plates' and plane
+!> solids' element matrices are computed once (linear_cache_t) for the assembly and every
+!> internal-force evaluation. Bodies held only by
 !> springs have their rigid modes kept apart (analysis_solver open_solver: the two-level
 !> solver); the plates and plane solids then see u minus those modes (u_body), so their
 !> forces, and the residual of the refinement, carry no round-off of the rigid motion.
@@ -22,7 +24,8 @@ module linear_static
     use direct_solver, only: direct_solver_t, solver_options_t
     use solver_factory, only: assembly_renum
     use assembly_system, only: structure_t, assembly_map_t, build_assembly_map, &
-        internal_forces, gather_free, scatter_free
+        gather_free, scatter_free, linear_cache_t, build_linear_cache, body_product, &
+        linear_product
     use assembly_loads, only: mark_imposed
     use analysis_excitation, only: excitation_t, loads_at, recorded_internal_forces
     use analysis_relations, only: prepare_relations, relations_at
@@ -49,6 +52,21 @@ module linear_static
 
 contains
 
+    !> f_int(u): the plates and plane solids from their kept matrices at u_body (body_product;
+    !> the forces cell_response gives, bit for bit), the other cells (springs, discretes)
+    !> at u; work is (n_equations) scratch.
+    subroutine static_internal_forces(s, map, cache, u, u_body, fint, work, st)
+        type(structure_t), intent(in) :: s
+        type(assembly_map_t), intent(in) :: map
+        type(linear_cache_t), intent(inout) :: cache
+        real(dp), intent(in) :: u(:), u_body(:)
+        real(dp), intent(out) :: fint(:), work(:)
+        type(status_t), intent(out) :: st
+        call body_product(s, map, cache, u_body, fint, st)
+        if (st%ok()) call linear_product(s, map, cache, u, work, st, support_only=.true.)
+        if (st%ok()) fint = fint + work
+    end subroutine static_internal_forces
+
     !> Runs MECA_STATIQUE.
     !>  s       : in, the structure (no DIS_CHOC cell)
     !>  excit   : in, EXCIT occurrences
@@ -71,13 +89,15 @@ contains
         type(sym_matrix_t) :: matrix
         class(direct_solver_t), allocatable :: solver
         type(held_t) :: held
-        logical, allocatable :: imposed(:), closed(:), rigid(:)
-        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), fn(:), du(:), &
+        logical, allocatable :: imposed(:), rigid(:)
+        real(dp), allocatable :: u(:), u_body(:), fint(:), fext(:), r(:), x(:), du(:), &
             forc(:)
         type(elimination_t) :: elim
         type(skew_correction_t) :: skew
+        type(linear_cache_t) :: cache
         integer(i4) :: k, n_eq, pass
         real(dp) :: clock(2, 4), assembly_time(2)     ! (wall, CPU) at the phases' ends
+        real(dp) :: cache_clock(2)                    ! after the element matrices
         if (any(s%choc)) then
             call set_error(st, STATUS_MODEL_ERROR, 'MECA_STATIQUE is linear: DIS_CHOC ' // &
                 'springs need STAT_NON_LINE')
@@ -102,11 +122,18 @@ contains
         if (present(progress) .and. st%ok()) solver%progress => progress
         if (st%failed()) return
         allocate (u(n_eq), u_body(n_eq), fint(n_eq), fext(n_eq), forc(n_eq), r(map%n_free), &
-            x(map%n_free), du(n_eq), closed(0), fn(0))
+            x(map%n_free), du(n_eq))
         u = 0.0_dp
         call read_clocks(clock(:, 2))
+        ! the plates' and plane solids' matrices, once: the assembly and every internal
+        ! force evaluation below take them from here
+        call build_linear_cache(s, map, cache, st)
+        if (st%failed()) return
+        call read_clocks(cache_clock)
         call factor_and_diagnose_linear(s, map, u, matrix, solver, held, options, log, st, &
-            assembly_time)
+            assembly_time, cache)
+        ! the element matrices are the assembly's work
+        assembly_time = assembly_time + cache_clock - clock(:, 2)
         if (st%code == STATUS_SINGULAR .and. first_unsymmetric_cell(s) > 0) &
             call set_error(st, st%code, st%message // ' (with discretes of SYME=''NON'' ' // &
                 'parasol factors the symmetric part of K, (K + K^T)/2, and corrects for the ' // &
@@ -122,7 +149,7 @@ contains
             call loads_at(s, excit, times(k), u, fext, st)
             if (st%ok()) call relations_at(s, excit, map, times(k), u, st)
             u_body = u
-            if (st%ok()) call internal_forces(s, map, u, fint, closed, fn, st, u_body=u_body)
+            if (st%ok()) call static_internal_forces(s, map, cache, u, u_body, fint, forc, st)
             if (st%failed()) return
             do pass = 1, 2 + REFINEMENT_STEPS
                 call gather_free(map, fext - fint, r)
@@ -137,7 +164,7 @@ contains
                 call hat_body_part(solver, r, x)
                 call scatter_free(map, x, du)
                 u_body = u_body + du
-                call internal_forces(s, map, u, fint, closed, fn, st, u_body=u_body)
+                call static_internal_forces(s, map, cache, u, u_body, fint, forc, st)
                 if (st%failed()) return
             end do
             call recorded_internal_forces(s, times(k), fint, forc, st)   ! less thermal forces

@@ -118,7 +118,7 @@ module assembly_system
         spring_block_width, gather_free, scatter_free, free_residual_max, &
         contact_history_start, contact_history_update, spring_response, spring_matrices, &
         spring_lines, linear_product, body_product, support_product, is_body_cell, &
-        cell_response, discrete_matrix
+        cell_response, discrete_matrix, build_linear_cache
 
 contains
 
