@@ -347,6 +347,12 @@ contains
     function check_horizon(ctx) result(text)
         type(run_context_t), intent(in) :: ctx
         character(len=:), allocatable :: text
+        if (allocated(ctx%check_stop_reason)) then
+            text = 'checked up to ' // ctx%check_stop_file // ':' // &
+                to_text(int(ctx%check_stop_line, i4)) // ': ' // ctx%check_stop_reason // &
+                ' (the rest is validated as it runs, each command before it runs)'
+            return
+        end if
         text = 'checked up to ' // ctx%check_stop_file // ':' // &
             to_text(int(ctx%check_stop_line, i4)) // ': from there the deck depends on ' // &
             'values known when it runs (each command is validated before it runs)'

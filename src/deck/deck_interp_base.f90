@@ -18,6 +18,13 @@ module deck_interp_base
     !> Loop iterations in one pass over a session: far beyond deck practice (loops over
     !> groups, cells or instants), and a bound so that no deck hangs parasol.
     integer(i8), parameter, public :: MAX_LOOP_ITERATIONS = 1000000_i8
+    !> Commands the check pass validates: beyond, it stops (stop_check) and the rest is
+    !> validated as the deck runs, each command before it runs. Validating a command costs
+    !> ~45 us (Release; ~5 x in Debug), so a loop of a million iterations with commands in
+    !> its body would otherwise keep the check pass busy for minutes before the first
+    !> command runs (fuzz seed 802, case 621); Code_Aster's own decks validate a few
+    !> thousand.
+    integer, parameter, public :: MAX_CHECKED_COMMANDS = 20000
     !> Sequence items copied in one pass (+, *, slices, comprehensions, list(...) copy
     !> their items): a bound on the work a deck can ask for (a few seconds).
     integer(i8), parameter, public :: MAX_BUILT_ITEMS = 20000000_i8

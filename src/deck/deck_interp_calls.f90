@@ -691,6 +691,13 @@ contains
                 ' while a module is imported (a module gives def functions and values; ' // &
                 'call commands in the command file)'); return
         end if
+        if (ctx%checking .and. ctx%ncommand >= MAX_CHECKED_COMMANDS) then
+            if (.not. ctx%check_stopped) ctx%check_stop_reason = 'the check pass ' // &
+                'validated ' // to_text(MAX_CHECKED_COMMANDS) // ' commands, its limit'
+            call stop_check(ctx, name_node)
+            v%kind = VK_UNKNOWN
+            return
+        end if
         call ctx%heap%flatten(kwargs_in, kwargs, message)
         if (len(message) > 0) then
             call fail(st, ctx, name_node, ctx%catalog%cmds(icmd)%name // ': ' // message)

@@ -112,6 +112,8 @@ module run_context
         logical :: check_stopped = .false.
         character(len=:), allocatable :: check_stop_file
         integer :: check_stop_line = 0
+        !> why it stopped there when not for a value known only when the deck runs
+        character(len=:), allocatable :: check_stop_reason
         type(symbol_t), allocatable :: symbols(:)
         integer :: nsymbol = 0
         type(box_ref_t), allocatable, private :: boxes(:)
@@ -669,6 +671,7 @@ contains
         self%nbox = 0
         self%finished = .false.
         self%check_stopped = .false.
+        if (allocated(self%check_stop_reason)) deallocate (self%check_stop_reason)
         self%nstash = 0
         self%stashed = .false.
         self%continued = .false.
