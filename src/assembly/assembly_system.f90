@@ -8,7 +8,7 @@
 module assembly_system
     use kinds, only: dp, i4, i8
     use status, only: status_t, set_error, STATUS_MODEL_ERROR, STATUS_NOT_IMPLEMENTED
-    use strings, only: to_text
+    use strings, only: to_text, string_t
     use mesh_types, only: mesh_t, cell_label, CELL_POI1, MAX_CELL_NODES
     use model_types, only: model_t, is_plate, is_plane_solid, is_load_edge, is_discrete, &
         is_discrete_2d, is_plane_strain, is_discrete_rotational, ELEM_NONE, ELEM_DIS_T_SEG2, &
@@ -133,39 +133,50 @@ contains
         character(len=*), intent(in), optional :: group_of
         integer(i4) :: c, kind, m
         character(len=:), allocatable :: what, law
+        type(string_t), allocatable :: laws(:)     ! each material's elastic law, once
+        if (allocated(s%materials%materials)) then
+            allocate (laws(size(s%materials%materials)))
+        else
+            allocate (laws(0))                     ! no material: m is 0 for every cell
+        end if
         do c = 1, s%mesh%n_cells
             kind = s%model%element(c)
             if (kind == ELEM_NONE .or. is_load_edge(kind)) cycle
             m = material_of_cell(s%materials, c)
             what = ''
             if (is_plate(kind) .or. is_plane_solid(kind)) then
+                ! (each test in its own branch: Fortran's .and. does not short-circuit, and
+                ! the behaviour's name costs a search through the material's behaviours)
                 if (m == 0) then
                     what = 'no material (AFFE_MATERIAU)'
+                else if (s%materials%materials(m)%has_elas) then
+                    what = ''
                 else if (is_plate(kind) .and. &
                          plate_section_material(s%materials%materials(m))) then
                     what = ''                  ! ELAS_COQUE, laminates (model_plate_section)
-                else if (is_plane_solid(kind) .and. .not. s%materials%materials(m)%has_elas &
-                         .and. elastic_behaviour(s%materials%materials(m)) == 'ELAS_ORTH') then
-                    what = ''                  ! orthotropic plane law (assembly_plane_law)
-                else if (is_plane_solid(kind) .and. .not. s%materials%materials(m)%has_elas &
-                         .and. elastic_behaviour(s%materials%materials(m)) == 'ELAS_FO') then
-                    what = ''                  ! ELAS_FO's E, NU (assembly_plane_law)
-                else if (.not. s%materials%materials(m)%has_elas) then
-                    what = 'no ELAS in its material'
-                    law = elastic_behaviour(s%materials%materials(m))
-                    if (is_plate(kind) .and. law == 'ELAS_ORTH') then
-                        call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c, &
-                            group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
-                            'material gives ELAS_ORTH to a DKT plate: Code_Aster refuses ' // &
-                            'it (ELEMENTS_91); give the layers through DEFI_COMPOSITE')
-                        return
-                    end if
-                    if (len(law) > 0) then
-                        call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, c, &
-                            group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
-                            'material gives ' // law // ', which parasol''s element does ' // &
-                            'not build yet (it takes ELAS: E, NU)')
-                        return
+                else
+                    law = material_law(m)
+                    if (is_plane_solid(kind) .and. law == 'ELAS_ORTH') then
+                        what = ''              ! orthotropic plane law (assembly_plane_law)
+                    else if (is_plane_solid(kind) .and. law == 'ELAS_FO') then
+                        what = ''              ! ELAS_FO's E, NU (assembly_plane_law)
+                    else
+                        what = 'no ELAS in its material'
+                        if (is_plate(kind) .and. law == 'ELAS_ORTH') then
+                            call set_error(st, STATUS_MODEL_ERROR, cell_label(s%mesh, c, &
+                                group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): its ' // &
+                                'material gives ELAS_ORTH to a DKT plate: Code_Aster ' // &
+                                'refuses it (ELEMENTS_91); give the layers through ' // &
+                                'DEFI_COMPOSITE')
+                            return
+                        end if
+                        if (len(law) > 0) then
+                            call set_error(st, STATUS_NOT_IMPLEMENTED, cell_label(s%mesh, &
+                                c, group_of) // ' (' // trim(ELEMENT_NAMES(kind)) // '): ' // &
+                                'its material gives ' // law // ', which parasol''s ' // &
+                                'element does not build yet (it takes ELAS: E, NU)')
+                            return
+                        end if
                     end if
                 end if
                 if (is_plate(kind) .and. .not. s%cara%has_coque(c)) &
@@ -204,6 +215,15 @@ contains
                 return
             end if
         end do
+    contains
+        ! elastic_behaviour of material m, looked up once per material
+        function material_law(m) result(name)
+            integer(i4), intent(in) :: m
+            character(len=:), allocatable :: name
+            if (.not. allocated(laws(m)%s)) laws(m)%s = &
+                elastic_behaviour(s%materials%materials(m))
+            name = laws(m)%s
+        end function material_law
     end subroutine structure_check
 
     !> Original equations of a cell, node by node, its element's components in order.
