@@ -17,8 +17,10 @@
 !>              Krylov method then refines on the true A to RESI_RELA
 !>   LDLT_DP  : the same factorization of A in double precision
 !>   JACOBI   : the inverse of the diagonal;   SANS : none
-!> Others (ML, BOOMER, GAMG, SOR, HPDDM, BLOC_LAGR, FIELDSPLIT, UTILISATEUR) are refused by
-!> the analysis where the deck names them (unsupported_pre_cond): nothing is substituted.
+!>   ML, GAMG : smoothed-aggregation algebraic multigrid, one V-cycle (amg_preconditioner;
+!>              both libraries' multigrid is of that family)
+!> Others (BOOMER, SOR, HPDDM, BLOC_LAGR, FIELDSPLIT, UTILISATEUR) are refused by the
+!> analysis where the deck names them (unsupported_pre_cond): nothing is substituted.
 !>
 !> Convergence: the true residual ||b - A x||_2 <= RESI_RELA ||b||_2 (default 1e-6), from
 !> x = 0, in at most NMAX_ITER iterations (0: max(MIN_ITERATION_LIMIT, number of equations),
@@ -33,6 +35,7 @@ module krylov_solver
     use direct_solver, only: direct_solver_t, factor_report_t, start_report, record_flag, &
         PIVOT_NEGATIVE
     use mumps_solver, only: mumps_solver_t
+    use amg_preconditioner, only: amg_t, amg_build, amg_apply, amg_summary
     implicit none
     private
 
@@ -56,6 +59,7 @@ module krylov_solver
         real(dp), allocatable :: inv_diag(:)             !< JACOBI
         real(dp), allocatable :: ic(:)                   !< LDLT_INC: L by rows, A's pattern
         type(mumps_solver_t), allocatable :: direct      !< LDLT_SP, LDLT_DP
+        type(amg_t) :: amg                               !< ML, GAMG
         real(dp) :: ic_shift = 0.0_dp                    !< LDLT_INC: diagonal shift used
         integer(i8) :: n_solves = 0, total_iterations = 0
         integer(i4) :: max_iterations = 0
@@ -79,7 +83,7 @@ contains
         character(len=*), intent(in) :: method
         character(len=:), allocatable :: list
         list = 'LDLT_INC LDLT_SP LDLT_DP'
-        if (method == 'PETSC') list = list // ' JACOBI SANS'
+        if (method == 'PETSC') list = list // ' JACOBI ML GAMG SANS'
     end function pre_cond_allowed
 
     !> The Krylov methods parasol builds for a method (blank-separated).
@@ -165,6 +169,9 @@ contains
             case ('LDLT_INC')
                 call incomplete_cholesky(self, d, st)
                 if (st%failed()) return
+            case ('ML', 'GAMG')
+                call amg_build(a, self%amg, st)
+                if (st%failed()) return
             end select
         end select
         self%factored = .true.
@@ -243,6 +250,8 @@ contains
             call self%direct%solve(z, st)
         case ('JACOBI')
             z = self%inv_diag * r
+        case ('ML', 'GAMG')
+            call amg_apply(self%amg, r, z)
         case ('LDLT_INC')
             associate (a => self%a)
                 do i = 1, a%n                                   ! L y = r
@@ -444,6 +453,8 @@ contains
         end if
         if (allocated(self%ic)) deallocate (self%ic)
         if (allocated(self%inv_diag)) deallocate (self%inv_diag)
+        if (allocated(self%amg%levels)) deallocate (self%amg%levels)
+        self%amg%n_levels = 0
         self%analysed = .false.
         self%factored = .false.
     end subroutine krylov_release
@@ -460,6 +471,7 @@ contains
             real_text(self%options%resi_rela) // ')'
         if (self%ic_shift > 0.0_dp) text = text // '; the incomplete factorization ' // &
             'broke down on A and was made on A + ' // real_text(self%ic_shift) // ' diag(A)'
+        if (self%amg%n_levels > 0) text = text // '; multigrid of ' // amg_summary(self%amg)
     end function krylov_summary
 
     function real_text(x) result(text)

@@ -133,22 +133,25 @@ def make_seeds(parasol, work, wanted, aster_med=None):
     # The iterative methods (krylov_solver): model B with PETSC and its keywords, model A
     # (springs only: the rigid-mode path around the iteration) with GCPC; each with
     # RECH_LINEAIRE (residual_line_search: CORDE, MIXTE and every keyword).
-    for model, deck, solveur in (
-            ("b", deck_b, "SOLVEUR=_F(METHODE='PETSC', ALGORITHME='FGMRES', "
+    for name, model, deck, solveur in (
+            ("b_iterative", "b", deck_b, "SOLVEUR=_F(METHODE='PETSC', ALGORITHME='FGMRES', "
                           "PRE_COND='LDLT_SP', RESI_RELA=1e-10, NMAX_ITER=50), "
                           "RECH_LINEAIRE=_F(METHODE='CORDE', ITER_LINE_MAXI=3)"),
-            ("a", deck_a, "SOLVEUR=_F(METHODE='GCPC', PRE_COND='LDLT_INC', "
+            ("a_iterative", "a", deck_a, "SOLVEUR=_F(METHODE='GCPC', PRE_COND='LDLT_INC', "
                           "RESI_RELA=1e-9, NMAX_ITER=500, RENUM='RCMK'), "
                           "RECH_LINEAIRE=_F(METHODE='MIXTE', RESI_LINE_RELA=0.05, "
-                          "ITER_LINE_MAXI=4, RHO_MIN=0.02, RHO_MAX=5.0, RHO_EXCL=0.01)")):
+                          "ITER_LINE_MAXI=4, RHO_MIN=0.02, RHO_MAX=5.0, RHO_EXCL=0.01)"),
+            # the smoothed-aggregation multigrid (amg_preconditioner) on model A's plate
+            ("a_multigrid", "a", deck_a, "SOLVEUR=_F(METHODE='PETSC', PRE_COND='ML', "
+                                         "RESI_RELA=1e-9, NMAX_ITER=400)")):
         text = open(deck, encoding="utf-8").read()
         text = re.sub(r"SOLVEUR=_F\([^)]*\)", solveur, text)
-        path = os.path.join(seeds_dir, "%s_iterative.comm" % model)
+        path = os.path.join(seeds_dir, "%s.comm" % name)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
-        seeds.append(Seed("%s_iterative" % model, {"case.comm": path,
-                                                  "case.mail": meshes[(model, "aster")]},
-                          [], dict(comm_targets, **{"case.mail": "mail"}), 0.5))
+        seeds.append(Seed(name, {"case.comm": path, "case.mail": meshes[(model, "aster")]},
+                          [], dict(comm_targets, **{"case.mail": "mail"}),
+                          0.3 if name == "a_multigrid" else 0.5))
     for model, deck in (("a", deck_a), ("b", deck_b)):
         gdeck = deck_copy(deck, "%s_gmsh.comm" % model, "GMSH")
         for fmt in ("gmsh22", "gmsh41"):
