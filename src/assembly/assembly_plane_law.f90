@@ -18,7 +18,8 @@
 module assembly_plane_law
     use kinds, only: dp, i4
     use status, only: status_t, set_error, STATUS_MODEL_ERROR
-    use strings, only: to_text
+    use strings, only: to_text, real_e13
+    use number_limits, only: MIN_MODULUS, MAX_MODULUS, MAX_POISSON
     use mesh_types, only: mesh_t
     use model_types, only: model_t, is_plane_strain
     use model_material, only: material_field_t, material_t, material_of_cell, has_behaviour, &
@@ -102,6 +103,16 @@ contains
                    v(7) > 0.0_dp)) then
             call set_error(st, STATUS_MODEL_ERROR, 'ELAS_ORTH needs E_L, E_T, E_N and ' // &
                 'G_LT > 0')
+            return
+        end if
+        ! bounded as ELAS's E (number_limits): the compliance is formed from 1 / E
+        if (any(v([1, 2, 3, 7]) < MIN_MODULUS .or. v([1, 2, 3, 7]) > MAX_MODULUS) .or. &
+            any(abs(v(4:6)) > MAX_POISSON)) then
+            call set_error(st, STATUS_MODEL_ERROR, 'ELAS_ORTH: E_L, E_T, E_N and G_LT ' // &
+                'must lie in [' // real_e13(MIN_MODULUS) // ', ' // real_e13(MAX_MODULUS) // &
+                '] and |NU_LT|, |NU_LN|, |NU_TN| <= ' // real_e13(MAX_POISSON) // &
+                ' (E_L ' // real_e13(v(1)) // ', E_T ' // real_e13(v(2)) // ', E_N ' // &
+                real_e13(v(3)) // ', G_LT ' // real_e13(v(7)) // ')')
             return
         end if
         s = reshape([1.0_dp / v(1), -v(4) / v(1), -v(5) / v(1), &

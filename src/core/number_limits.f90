@@ -34,6 +34,10 @@ module number_limits
     !> double precision, and the solvers scale by 1/sqrt of the diagonal.
     real(dp), parameter, public :: MAX_MODULUS = 1.0e100_dp
     real(dp), parameter, public :: MIN_MODULUS = 1.0e-100_dp
+    !> Largest |Poisson's ratio| of an orthotropic material (ELAS_ORTH NU_LT, NU_LN, NU_TN;
+    !> measured ones stay below 2): with the moduli in [MIN_MODULUS, MAX_MODULUS] the
+    !> compliance and its minors stay finite (below 1e310 / 1e3 ... about 1e306).
+    real(dp), parameter, public :: MAX_POISSON = 1.0e3_dp
     !> Largest |temperature| a thermal strain is formed from (AFFE_VARC TEMP, VALE_REF,
     !> TEMP_DEF_ALPHA, the abscissae of ELAS_FO ALPHA), and largest |strain| formed from a
     !> deck's values (ALPHA (T - T_ref)): a stress E eps stays below 1e130.

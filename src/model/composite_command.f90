@@ -8,7 +8,8 @@
 module composite_command
     use kinds, only: dp, i4
     use status, only: status_t, STATUS_MODEL_ERROR
-    use strings, only: to_text, string_t
+    use strings, only: to_text, string_t, real_e13
+    use number_limits, only: MIN_MODULUS, MAX_MODULUS, MAX_POISSON
     use deck_concept, only: concept_t, concept_display_name
     use deck_command, only: command_t, keyword_set_t
     use run_context, only: run_context_t
@@ -111,6 +112,18 @@ contains
                 values(k - 2) = 0.0_dp
             end select
         end do
+        ! the moduli (E_L, E_T, G_LT, G_LN, G_TN) bounded as ELAS's E and NU_LT as ELAS_ORTH's
+        ! (number_limits): the layer's stiffness is formed from their ratios
+        if (any(values([1, 2, 4, 5, 6]) < MIN_MODULUS .or. &
+                values([1, 2, 4, 5, 6]) > MAX_MODULUS) .or. abs(values(3)) > MAX_POISSON) then
+            call occ%error_at('MATER', 'the layer''s ELAS_ORTH: E_L, E_T, G_LT, G_LN and ' // &
+                'G_TN must lie in [' // real_e13(MIN_MODULUS) // ', ' // &
+                real_e13(MAX_MODULUS) // '] and |NU_LT| <= ' // real_e13(MAX_POISSON) // &
+                ' (E_L ' // real_e13(values(1)) // ', E_T ' // real_e13(values(2)) // &
+                ', NU_LT ' // real_e13(values(3)) // ', G_LT ' // real_e13(values(4)) // ')', &
+                st, code=STATUS_MODEL_ERROR)
+            return
+        end if
     end subroutine layer_values
 
 end module composite_command
