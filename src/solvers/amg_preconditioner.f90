@@ -10,7 +10,8 @@
 !>    damped Jacobi step P = (I - w D^-1 A) P0, w = 4/3 / lambda_max(D^-1 A), lambda_max by
 !>    a few power iterations;
 !>  - coarse operators A_c = P^T A P until at most COARSE_SIZE unknowns (or MAX_LEVELS, or
-!>    an aggregation that no longer coarsens), the coarsest solved by a dense LU;
+!>    an aggregation that no longer coarsens), the coarsest solved by a dense LU (or, beyond
+!>    MAX_DENSE_COARSE unknowns, smoothed by symmetric Gauss-Seidel sweeps);
 !>  - one V-cycle per application, a symmetric Gauss-Seidel sweep (forward then backward)
 !>    before and after the coarse correction: the preconditioner is symmetric.
 !> The Krylov method (krylov_solver) converges on the true matrix to RESI_RELA, so the
@@ -36,6 +37,11 @@ module amg_preconditioner
     real(dp), parameter :: LAMBDA_MARGIN = 1.05_dp
     !> A level whose aggregation keeps more than this fraction of its unknowns is the last.
     real(dp), parameter :: MIN_COARSENING = 0.9_dp
+    !> The coarsest level is solved by a dense LU up to this size; a larger one (the
+    !> aggregation stopped coarsening: a matrix with few couplings, e.g. springs alone) is
+    !> smoothed by COARSE_SWEEPS symmetric Gauss-Seidel sweeps instead.
+    integer(i4), parameter :: MAX_DENSE_COARSE = 2000
+    integer(i4), parameter :: COARSE_SWEEPS = 4
 
     !> A sparse matrix by rows (full, both triangles for the operators).
     type :: csr_t
@@ -87,6 +93,7 @@ contains
         end do
         amg%n_levels = k
         call move_alloc(levels, amg%levels)
+        if (amg%levels(k)%a%n_rows > MAX_DENSE_COARSE) return      ! smoothed (v_cycle)
         associate (c => amg%levels(k)%a)
             allocate (amg%coarse_lu(c%n_rows, c%n_rows), amg%coarse_pivots(c%n_rows))
             call dense_of(c, amg%coarse_lu)
@@ -134,9 +141,17 @@ contains
         real(dp), intent(in) :: r(:)
         real(dp), intent(out) :: z(:)
         real(dp), allocatable :: res(:), rc(:), zc(:)
-        if (k == amg%n_levels) then
+        integer(i4) :: sweep
+        if (k == amg%n_levels .and. allocated(amg%coarse_lu)) then
             z = r
             call lu_solve(amg%coarse_lu, amg%coarse_pivots, z)
+            return
+        else if (k == amg%n_levels) then
+            z = 0.0_dp
+            do sweep = 1, COARSE_SWEEPS
+                call gauss_seidel(amg%levels(k)%a, amg%levels(k)%diag, r, z, .true.)
+                call gauss_seidel(amg%levels(k)%a, amg%levels(k)%diag, r, z, .false.)
+            end do
             return
         end if
         associate (lv => amg%levels(k))
