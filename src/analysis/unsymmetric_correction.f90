@@ -66,32 +66,32 @@ contains
         type(skew_correction_t), intent(out) :: corr
         type(status_t), intent(out) :: st
         integer(i4), allocatable :: eqs(:), keep(:)
+        logical, allocatable :: kept(:)
         real(dp), allocatable :: skew(:, :), e(:), p(:), z(:), v(:), g(:, :)
         integer(i4) :: j, m, n_eq, worst, zero_at
         real(dp) :: scale, digits
-        call skew_stiffness(s, map, eqs, skew, st)
+        call skew_stiffness(s, map, MAX_SKEW_EQUATIONS, eqs, skew, st)
         if (st%failed() .or. size(eqs) == 0) return
         n_eq = s%dofs%n_equations
-        allocate (e(n_eq), p(map%n_free), keep(0))
-        ! equations that are imposed carry no unknown: P e_j = 0, their rows and columns
-        ! of N drop out exactly
+        if (.not. allocated(skew)) then
+            call refuse(size(eqs, kind=i4), 'at least ')
+            return
+        end if
+        allocate (e(n_eq), p(map%n_free), kept(size(eqs)))
+        ! a slave whose relation holds on imposed equations only carries no unknown either:
+        ! P e_j = 0, its row and column of N drop out exactly
         e = 0.0_dp
         do j = 1, size(eqs)
             e(eqs(j)) = 1.0_dp
             call gather_free(map, e, p)
             e(eqs(j)) = 0.0_dp
-            if (any(abs(p) > 0.0_dp)) keep = [keep, j]
+            kept(j) = any(abs(p) > 0.0_dp)
         end do
+        keep = pack([(j, j = 1, size(eqs, kind=i4))], kept)
         m = size(keep)
         if (m == 0) return
-        if (m > MAX_SKEW_EQUATIONS .or. int(m, i8) * map%n_free > MAX_SKEW_TERMS) then
-            call set_error(st, STATUS_MODEL_ERROR, 'the discretes with SYME=''NON'' and a ' // &
-                'matrix that is not symmetric act on ' // to_text(m) // ' free equations ' // &
-                'of ' // to_text(map%n_free) // ': parasol solves with their skew part by ' // &
-                'a dense correction of the symmetric factor, limited to ' // &
-                to_text(MAX_SKEW_EQUATIONS) // ' equations and ' // &
-                to_text(MAX_SKEW_TERMS) // ' stored reals (equations x free equations); ' // &
-                'give fewer such discretes, or symmetric matrices (SYME=''OUI'')')
+        if (int(m, i8) * map%n_free > MAX_SKEW_TERMS) then
+            call refuse(m, '')
             return
         end if
         corr%m = m
@@ -145,6 +145,7 @@ contains
             'the solves corrected (rank ' // to_text(m) // ', ' // to_text(m) // &
             ' solve(s)); the correction lost ' // real_short(digits) // ' digits')
     contains
+        ! the digits C's worst pivot lost, for the message
         function lost_text() result(text)
             character(len=:), allocatable :: text
             if (zero_at /= 0) then
@@ -153,6 +154,18 @@ contains
                 text = real_short(digits) // ' digits'
             end if
         end function lost_text
+        ! beyond MAX_SKEW_EQUATIONS / MAX_SKEW_TERMS: what the correction would need
+        subroutine refuse(count, qualifier)
+            integer(i4), intent(in) :: count
+            character(len=*), intent(in) :: qualifier
+            call set_error(st, STATUS_MODEL_ERROR, 'the discretes with SYME=''NON'' and a ' // &
+                'matrix that is not symmetric act on ' // qualifier // to_text(count) // &
+                ' free equations of ' // to_text(map%n_free) // ': parasol solves with ' // &
+                'their skew part by a dense correction of the symmetric factor, limited to ' &
+                // to_text(MAX_SKEW_EQUATIONS) // ' equations and ' // &
+                to_text(MAX_SKEW_TERMS) // ' stored reals (equations x free equations); ' // &
+                'give fewer such discretes, or symmetric matrices (SYME=''OUI'')')
+        end subroutine refuse
     end subroutine skew_prepare
 
     !> rhat <- hat coordinates of K^-1 b, given rhat = those of S^-1 b (solve_held).

@@ -10,6 +10,7 @@ module assembly_unsymmetric
     use status, only: status_t, set_error
     use mesh_types, only: cell_label
     use model_cara_elem, only: discrete_is_unsymmetric
+    use model_types, only: ELEM_NONE
     use assembly_system, only: structure_t, assembly_map_t, element_equations, &
         discrete_matrix, MAX_ELEMENT_DOFS
     implicit none
@@ -25,7 +26,7 @@ contains
         integer(i4) :: k
         c = 0
         do k = 1, s%mesh%n_cells
-            if (s%model%element(k) == 0) cycle
+            if (s%model%element(k) == ELEM_NONE) cycle
             if (discrete_is_unsymmetric(s%cara, k)) then
                 c = k
                 return
@@ -34,13 +35,17 @@ contains
     end function first_unsymmetric_cell
 
     !> N = sum of the skew parts N_e of the unsymmetric discretes of map%cells, on the
-    !> original equations they act on.
+    !> original equations they act on that are not imposed (an imposed equation carries no
+    !> unknown: its rows and columns of N drop out exactly).
     !>  eqs  : out, (m) those equations, in the order first met (cells in map order)
-    !>  skew : out, (m, m) N on them: N(i, j) multiplies u(eqs(j)) in the force on eqs(i)
+    !>  skew : out, (m, m) N on them: N(i, j) multiplies u(eqs(j)) in the force on eqs(i);
+    !>         not allocated when m > limit (N is dense: the caller refuses so many)
     !>  st   : out, a discrete whose frame cannot be built (naming the cell)
-    subroutine skew_stiffness(s, map, eqs, skew, st)
+    !>  limit : in, the most equations N is built on
+    subroutine skew_stiffness(s, map, limit, eqs, skew, st)
         type(structure_t), intent(in) :: s
         type(assembly_map_t), intent(in) :: map
+        integer(i4), intent(in) :: limit
         integer(i4), allocatable, intent(out) :: eqs(:)
         real(dp), allocatable, intent(out) :: skew(:, :)
         type(status_t), intent(out) :: st
@@ -57,16 +62,18 @@ contains
             call element_equations(s, c, e, n)
             do i = 1, n
                 if (e(i) <= 0) cycle
+                if (map%imposed(e(i))) cycle
                 if (local(e(i)) > 0) cycle
                 m = m + 1
                 local(e(i)) = m
             end do
         end do
-        allocate (eqs(m), skew(m, m))
-        skew = 0.0_dp
+        allocate (eqs(m))
         do i = 1, s%dofs%n_equations
             if (local(i) > 0) eqs(local(i)) = i
         end do
+        if (m > limit) return
+        allocate (skew(m, m), source=0.0_dp)
         do k = 1, size(map%cells)
             c = map%cells(k)
             if (.not. discrete_is_unsymmetric(s%cara, c)) cycle
