@@ -149,24 +149,30 @@ contains
         else if (k == amg%n_levels) then
             z = 0.0_dp
             do sweep = 1, COARSE_SWEEPS
-                call gauss_seidel(amg%levels(k)%a, amg%levels(k)%diag, r, z, .true.)
-                call gauss_seidel(amg%levels(k)%a, amg%levels(k)%diag, r, z, .false.)
+                call symmetric_sweep(amg%levels(k)%a, amg%levels(k)%diag, r, z)
             end do
             return
         end if
         associate (lv => amg%levels(k))
             z = 0.0_dp
-            call gauss_seidel(lv%a, lv%diag, r, z, .true.)
-            call gauss_seidel(lv%a, lv%diag, r, z, .false.)
+            call symmetric_sweep(lv%a, lv%diag, r, z)
             allocate (res(lv%a%n_rows), rc(lv%p%n_cols), zc(lv%p%n_cols))
             call residual(lv%a, r, z, res)
             call transpose_product(lv%p, res, rc)
             call v_cycle(amg, k + 1_i4, rc, zc)
             call add_product(lv%p, zc, z)
-            call gauss_seidel(lv%a, lv%diag, r, z, .true.)
-            call gauss_seidel(lv%a, lv%diag, r, z, .false.)
+            call symmetric_sweep(lv%a, lv%diag, r, z)
         end associate
     end subroutine v_cycle
+
+    ! One symmetric Gauss-Seidel sweep on a z = r: forward, then backward.
+    subroutine symmetric_sweep(a, diag, r, z)
+        type(csr_t), intent(in) :: a
+        real(dp), intent(in) :: diag(:), r(:)
+        real(dp), intent(inout) :: z(:)
+        call gauss_seidel(a, diag, r, z, .true.)
+        call gauss_seidel(a, diag, r, z, .false.)
+    end subroutine symmetric_sweep
 
     ! One Gauss-Seidel sweep on a z = r, forward or backward.
     subroutine gauss_seidel(a, diag, r, z, forward)
@@ -191,19 +197,29 @@ contains
         end do
     end subroutine gauss_seidel
 
+    ! res = r - A z
     subroutine residual(a, r, z, res)
         type(csr_t), intent(in) :: a
         real(dp), intent(in) :: r(:), z(:)
         real(dp), intent(out) :: res(:)
+        call product(a, z, res)
+        res = r - res
+    end subroutine residual
+
+    ! y = A x
+    subroutine product(a, x, y)
+        type(csr_t), intent(in) :: a
+        real(dp), intent(in) :: x(:)
+        real(dp), intent(out) :: y(:)
         integer(i4) :: i
         integer(i8) :: p
         do i = 1, a%n_rows
-            res(i) = r(i)
+            y(i) = 0.0_dp
             do p = a%ptr(i), a%ptr(i + 1) - 1
-                res(i) = res(i) - a%val(p) * z(a%col(p))
+                y(i) = y(i) + a%val(p) * x(a%col(p))
             end do
         end do
-    end subroutine residual
+    end subroutine product
 
     ! y = P^T x
     subroutine transpose_product(p, x, y)
@@ -404,7 +420,6 @@ contains
         real(dp), intent(in) :: diag(:)
         real(dp), allocatable :: x(:), y(:)
         integer(i4) :: it, i
-        integer(i8) :: p
         allocate (x(a%n_rows), y(a%n_rows))
         do i = 1, a%n_rows
             x(i) = 1.0_dp + real(mod(i, 7), dp) / 7.0_dp
@@ -412,13 +427,8 @@ contains
         x = x / norm2(x)
         lambda = 1.0_dp
         do it = 1, POWER_ITERATIONS
-            do i = 1, a%n_rows
-                y(i) = 0.0_dp
-                do p = a%ptr(i), a%ptr(i + 1) - 1
-                    y(i) = y(i) + a%val(p) * x(a%col(p))
-                end do
-                y(i) = y(i) / diag(i)
-            end do
+            call product(a, x, y)
+            y = y / diag
             lambda = norm2(y)
             if (.not. lambda > 0.0_dp) then
                 lambda = 1.0_dp
