@@ -161,9 +161,13 @@ contains
         type(command_t), intent(in) :: cmd
         type(print_set_t), intent(in) :: set
         type(status_t), intent(out) :: st
-        type(string_t), allocatable :: lines(:), all_lines(:)
+        type :: table_lines_t
+            type(string_t), allocatable :: lines(:)
+        end type table_lines_t
+        type(table_lines_t), allocatable :: tables(:)
+        type(string_t), allocatable :: all_lines(:)
         character(len=:), allocatable :: what, where
-        integer :: k
+        integer :: k, i, n
         integer(i4) :: unit
         call cmd%get_int('UNITE', unit, st)
         if (st%failed()) return
@@ -172,10 +176,20 @@ contains
             what = 'the mesh (' // to_text(set%mesh%n_nodes) // ' nodes, ' // &
                 to_text(set%mesh%n_cells) // ' cells)'
         else
-            allocate (all_lines(0))
+            ! each table built once, then its lines moved (not copied) into one listing:
+            ! no array constructor of string_t (gfortran 12 leaks its temporaries, and
+            ! growing by [all, lines] copies every line again per table)
+            allocate (tables(size(set%items)))
             do k = 1, size(set%items)
-                call field_table_lines(set, set%items(k), lines)
-                all_lines = [all_lines, lines]
+                call field_table_lines(set, set%items(k), tables(k)%lines)
+            end do
+            allocate (all_lines(sum([(size(tables(k)%lines), k = 1, size(tables))])))
+            n = 0
+            do k = 1, size(tables)
+                do i = 1, size(tables(k)%lines)
+                    call move_alloc(tables(k)%lines(i)%s, all_lines(n + i)%s)
+                end do
+                n = n + size(tables(k)%lines)
             end do
             what = to_text(size(set%items, kind=i4)) // ' table(s) of ' // set%owner
         end if
